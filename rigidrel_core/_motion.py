@@ -1,0 +1,325 @@
+"""Born-rigid motion of one rod whose velocity changes once, evaluated in any frame.
+
+Every scene of Franklin (2012) is built from one motion per rod (units c = 1):
+
+1. inertial at velocity ``v_i`` (rapidity ``theta_i``);
+2. a Born-rigid change: each material point moves on a hyperbola about one common
+   centre event ``C`` (the Rindler horizon), the point at rest-distance ``rho`` from it
+   with proper acceleration ``1/rho`` (paper Eqs. (deriv), (gl); ``rho = 0`` is the
+   impulsive limit of Sec. 4);
+3. inertial at velocity ``v_f``.
+
+A hyperbola piece is Lorentz covariant: in lab coordinates its points are
+``C + sign * rho * (sinh(theta), cosh(theta))`` for ``theta`` between ``theta_i`` and
+``theta_f``; a boost into a frame of rapidity ``psi`` maps it to
+``C' + sign * rho * (sinh(theta - psi), cosh(theta - psi))``. So a frame only changes the
+centre event and shifts the rapidity interval; the piece stays a hyperbola and a slice
+at equal frame time is closed form:
+
+.. math::
+    x'(t') = x'_V + \\sigma\\,\\frac{s_c^2}{\\sqrt{\\rho^2 + s_c^2} + \\rho}
+             + w_i \\min(s - s_i, 0) + w_f \\max(s - s_f, 0),
+
+with ``s = t' - t'_C``, ``s_c = clip(s, s_i, s_f)``, ``s_{i,f} = sigma rho sinh(theta_{i,f} - psi)``,
+``w_{i,f} = tanh(theta_{i,f} - psi)`` and ``x'_V = x'_C + sigma rho`` the point's vertex (where
+it is at rest in the frame). The two inertial pieces are the tangents at the switch events.
+Written this way nothing subtracts nearly equal numbers: the hyperbola's rise uses
+``s^2/(sqrt(rho^2+s^2)+rho)`` instead of ``sqrt(rho^2+s^2) - rho``, and all rapidity
+differences come from :func:`relative_rapidity`.
+
+Material points are labelled by ``f`` in [0, 1], the fraction of the rest length from the
+rod's left end.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+import numpy as np
+import numpy.typing as npt
+
+from ._boost import Frame
+from ._exact import ExactVelocity, relative_rapidity
+
+FloatArray = npt.NDArray[np.float64]
+
+#: Columns per block on the branch-free path: keeps the work arrays in cache.
+_CHUNK = 8192
+#: From this many sorted times on, rows are sampled piece by piece.
+_PIECEWISE_MIN = 2048
+#: Stand-in for a zero radius in a denominator that is then multiplied by zero.
+_TINY = 1e-300
+
+
+@dataclass(frozen=True)
+class RigidMotion:
+    """One rod: inertial, one Born-rigid velocity change, inertial (lab description).
+
+    The change's centre event is at lab ``(t, x) = (0, horizon_x)``. The hyperbola of the
+    left end passes through rest at lab ``(0, vertex_left)``: at lab time 0 the whole
+    (extended) family has the rod at rest on ``[vertex_left, vertex_left + length]``.
+    """
+
+    length: float
+    """Rest length ``L`` (> 0)."""
+    sign: Literal[1, -1]
+    """+1 when the rapidity increases (rod to the right of its centre), -1 when it decreases."""
+    horizon_x: float
+    """Lab x of the centre event (at lab t = 0)."""
+    radius_left: float
+    """Distance ``rho`` of the left end from the centre, in the rod's rest frame (>= 0)."""
+    radius_right: float
+    """Distance ``rho`` of the right end from the centre (>= 0)."""
+    vertex_left: float
+    """Lab x of the left end's vertex: ``horizon_x + sign * radius_left``, stored exactly."""
+    velocity_initial: ExactVelocity
+    velocity_final: ExactVelocity
+
+    def radii(self, fractions: FloatArray) -> FloatArray:
+        """``rho(f) = rho_left + sign * f * L``; the ends use their stored radii."""
+        rho = self.radius_left + self.sign * (fractions * self.length)
+        rho = np.where(fractions == 1.0, self.radius_right, rho)
+        return np.where(fractions == 0.0, self.radius_left, rho)
+
+    def plan(self, frame: Frame, fractions: FloatArray) -> MotionPlan:
+        """Per-frame constants for the material points ``fractions`` (see module docstring).
+
+        Every piece is anchored where it crosses the frame's ``t' = 0`` line, the line
+        through the scene's key event (the origin). Inertial piece of lab velocity ``v``:
+        ``x' = X_0' + tanh(theta') t'`` with ``X_0' = a cosh(theta) / cosh(theta')`` and ``a``
+        the lab intercept at ``t = 0``. Hyperbola: ``x' = X_h + sign t'(t' - 2 t'_C) / (q + q_0)``
+        with ``q = sqrt(rho^2 + (t' - t'_C)^2)``, ``q_0 = sqrt(rho^2 + t'_C^2)`` and ``X_h`` its
+        ``t' = 0`` crossing. Each constant is formed without cancellation.
+        """
+        sh = frame.sinh_rapidity()
+        chm1 = frame.cosh_rapidity_minus_one()
+        ch = 1.0 + chm1
+        th_i = relative_rapidity(self.velocity_initial, frame.velocity)
+        th_f = relative_rapidity(self.velocity_final, frame.velocity)
+        sig = float(self.sign)
+        xc = self.horizon_x
+        rho = self.radii(fractions)
+        x_vertex_lab = self.vertex_left + fractions * self.length
+        x_vertex_lab = np.where(fractions == 1.0, self.vertex_left + self.length, x_vertex_lab)
+        # centre event in the frame (lab t_C = 0)
+        t_c = -xc * sh
+        x_c = xc * ch
+        # vertex (rest point in the frame): x'_V = x'_C + sign rho = x_V + x_C (cosh psi - 1)
+        x_vertex = x_vertex_lab + xc * chm1
+        q0 = np.hypot(rho, t_c)
+        if sig * x_c >= 0.0:  # same signs: the direct sum does not cancel
+            x_hyp = x_c + sig * q0
+        else:  # product of the two roots is x_C^2 - rho^2 = x_V (x_C - sign rho)
+            x_hyp = x_vertex_lab * (xc - sig * rho) / (x_c - sig * q0)
+        s_i = sig * rho * math.sinh(th_i)
+        s_f = sig * rho * math.sinh(th_f)
+        return MotionPlan(
+            sign=np.full_like(rho, sig),
+            radius=rho,
+            t_vertex=np.full_like(rho, t_c),
+            x_vertex=x_vertex,
+            q0=np.where((rho > 0.0) | (q0 > 0.0), q0, _TINY),
+            x_hyp=x_hyp,
+            s_start=s_i,
+            s_stop=s_f,
+            t_start=t_c + s_i,
+            t_stop=t_c + s_f,
+            x0_start=self._frame_intercept(self.velocity_initial, th_i, rho, x_vertex_lab),
+            x0_stop=self._frame_intercept(self.velocity_final, th_f, rho, x_vertex_lab),
+            w_start=np.full_like(rho, math.tanh(th_i)),
+            w_stop=np.full_like(rho, math.tanh(th_f)),
+            rapidity_start=np.full_like(rho, th_i),
+            rapidity_stop=np.full_like(rho, th_f),
+        )
+
+    def _frame_intercept(
+        self, v: ExactVelocity, theta_rel: float, rho: FloatArray, x_vertex_lab: FloatArray
+    ) -> FloatArray:
+        """``X_0'``: where the inertial tangent of velocity ``v`` crosses the frame's ``t' = 0``.
+
+        The lab line ``x = a + v t`` meets ``t' = 0`` at ``x' = a / (gamma_psi (1 - v beta))
+        = a cosh(theta) / cosh(theta')``. Its lab intercept is ``a = x_C + sign rho / gamma``
+        (the tangent's distance from the centre, contracted), or, when the centre lies on
+        the other side, ``a = x_V - sign rho (gamma - 1)/gamma`` with
+        ``gamma - 1 = (gamma v)^2/(gamma + 1)``.
+        """
+        gamma = v.lorentz_factor()
+        sig = float(self.sign)
+        if sig * self.horizon_x >= 0.0:
+            a = self.horizon_x + sig * rho / gamma
+        else:
+            u = v.proper_velocity()
+            a = x_vertex_lab - sig * rho * (u * u / ((gamma + 1.0) * gamma))
+        return a * (gamma / math.cosh(theta_rel))
+
+
+@dataclass(frozen=True)
+class MotionPlan:
+    """Frame constants for a set of material points (rows); arrays have shape ``(rows,)``.
+
+    Before ``t_start`` a row is at ``x0_start + w_start t'``; after ``t_stop`` at
+    ``x0_stop + w_stop t'``; in between on its hyperbola
+    ``x_hyp + sign t'(t' - 2 t_vertex) / (sqrt(rho^2 + (t' - t_vertex)^2) + q0)``.
+    """
+
+    sign: FloatArray
+    radius: FloatArray
+    t_vertex: FloatArray
+    x_vertex: FloatArray
+    q0: FloatArray
+    x_hyp: FloatArray
+    s_start: FloatArray
+    s_stop: FloatArray
+    t_start: FloatArray
+    t_stop: FloatArray
+    x0_start: FloatArray
+    w_start: FloatArray
+    x0_stop: FloatArray
+    w_stop: FloatArray
+    rapidity_start: FloatArray
+    rapidity_stop: FloatArray
+
+    @staticmethod
+    def concatenate(plans: list[MotionPlan]) -> MotionPlan:
+        fields = MotionPlan.__dataclass_fields__
+        return MotionPlan(**{k: np.concatenate([getattr(p, k) for p in plans]) for k in fields})
+
+    def column(self, name: str) -> FloatArray:
+        return getattr(self, name)[:, None]
+
+    @functools.cached_property
+    def _columns(self) -> dict[str, FloatArray]:
+        names = ("sign", "t_vertex", "q0", "x_hyp", "t_start", "t_stop",
+                 "x0_start", "w_start", "x0_stop", "w_stop")
+        c = {k: self.column(k) for k in names}
+        c["radius2"] = self.column("radius") ** 2
+        c["two_t_vertex"] = 2.0 * c["t_vertex"]
+        return c
+
+    # ---------------------------------------------------------------- sampling
+    def positions(self, t: FloatArray) -> FloatArray:
+        """Frame x of every row at frame times ``t`` (1-D). Shape ``(rows, len(t))``.
+
+        Sorted long inputs take a piecewise path (2 flops a sample on the inertial pieces,
+        10 on the hyperbola); others a branch-free form over all rows at once.
+        """
+        n = t.size
+        if n >= _PIECEWISE_MIN and bool(np.all(t[1:] >= t[:-1])):
+            return self._positions_sorted(t)
+        if n <= _CHUNK:
+            return self._positions_block(t)
+        out = np.empty((self.radius.size, n))
+        for j in range(0, n, _CHUNK):
+            tc = t[j:j + _CHUNK]
+            out[:, j:j + tc.size] = self._positions_block(tc)
+        return out
+
+    def _positions_block(self, t: FloatArray) -> FloatArray:
+        with np.errstate(over="ignore", invalid="ignore"):  # lanes that overflow are discarded by np.where
+            return self._positions_block_unchecked(t)
+
+    def _positions_block_unchecked(self, t: FloatArray) -> FloatArray:
+        c = self._columns
+        # hyperbola, anchored at t' = 0
+        s = t - c["t_vertex"]
+        s *= s
+        s += c["radius2"]
+        np.sqrt(s, out=s)
+        s += c["q0"]
+        h = t - c["two_t_vertex"]
+        h *= t
+        h /= s
+        h *= c["sign"]
+        h += c["x_hyp"]
+        # inertial pieces
+        before = c["w_start"] * t
+        before += c["x0_start"]
+        after = c["w_stop"] * t
+        after += c["x0_stop"]
+        h = np.where(t < c["t_start"], before, h)
+        return np.where(t > c["t_stop"], after, h)
+
+    def _positions_sorted(self, t: FloatArray) -> FloatArray:
+        rows = self.radius.size
+        out = np.empty((rows, t.size))
+        i0 = np.searchsorted(t, self.t_start, side="left")
+        i1 = np.searchsorted(t, self.t_stop, side="right")
+        for r in range(rows):
+            a, b = int(i0[r]), int(i1[r])
+            row = out[r]
+            if a > 0:
+                np.multiply(t[:a], self.w_start[r], out=row[:a])
+                row[:a] += self.x0_start[r]
+            if b > a:
+                seg = row[a:b]
+                ts = t[a:b]
+                np.subtract(ts, self.t_vertex[r], out=seg)
+                seg *= seg
+                seg += self.radius[r] ** 2
+                np.sqrt(seg, out=seg)
+                seg += self.q0[r]
+                num = ts - 2.0 * self.t_vertex[r]
+                num *= ts
+                np.divide(num, seg, out=seg)
+                seg *= self.sign[r]
+                seg += self.x_hyp[r]
+            if b < t.size:
+                np.multiply(t[b:], self.w_stop[r], out=row[b:])
+                row[b:] += self.x0_stop[r]
+        return out
+
+    def equal_time_lengths(self, t: FloatArray, rest_lengths: FloatArray) -> FloatArray:
+        """``x_right - x_left`` for rows given as (left, right) pairs, one pair per rod.
+
+        While both ends coast on the same inertial piece the length is exactly
+        ``L / cosh(theta')`` (Lorentz contraction); otherwise the difference of positions.
+        """
+        x = self.positions(t)
+        left, right = slice(0, None, 2), slice(1, None, 2)
+        out = x[right] - x[left]
+        before = (t < self.t_start[left, None]) & (t < self.t_start[right, None])
+        after = (t > self.t_stop[left, None]) & (t > self.t_stop[right, None])
+        contracted_before = (rest_lengths / np.cosh(self.rapidity_start[left]))[:, None]
+        contracted_after = (rest_lengths / np.cosh(self.rapidity_stop[left]))[:, None]
+        out = np.where(before, contracted_before, out)
+        return np.where(after, contracted_after, out)
+
+    def velocities(self, t: FloatArray) -> FloatArray:
+        """Frame velocity dx'/dt' of every row; right-continuous at a kink (rho = 0)."""
+        s = t[None, :] - self.column("t_vertex")
+        sc = np.clip(s, self.column("s_start"), self.column("s_stop"))
+        q = np.hypot(self.column("radius"), sc)
+        during = self.column("sign") * np.divide(sc, q, out=np.zeros_like(sc), where=q > 0.0)
+        v = np.where(s < self.column("s_start"), self.column("w_start"), during)
+        return np.where(s >= self.column("s_stop"), self.column("w_stop"), v)
+
+    def proper_times(self, t: FloatArray) -> FloatArray:
+        """Proper time of every row at frame times ``t``, zero where the point starts changing velocity.
+
+        Inertial pieces: ``d tau = dt' / cosh(theta')``; hyperbola of radius ``rho``:
+        ``tau = rho * (asinh(s_c/rho) - asinh(s_start/rho))``.
+        """
+        s = t[None, :] - self.column("t_vertex")
+        s_start = self.column("s_start")
+        s_stop = self.column("s_stop")
+        rho = self.column("radius")
+        sc = np.clip(s, s_start, s_stop)
+        safe = np.where(rho > 0.0, rho, 1.0)
+        phi = np.arcsinh(sc / safe) - np.arcsinh(s_start / safe)
+        tau = np.where(rho > 0.0, rho * phi, 0.0)
+        tau = tau + np.minimum(s - s_start, 0.0) / np.cosh(self.column("rapidity_start"))
+        return tau + np.maximum(s - s_stop, 0.0) / np.cosh(self.column("rapidity_stop"))
+
+    def switch_events(self) -> tuple[FloatArray, FloatArray]:
+        """Frame events ``(t', x')`` where each row starts and stops changing velocity; each ``(rows, 2)``.
+
+        ``x' = x'_V + sign rho (cosh(theta') - 1) = x'_V + 2 sign rho sinh^2(theta'/2)``.
+        """
+        out = []
+        for t_key, th_key in (("t_start", "rapidity_start"), ("t_stop", "rapidity_stop")):
+            rise = self.sign * 2.0 * self.radius * np.sinh(0.5 * getattr(self, th_key)) ** 2
+            out.append(np.stack([getattr(self, t_key), self.x_vertex + rise], axis=-1))
+        return out[0], out[1]

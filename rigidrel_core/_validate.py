@@ -1,0 +1,104 @@
+"""Input validation: every bad value raises ValueError naming the parameter and its allowed range."""
+
+from __future__ import annotations
+
+import math
+import numbers
+
+import numpy as np
+import numpy.typing as npt
+
+#: Largest |time| accepted by the samplers; beyond it float64 products may overflow.
+MAX_ABS_TIME = 1e300
+
+
+class ParameterError(ValueError):
+    """A parameter outside its allowed range (a ValueError, so ``except ValueError`` works)."""
+
+    def __init__(self, name: str, allowed: str, got: object) -> None:
+        self.parameter = name
+        self.allowed = allowed
+        super().__init__(f"{name} must be {allowed}; got {got!r}")
+
+
+def _as_float(name: str, value: object, allowed: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ParameterError(name, allowed, value)
+    x = float(value)
+    if not math.isfinite(x):
+        raise ParameterError(name, allowed, value)
+    return x
+
+
+def check_velocity(name: str, value: object) -> float:
+    """A velocity in the open interval (-1, 1) (c = 1)."""
+    allowed = "a finite number in (-1, 1)"
+    x = _as_float(name, value, allowed)
+    if not -1.0 < x < 1.0:
+        raise ParameterError(name, allowed, value)
+    return x
+
+
+def check_speed(name: str, value: object) -> float:
+    """A speed in the open interval (0, 1)."""
+    allowed = "a finite number in (0, 1)"
+    x = _as_float(name, value, allowed)
+    if not 0.0 < x < 1.0:
+        raise ParameterError(name, allowed, value)
+    return x
+
+
+def check_positive(name: str, value: object) -> float:
+    """A finite number > 0 (masses, lengths, accelerations)."""
+    allowed = "a finite number > 0"
+    x = _as_float(name, value, allowed)
+    if not x > 0.0:
+        raise ParameterError(name, allowed, value)
+    return x
+
+
+def check_restitution(name: str, value: object) -> float:
+    """A coefficient of restitution in the closed interval [0, 1]."""
+    allowed = "a finite number in [0, 1]"
+    x = _as_float(name, value, allowed)
+    if not 0.0 <= x <= 1.0:
+        raise ParameterError(name, allowed, value)
+    return x
+
+
+def check_open_unit(name: str, value: object) -> float:
+    """A dimensionless number in the open interval (0, 1)."""
+    allowed = "a finite number in (0, 1)"
+    x = _as_float(name, value, allowed)
+    if not 0.0 < x < 1.0:
+        raise ParameterError(name, allowed, value)
+    return x
+
+
+def check_times(name: str, t: npt.ArrayLike) -> npt.NDArray[np.float64]:
+    """Finite real times with ``|t| <= 1e300``; any shape."""
+    allowed = f"finite real numbers with |{name}| <= {MAX_ABS_TIME:g}"
+    try:
+        arr = np.asarray(t, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ParameterError(name, allowed, t) from None
+    if arr.size:
+        lo = arr.min()
+        hi = arr.max()
+        # NaN propagates through min/max; inf fails the bound.
+        if not (lo >= -MAX_ABS_TIME and hi <= MAX_ABS_TIME):
+            bad = arr[~(np.abs(arr) <= MAX_ABS_TIME)].ravel()[0]
+            raise ParameterError(name, allowed, float(bad))
+    return arr
+
+
+def check_fractions(name: str, f: npt.ArrayLike) -> npt.NDArray[np.float64]:
+    """Material coordinates as fractions of the rest length, each in [0, 1]."""
+    allowed = "an array of numbers in [0, 1]"
+    try:
+        arr = np.asarray(f, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ParameterError(name, allowed, f) from None
+    if arr.ndim != 1 or not np.all((arr >= 0.0) & (arr <= 1.0)):
+        raise ParameterError(name, allowed, f)
+    return arr
