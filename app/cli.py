@@ -1,0 +1,166 @@
+"""The ``rigidrel`` command: events tables for slides, the app server, exports, figures, benchmarks.
+
+Every bad argument ends in one line on stderr and exit status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections.abc import Sequence
+from typing import NoReturn
+
+import rigidrel_core as rr
+
+EXIT_USAGE = 2
+
+
+class OneLineParser(argparse.ArgumentParser):
+    """argparse, but a usage error is one line on stderr and exit status 2."""
+
+    def error(self, message: str) -> NoReturn:
+        sys.stderr.write(f"{self.prog}: error: {message}\n")
+        raise SystemExit(EXIT_USAGE)
+
+
+def fail(prog: str, message: str) -> NoReturn:
+    sys.stderr.write(f"{prog}: error: {message.splitlines()[0] if message else 'failed'}\n")
+    raise SystemExit(EXIT_USAGE)
+
+
+# ---------------------------------------------------------------- events
+def _all_parameters() -> dict[str, rr.ParameterSpec]:
+    out: dict[str, rr.ParameterSpec] = {}
+    for specs in rr.SCENE_PARAMETERS.values():
+        for p in specs:
+            out.setdefault(p.name, p)
+    return out
+
+
+def _number_or_none(text: str) -> float | None:
+    if text.strip().lower() in ("none", "impulse", "impulsive"):
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+
+
+def add_scene_arguments(parser: argparse.ArgumentParser) -> None:
+    """``SCENE`` and one ``--name VALUE`` option per scene parameter (defaults: the paper's)."""
+    parser.add_argument("scene", choices=[k.value for k in rr.SceneKind], help="which scene")
+    for name, spec in _all_parameters().items():
+        flags = dict.fromkeys(["--" + name.replace("_", "-"), f"--{name}"])
+        parser.add_argument(
+            *flags, dest=name, type=_number_or_none, default=argparse.SUPPRESS,
+            metavar=name.upper(), help=f"{spec.description}; allowed {spec.allowed}",
+        )
+    parser.add_argument(
+        "--frame", default="lab",
+        help="frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'",
+    )
+
+
+def scene_from_args(prog: str, args: argparse.Namespace) -> tuple[rr.Scene, rr.Frame]:
+    names = set(_all_parameters())
+    params = {k: v for k, v in vars(args).items() if k in names}
+    try:
+        scene = rr.build_scene(args.scene, **params)
+        frame = resolve_frame(scene, args.frame)
+    except ValueError as exc:
+        fail(prog, str(exc))
+    return scene, frame
+
+
+def resolve_frame(scene: rr.Scene, text: str) -> rr.Frame:
+    if text in scene.frames:
+        return scene.frames[text]
+    try:
+        beta = float(text)
+    except ValueError:
+        presets = ", ".join(repr(k) for k in scene.frames)
+        raise rr.ParameterError("frame", f"a velocity in (-1, 1) or one of {presets}", text) from None
+    return rr.Frame.from_velocity(beta)
+
+
+def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
+    """Everything ``rigidrel events`` prints, as plain data."""
+    budget = scene.budget(frame)
+    return {
+        "scene": scene.kind.value,
+        "parameters": dict(scene.parameters),
+        "frame": {"name": frame.name, "velocity": frame.beta},
+        "events": {k: {"t": t, "x": x} for k, (t, x) in scene.events_in(frame).items()},
+        "events_lab": {k: {"t": t, "x": x} for k, (t, x) in scene.events.items()},
+        "initial_velocities": list(scene.initial_velocities),
+        "final_velocities": list(scene.final_velocities),
+        "frame_presets": {k: f.beta for k, f in scene.frames.items()},
+        "budget": budget.as_dict(),
+    }
+
+
+def _g(x: float) -> str:
+    return f"{x:.10g}" if x != 0 else "0"
+
+
+def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
+    budget = scene.budget(frame)
+    lines = [
+        f"scene      {scene.kind.value}   (c = 1)",
+        "parameters " + "  ".join(f"{k}={_g(v)}" for k, v in scene.parameters.items()),
+        f"frame      {frame.name}  (beta = {_g(frame.beta)})",
+        "",
+        f"{'event':<8}{'t':>20}{'x':>20}",
+    ]
+    for name, (t, x) in scene.events_in(frame).items():
+        lines.append(f"{name:<8}{_g(t):>20}{_g(x):>20}")
+    lines += ["", f"{'rod':<8}{'V before (lab)':>20}{'V after (lab)':>20}"]
+    for rod, v0, v1 in zip(scene.rods, scene.initial_velocities, scene.final_velocities):
+        lines.append(f"{rod.name:<8}{_g(v0):>20}{_g(v1):>20}")
+    presets = "  ".join(f"{k}: {_g(f.beta)}" for k, f in scene.frames.items())
+    lines += ["", f"frame presets  {presets}", "", f"4-momentum in this frame (E, p)  {'M':>12}{'E':>16}{'p':>16}"]
+    for phase, masses, em in (
+        ("before", budget.rest_mass_before, budget.before),
+        ("after", budget.rest_mass_after, budget.after),
+    ):
+        for name, m, (e, p) in zip(budget.bodies, masses, em):
+            lines.append(f"  {name + ' ' + phase:<31}{_g(m):>12}{_g(e):>16}{_g(p):>16}")
+    lines.append(f"  {'total before':<31}{'':>12}{_g(budget.total_before[0]):>16}{_g(budget.total_before[1]):>16}")
+    lines.append(f"  {'total after':<31}{'':>12}{_g(budget.total_after[0]):>16}{_g(budget.total_after[1]):>16}")
+    if budget.external_source != "none":
+        src = {"drive": "from the drive", "wall": "from the wall"}[budget.external_source]
+        lines.append(f"  {src:<31}{'':>12}{_g(budget.external[0]):>16}{_g(budget.external[1]):>16}")
+    lines.append(f"  heat (rest energy created): {_g(budget.heat)}")
+    return "\n".join(lines)
+
+
+def cmd_events(args: argparse.Namespace) -> int:
+    scene, frame = scene_from_args("rigidrel events", args)
+    if args.json:
+        print(json.dumps(events_report(scene, frame), indent=2, allow_nan=False))
+    else:
+        print(format_events(scene, frame))
+    return 0
+
+
+# ---------------------------------------------------------------- main
+def build_parser() -> OneLineParser:
+    parser = OneLineParser(prog="rigidrel", description="Born-rigid rods in special relativity (Franklin 2012).")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
+    ev = sub.add_parser("events", help="events, final velocities and 4-momentum budget of a scene")
+    add_scene_arguments(ev)
+    ev.add_argument("--json", action="store_true", help="machine-readable output")
+    ev.set_defaults(func=cmd_events)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    return int(args.func(args))
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
+

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Install everything the suite needs on a fresh machine, then run all of it:
+# ruff, pyright, the import contract, and pytest (core, CLI, browser tests).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if ! [ -x /usr/bin/chromium ]; then
+    echo "installing Debian's chromium for the browser tests" >&2
+    SUDO=""; [ "$(id -u)" = 0 ] || SUDO="sudo"
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq chromium >/dev/null
+fi
+
+python3 -m venv .venv
+.venv/bin/python -m pip install -q --disable-pip-version-check -e '.[test]'
+
+.venv/bin/ruff check .
+.venv/bin/pyright
+.venv/bin/lint-imports
+.venv/bin/python -m pytest -q "$@"
