@@ -53,11 +53,16 @@ def add_scene_arguments(parser: argparse.ArgumentParser) -> None:
     for name, spec in _all_parameters().items():
         flags = dict.fromkeys(["--" + name.replace("_", "-"), f"--{name}"])
         parser.add_argument(
-            *flags, dest=name, type=_number_or_none, default=argparse.SUPPRESS,
-            metavar=name.upper(), help=f"{spec.description}; allowed {spec.allowed}",
+            *flags,
+            dest=name,
+            type=_number_or_none,
+            default=argparse.SUPPRESS,
+            metavar=name.upper(),
+            help=f"{spec.description}; allowed {spec.allowed}",
         )
     parser.add_argument(
-        "--frame", default="lab",
+        "--frame",
+        default="lab",
         help="frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'",
     )
 
@@ -152,7 +157,27 @@ def build_parser() -> OneLineParser:
     add_scene_arguments(ev)
     ev.add_argument("--json", action="store_true", help="machine-readable output")
     ev.set_defaults(func=cmd_events)
+    sv = sub.add_parser("serve", help="start the app: open the printed URL in a browser")
+    sv.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1: this machine only)")
+    sv.add_argument("--port", type=_port, default=8080, help="port to try first; the next free one is used if busy")
+    sv.set_defaults(func=cmd_serve)
     return parser
+
+
+def _port(text: str) -> int:
+    try:
+        port = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a port number: {text!r}") from None
+    if not 0 <= port <= 65535:
+        raise argparse.ArgumentTypeError(f"port must be in [0, 65535]; got {port}")
+    return port
+
+
+def cmd_serve(args: argparse.Namespace) -> int:
+    from .server import serve  # viser is imported only here
+
+    return serve(args.host, args.port)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -163,4 +188,3 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 if __name__ == "__main__":
     raise SystemExit(main())
-

@@ -192,8 +192,7 @@ class MotionPlan:
 
     @functools.cached_property
     def _columns(self) -> dict[str, FloatArray]:
-        names = ("sign", "t_vertex", "q0", "x_hyp", "t_start", "t_stop",
-                 "x0_start", "w_start", "x0_stop", "w_stop")
+        names = ("sign", "t_vertex", "q0", "x_hyp", "t_start", "t_stop", "x0_start", "w_start", "x0_stop", "w_stop")
         c = {k: self.column(k) for k in names}
         c["radius2"] = self.column("radius") ** 2
         c["two_t_vertex"] = 2.0 * c["t_vertex"]
@@ -213,8 +212,8 @@ class MotionPlan:
             return self._positions_block(t)
         out = np.empty((self.radius.size, n))
         for j in range(0, n, _CHUNK):
-            tc = t[j:j + _CHUNK]
-            out[:, j:j + tc.size] = self._positions_block(tc)
+            tc = t[j : j + _CHUNK]
+            out[:, j : j + tc.size] = self._positions_block(tc)
         return out
 
     def _positions_block(self, t: FloatArray) -> FloatArray:

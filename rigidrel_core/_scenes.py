@@ -198,6 +198,16 @@ class Scene:
         lengths = self._plan(as_frame(frame_velocity), _ENDS).equal_time_lengths(tt.ravel(), rest)
         return lengths.reshape((self.n_rods, *tt.shape))
 
+    def switch_times(self, frame_velocity: FrameLike = 0.0, fractions: npt.ArrayLike = _ENDS) -> FloatArray:
+        """Frame times at which each material point starts and stops changing velocity.
+
+        Shape ``(n_rods, len(fractions), 2)``; between them the point is on its hyperbola,
+        outside on straight lines (so a plot needs 2 samples there).
+        """
+        f = check_fractions("fractions", fractions)
+        plan = self._plan(as_frame(frame_velocity), f)
+        return np.stack([plan.t_start, plan.t_stop], axis=-1).reshape((self.n_rods, f.size, 2))
+
     def wall_x(self, t: npt.ArrayLike, frame_velocity: FrameLike = 0.0) -> FloatArray:
         """x' of the wall (lab x = 0) at frame times ``t``: ``x' = -beta t'``."""
         if not self.has_wall:
@@ -603,9 +613,7 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         )
 
 
-def rod_collision(
-    v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float
-) -> Scene:
+def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float) -> Scene:
     """Collision of two rigid rods along x (paper Secs. 5-6, Figs. 3-4).
 
     Rod 1 (mass ``m1``, rest length ``l1``, velocity ``v1``) is on the left, rod 2 on the
@@ -650,9 +658,7 @@ def rod_collision(
     return _finite(
         Scene(
             kind=SceneKind.ROD_COLLISION,
-            parameters=MappingProxyType(
-                {"v1": v1, "v2": v2, "m1": m1, "m2": m2, "l1": l1, "l2": l2, "eps": eps}
-            ),
+            parameters=MappingProxyType({"v1": v1, "v2": v2, "m1": m1, "m2": m2, "l1": l1, "l2": l2, "eps": eps}),
             rods=(Rod("rod 1", rod1, m1, m1_after), Rod("rod 2", rod2, m2, m2_after)),
             event_specs=specs,
             frames=frames,

@@ -120,10 +120,36 @@ def test_elastic_wall_bounce_keeps_speed() -> None:
 # ---------------------------------------------------------------- Sec. 6
 CASES = {
     # name: (m1, m2, u, gamma_u, Vb1, gamma_b1, Vp1, gamma_p1, Vp2, gamma_p2, T1, T1p, T2p)
-    "I": (1.0, 2.0, Fraction(3, 13), None, Fraction(3, 7), None, Fraction(-9, 41), Fraction(41, 40),
-          Fraction(39, 89), Fraction(89, 80), Fraction(-3, 4), Fraction(9, 40), Fraction(39, 80)),
-    "II": (2.0, 1.0, Fraction(3, 7), None, Fraction(3, 13), None, Fraction(9, 41), Fraction(41, 40),
-           Fraction(21, 29), Fraction(29, 20), Fraction(-3, 4), Fraction(-9, 40), Fraction(21, 20)),
+    "I": (
+        1.0,
+        2.0,
+        Fraction(3, 13),
+        None,
+        Fraction(3, 7),
+        None,
+        Fraction(-9, 41),
+        Fraction(41, 40),
+        Fraction(39, 89),
+        Fraction(89, 80),
+        Fraction(-3, 4),
+        Fraction(9, 40),
+        Fraction(39, 80),
+    ),
+    "II": (
+        2.0,
+        1.0,
+        Fraction(3, 7),
+        None,
+        Fraction(3, 13),
+        None,
+        Fraction(9, 41),
+        Fraction(41, 40),
+        Fraction(21, 29),
+        Fraction(29, 20),
+        Fraction(-3, 4),
+        Fraction(-9, 40),
+        Fraction(21, 20),
+    ),
 }
 
 

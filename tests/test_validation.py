@@ -28,13 +28,29 @@ GOOD: dict[str, tuple[Callable[..., rr.Scene], dict[str, Any]]] = {
 
 #: (parameter, bad value, allowed-range text that must appear)
 BAD = [
-    ("v", 0.0, "(0, 1)"), ("v", 1.0, "(0, 1)"), ("v", -0.5, "(0, 1)"), ("v", 1.5, "(0, 1)"),
-    ("length", 0.0, "> 0"), ("length", -1.0, "> 0"), ("length", math.inf, "> 0"),
-    ("a_front", 0.0, "> 0"), ("a_front", 2.0, "(0, 1)"), ("a_front", 1.0, "(0, 1)"),
-    ("eps", -0.1, "[0, 1]"), ("eps", 1.1, "[0, 1]"),
-    ("v1", 1.0, "(-1, 1)"), ("v2", -1.0, "(-1, 1)"), ("v2", 0.6, "less than v1"), ("v2", 0.7, "less than v1"),
-    ("m1", 0.0, "> 0"), ("m2", -2.0, "> 0"), ("m2", math.inf, "> 0"), ("l1", 0.0, "> 0"), ("l2", math.nan, "> 0"),
-    ("v_initial", 1.0, "(-1, 1)"), ("v_final", 0.2, "different from v_initial"),
+    ("v", 0.0, "(0, 1)"),
+    ("v", 1.0, "(0, 1)"),
+    ("v", -0.5, "(0, 1)"),
+    ("v", 1.5, "(0, 1)"),
+    ("length", 0.0, "> 0"),
+    ("length", -1.0, "> 0"),
+    ("length", math.inf, "> 0"),
+    ("a_front", 0.0, "> 0"),
+    ("a_front", 2.0, "(0, 1)"),
+    ("a_front", 1.0, "(0, 1)"),
+    ("eps", -0.1, "[0, 1]"),
+    ("eps", 1.1, "[0, 1]"),
+    ("v1", 1.0, "(-1, 1)"),
+    ("v2", -1.0, "(-1, 1)"),
+    ("v2", 0.6, "less than v1"),
+    ("v2", 0.7, "less than v1"),
+    ("m1", 0.0, "> 0"),
+    ("m2", -2.0, "> 0"),
+    ("m2", math.inf, "> 0"),
+    ("l1", 0.0, "> 0"),
+    ("l2", math.nan, "> 0"),
+    ("v_initial", 1.0, "(-1, 1)"),
+    ("v_final", 0.2, "different from v_initial"),
 ]
 
 

@@ -79,14 +79,13 @@ def accelerating_point(xi: Mp, alpha: Mp, V: Mp) -> Worldline:
     return x
 
 
-def hyperbola_point(
-    centre: Mp, d: Mp, side: int, v_before: Mp, v_after: Mp
-) -> Worldline:
+def hyperbola_point(centre: Mp, d: Mp, side: int, v_before: Mp, v_after: Mp) -> Worldline:
     """A point at rest-distance d from a centre event (0, centre) on side +1/-1.
 
     Eq. (imp12): x = centre + side sqrt(d^2 + t^2) between the times where its velocity
     is v_before and v_after; the tangent lines outside.
     """
+
     def t_at(v: Mp) -> Mp:  # dx/dt = side t / sqrt(d^2 + t^2) = v
         return side * d * gamma_of(v) * v
 
@@ -343,14 +342,17 @@ def cases() -> list[dict[str, object]]:
             a, b = sorted([rng.uniform(-1, 1) * speed(), rng.uniform(-1, 1) * speed()])
             if rng.random() < 0.5:
                 a, b = b, a
-            p = {"v_initial": a, "v_final": b, "length": L,
-                 "a_front": None if rng.random() < 0.3 else rng.uniform(0.01, 0.999) / L}
+            p = {
+                "v_initial": a,
+                "v_final": b,
+                "length": L,
+                "a_front": None if rng.random() < 0.3 else rng.uniform(0.01, 0.999) / L,
+            }
         else:
             v1 = rng.uniform(-0.5, 1) * speed()
             v2 = v1 - rng.uniform(0.01, 1) * (1 + v1)
             v2 = max(v2, -1 + 1e-12)
-            p = {"v1": v1, "v2": v2, "m1": 1.0, "m2": logu(-6, 6), "l1": L, "l2": L * logu(-2, 2),
-                 "eps": rng.random()}
+            p = {"v1": v1, "v2": v2, "m1": 1.0, "m2": logu(-6, 6), "l1": L, "l2": L * logu(-2, 2), "eps": rng.random()}
         out.append({"kind": kind, "params": p})
     return out
 

@@ -1,0 +1,228 @@
+"""Minkowski diagrams and equal-time-length charts, as drawing-vocabulary charts.
+
+Pure functions of a scene, a frame, a time window and a panel size; every coordinate
+comes from :mod:`rigidrel_core` (positions, events, boosts). Axes: x horizontal, time up,
+one unit of each equally long, so light moves at 45 degrees.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+import rigidrel_core as rr
+
+from .draw import (
+    FRAME_COLOR,
+    INK,
+    LIGHT_COLOR,
+    ROD_COLORS,
+    WALL_COLOR,
+    Area,
+    Chart,
+    Dash,
+    FloatArray,
+    Item,
+    Label,
+    Points,
+    Polyline,
+    Segments,
+    Style,
+    event_label,
+    rgba,
+)
+from .sampling import sample_lengths, sample_worldlines
+
+#: Material points drawn in the diagrams (fractions of the rest length).
+DIAGRAM_FRACTIONS = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
+
+
+@dataclass(frozen=True)
+class View:
+    """Which frame a diagram is drawn in, and which other frame it shows for comparison."""
+
+    frame: rr.Frame
+    other: rr.Frame
+    name: str
+    """Axis names of this frame: "" for the lab (t, x), "'" for the chosen frame (t', x')."""
+    prime: str
+    other_prime: str
+
+
+def frame_title(frame: rr.Frame) -> str:
+    return f"{frame.name} (β = {frame.beta:.4g})" if frame.name != "lab" else "lab"
+
+
+def _to_view(view: View, events_other: FloatArray) -> FloatArray:
+    """Events of the other frame ``(..., 2)`` into this view's frame, via the core's boosts."""
+    lab = view.other.as_boost().inverse().apply(events_other)
+    return view.frame.as_boost().apply(lab)
+
+
+def window_x_range(scene: rr.Scene, frames: tuple[rr.Frame, ...], t_range: tuple[float, float]) -> tuple[float, float]:
+    """The x interval the rods sweep over the window in any of the frames (for shared scales)."""
+    t = np.linspace(t_range[0], t_range[1], 97)
+    xs = [scene.positions(t, f) for f in frames]
+    lo = min(float(x.min()) for x in xs)
+    hi = max(float(x.max()) for x in xs)
+    return lo, hi
+
+
+def minkowski_static(
+    scene: rr.Scene,
+    view: View,
+    t_range: tuple[float, float],
+    x_range: tuple[float, float],
+    panel_px: float,
+    overlay: rr.Scene | None = None,
+) -> Chart:
+    """Everything in a Minkowski diagram that does not move with playback."""
+    frame = view.frame
+    px_per_x = panel_px / max(x_range[1] - x_range[0], 1e-300)
+    items: list[Item] = []
+    t0, t1 = t_range
+    # light cone of the origin event (start / kick / contact): x = +-t
+    span = max(abs(t0), abs(t1), abs(x_range[0]), abs(x_range[1])) * 2.0
+    cone = Style(LIGHT_COLOR, 1.5, "dash", name="light cone of the origin", group="cone")
+    items.append(Polyline(np.array([-span, span]), np.array([-span, span]), cone))
+    items.append(
+        Polyline(np.array([-span, span]), np.array([span, -span]), Style(LIGHT_COLOR, 1.5, "dash", group="cone"))
+    )
+    # the other frame's time and space axes (x_o = 0 and t_o = 0), through the origin
+    if view.other.key() != frame.key():
+        ax = Style(
+            FRAME_COLOR,
+            1.5,
+            "dashdot",
+            name=f"t{view.other_prime}, x{view.other_prime} axes of {frame_title(view.other)}",
+            group="axes",
+        )
+        e = np.array([[[-span, 0.0], [span, 0.0]], [[0.0, -span], [0.0, span]]])
+        both = _to_view(view, e)
+        items.append(Polyline(both[0, :, 1], both[0, :, 0], ax))
+        items.append(Polyline(both[1, :, 1], both[1, :, 0], Style(FRAME_COLOR, 1.5, "dashdot", group="axes")))
+        # name the other frame's time axis where it leaves the top of the window
+        t_label = t0 + 0.92 * (t1 - t0)
+        x_label = float(np.interp(t_label, both[0, :, 0], both[0, :, 1]))
+        items.append(Label(x_label, t_label, f"t{view.other_prime}", Style(FRAME_COLOR)))
+    # the wall (lab x = 0)
+    if scene.has_wall:
+        tt = np.array([t0, t1])
+        items.append(Polyline(scene.wall_x(tt, frame), tt, Style(WALL_COLOR, 5.0, name="wall")))
+    # world tubes and worldlines
+    lines = sample_worldlines(scene, frame, DIAGRAM_FRACTIONS, t_range, px_per_x)
+    for r, rod in enumerate(scene.rods):
+        color = ROD_COLORS[r % len(ROD_COLORS)]
+        left, right = lines[r][0], lines[r][-1]
+        items.append(
+            Area(
+                np.concatenate([left.x, right.x[::-1]]),
+                np.concatenate([left.t, right.t[::-1]]),
+                Style(rgba(color, 0.16), 0.0, group=rod.name),
+            )
+        )
+        for k in range(1, DIAGRAM_FRACTIONS.size - 1):
+            w = lines[r][k]
+            items.append(Polyline(w.x, w.t, Style(color, 1.0, opacity=0.7, group=rod.name)))
+        items.append(Polyline(left.x, left.t, Style(color, 2.5, name=rod.name, group=rod.name)))
+        items.append(Polyline(right.x, right.t, Style(color, 2.5, group=rod.name)))
+    if overlay is not None:  # Fig. 1's dashed curve: the impulsive start to the same V
+        left, right = sample_worldlines(overlay, frame, np.array([0.0, 1.0]), t_range, px_per_x)[0]
+        items.append(Polyline(left.x, left.t, Style(INK, 1.5, "dash", group="overlay")))
+        items.append(
+            Polyline(right.x, right.t, Style(INK, 1.5, "dash", name="impulsive (Fig. 1 dashed)", group="overlay"))
+        )
+    # named events, in the paper's notation
+    events = scene.events_in(frame)
+    if events:
+        et = np.array([e[0] for e in events.values()])
+        ex = np.array([e[1] for e in events.values()])
+        items.append(Points(ex, et, Style(INK, name="events", group="events"), size=7))
+        for name, (t, x) in events.items():
+            items.append(Label(x, t, event_label(name), Style(INK)))
+    return Chart(
+        items=tuple(items),
+        x_title=f"x{view.prime}",
+        y_title=f"t{view.prime}",
+        x_range=x_range,
+        y_range=t_range,
+        title=f"Minkowski diagram, {frame_title(frame)} frame",
+        equal_aspect=True,
+    )
+
+
+def minkowski_now(scene: rr.Scene, view: View, now: float, span: float) -> tuple[Item, ...]:
+    """The moving parts: this frame's 'now' line, the other frame's, the rods' current places."""
+    frame = view.frame
+    items: list[Item] = [
+        Polyline(
+            np.array([-span, span]), np.array([now, now]), Style(INK, 1.2, name=f"now: t{view.prime} = {now:.3g}")
+        ),
+    ]
+    if view.other.key() != frame.key():
+        # the other frame's line of simultaneity t_o = now, drawn in this frame
+        e = _to_view(view, np.array([[now, -span], [now, span]]))
+        items.append(
+            Polyline(e[:, 1], e[:, 0], Style(FRAME_COLOR, 1.2, "dot", name=f"now: t{view.other_prime} = {now:.3g}"))
+        )
+    x = scene.positions(np.array([now]), frame)[:, :, 0]
+    items.append(Points(x.ravel(), np.full(x.size, now), Style(INK), size=6))
+    return tuple(items)
+
+
+def length_static(
+    scene: rr.Scene, lab: rr.Frame, chosen: rr.Frame, t_range: tuple[float, float], panel_px: tuple[float, float]
+) -> Chart:
+    """Equal-time length of each rod against time, in the lab and in the chosen frame (Fig. 2).
+
+    ``panel_px`` is the plot area (width, height) in pixels; curves are sampled to half a pixel.
+    """
+    items: list[Item] = []
+    frames: list[tuple[rr.Frame, str, Dash]] = [(lab, "", "solid")]
+    if chosen.key() != lab.key():
+        frames.append((chosen, "'", "dash"))
+    # the largest length over the window: the rest lengths and the contracted ones at the ends
+    probe = np.array([t_range[0], t_range[1]])
+    top = max(max(r.motion.length for r in scene.rods), *(float(scene.lengths(probe, f).max()) for f, _, _ in frames))
+    px_per_length = panel_px[1] / (1.12 * top)
+    for frame, prime, dash in frames:
+        curves = sample_lengths(scene, frame, t_range, px_per_length)
+        for r, rod in enumerate(scene.rods):
+            color = ROD_COLORS[r % len(ROD_COLORS)]
+            name = f"{rod.name}, {frame_title(frame)} (t{prime})"
+            items.append(Polyline(curves[r].t, curves[r].x, Style(color, 2.5 if not prime else 2.0, dash, name=name)))
+        # the named events on the curves
+        for name, (te, _) in scene.events_in(frame).items():
+            if t_range[0] <= te <= t_range[1]:
+                le = scene.lengths(np.array([te]), frame)[:, 0]
+                rod = _event_rod(scene, name)
+                items.append(Points(np.array([te]), le[rod : rod + 1], Style(INK), size=6))
+                items.append(
+                    Label(te, float(le[rod]), event_label(name) + (" (t')" if prime else ""), Style(INK), size=11)
+                )
+    return Chart(
+        items=tuple(items),
+        x_title="time in its own frame (t or t')",
+        y_title="equal-time length",
+        x_range=t_range,
+        y_range=(0.0, top * 1.12 if top > 0 else 1.0),
+        title="Equal-time length (Fig. 2)",
+    )
+
+
+def _event_rod(scene: rr.Scene, name: str) -> int:
+    for spec in scene.event_specs:
+        if spec.name == name:
+            return spec.rod
+    return 0
+
+
+def length_now(scene: rr.Scene, lab: rr.Frame, chosen: rr.Frame, now: float, y_top: float) -> tuple[Item, ...]:
+    items: list[Item] = [
+        Segments(np.array([now]), np.array([0.0]), np.array([now]), np.array([y_top]), Style(INK, 1.2))
+    ]
+    for frame in (lab, chosen):
+        le = scene.lengths(np.array([now]), frame)[:, 0]
+        items.append(Points(np.full(le.size, now), le, Style(INK), size=6))
+    return tuple(items)

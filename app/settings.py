@@ -1,0 +1,125 @@
+"""What the controls say, as a frozen value, and the scene and frame it means.
+
+The GUI only ever replaces one field of :class:`Settings` and asks :func:`resolve` for
+the scene: invalid combinations come back as a message, never as an exception.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from enum import StrEnum
+
+import rigidrel_core as rr
+from rigidrel_core import SceneKind
+
+#: The scenes offered in the dropdown, in teaching order.
+SCENE_LABELS: dict[SceneKind, str] = {
+    SceneKind.CONSTANT_ACCELERATION: "Constant acceleration",
+    SceneKind.DECELERATION: "Deceleration",
+    SceneKind.IMPULSIVE_START: "Impulsive start",
+    SceneKind.WALL_COLLISION: "Wall crash / bounce",
+    SceneKind.ROD_COLLISION: "Rod-rod collision",
+}
+CUSTOM_FRAME = "custom (β slider)"
+
+
+class Preset(StrEnum):
+    NONE = "—"
+    FIG1 = "Fig. 1: acceleration to V = 0.6"
+    FIG3 = "Fig. 3: collision, M2 = 2 M1"
+    FIG4 = "Fig. 4: collision, M1 = 2 M2"
+
+
+@dataclass(frozen=True)
+class Settings:
+    """Slider and dropdown values. Rod 1 has rest length L0 = 1 and mass M1 = 1."""
+
+    scene: SceneKind = SceneKind.CONSTANT_ACCELERATION
+    v: float = 0.6
+    """V; V1 for a collision (c = 1)."""
+    v2: float = 0.0
+    log_mass_ratio: float = math.log10(2.0)
+    """log10(M2/M1)."""
+    eps: float = 1.0
+    a_front_length: float = 0.5
+    """a'_F L0 of the front end."""
+    length_ratio: float = 1.0
+    """L2/L1."""
+    frame: str = "rod after"
+    """A frame preset of the scene ("lab", "rod after", "barycentric", ...) or CUSTOM_FRAME.
+    A name the scene lacks falls back to :func:`default_frame`."""
+    beta: float = 0.0
+    """The custom frame's velocity."""
+    overlay_impulsive: bool = False
+    """Draw Fig. 1's dashed impulsive curve over a constant acceleration."""
+
+
+PRESETS: dict[Preset, Settings] = {
+    Preset.FIG1: Settings(SceneKind.CONSTANT_ACCELERATION, v=0.6, a_front_length=0.5, overlay_impulsive=True),
+    Preset.FIG3: Settings(SceneKind.ROD_COLLISION, v=0.6, v2=0.0, log_mass_ratio=math.log10(2.0), eps=1.0),
+    Preset.FIG4: Settings(SceneKind.ROD_COLLISION, v=0.6, v2=0.0, log_mass_ratio=math.log10(0.5), eps=1.0),
+}
+
+
+@dataclass(frozen=True)
+class Resolved:
+    scene: rr.Scene
+    frame: rr.Frame
+    overlay: rr.Scene | None
+
+
+def build_scene(s: Settings) -> rr.Scene:
+    """The scene the settings describe (raises ValueError naming the offending parameter)."""
+    if s.scene is SceneKind.CONSTANT_ACCELERATION:
+        return rr.constant_acceleration(v=s.v, length=1.0, a_front=s.a_front_length)
+    if s.scene is SceneKind.DECELERATION:
+        return rr.deceleration(v=s.v, length=1.0, a_front=s.a_front_length)
+    if s.scene is SceneKind.IMPULSIVE_START:
+        return rr.impulsive_start(v=s.v, length=1.0)
+    if s.scene is SceneKind.WALL_COLLISION:
+        return rr.wall_collision(v=s.v, length=1.0, eps=s.eps)
+    if s.scene is SceneKind.ROD_COLLISION:
+        return rr.rod_collision(
+            v1=s.v, v2=s.v2, m1=1.0, m2=10.0**s.log_mass_ratio, l1=1.0, l2=s.length_ratio, eps=s.eps
+        )
+    raise rr.ParameterError("scene", "one of the scenes in the dropdown", s.scene)
+
+
+def default_frame(scene: rr.Scene) -> str:
+    """The frame a lecturer compares with first: the rod's rest frame after, or the barycentre."""
+    return "barycentric" if "barycentric" in scene.frames else "rod after"
+
+
+def frame_choices(scene: rr.Scene) -> tuple[str, ...]:
+    return (*scene.frames.keys(), CUSTOM_FRAME)
+
+
+def resolve(s: Settings) -> Resolved | str:
+    """The scene and frame, or a one-sentence notice of why they cannot be built."""
+    try:
+        scene = build_scene(s)
+        if s.frame == CUSTOM_FRAME:
+            frame = rr.Frame.from_velocity(s.beta, name="custom")
+        else:
+            frame = scene.frames.get(s.frame) or scene.frames[default_frame(scene)]
+        overlay = None
+        if s.overlay_impulsive and s.scene is SceneKind.CONSTANT_ACCELERATION:
+            overlay = rr.impulsive_start(v=s.v, length=1.0)
+    except ValueError as exc:
+        return _explain(s, exc)
+    return Resolved(scene, frame, overlay)
+
+
+def _explain(s: Settings, exc: ValueError) -> str:
+    name = getattr(exc, "parameter", "")
+    if name == "v2":
+        return (
+            f"V2 = {s.v2:.3g} is not less than V1 = {s.v:.3g}: rod 1 never catches rod 2. "
+            "Lower V2 or raise V1; the last valid scene stays on screen."
+        )
+    return f"{exc}. The last valid scene stays on screen."
+
+
+def with_value(s: Settings, field: str, value: object) -> Settings:
+    return replace(s, **{field: value})

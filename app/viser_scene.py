@@ -1,0 +1,176 @@
+"""viser backend for the lanes: one batched mesh for every box, one line-segments node per layer.
+
+Per playback frame it assigns a handful of arrays (box positions and scales, segment
+points) and the labels' texts; it never creates nodes except when a scene's shape changes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Literal
+
+import numpy as np
+import viser
+
+from .draw import FRAME_COLOR, INK, FloatArray, Label, Segments, plain_text, rgb
+from .lanes import Box, LaneState, segments_array
+
+_CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
+_CUBE_FACES = np.array(
+    [
+        [0, 1, 3],
+        [0, 3, 2],
+        [4, 6, 7],
+        [4, 7, 5],
+        [0, 4, 5],
+        [0, 5, 1],
+        [2, 3, 7],
+        [2, 7, 6],
+        [0, 2, 6],
+        [0, 6, 4],
+        [1, 5, 7],
+        [1, 7, 3],
+    ],
+    dtype=np.uint32,
+)
+ROD_DEPTH = 0.14
+#: Boxes per lane at most: two rods and a wall. Unused instances are shrunk out of sight,
+#: so the batched mesh node is created once per client and never re-added.
+BOXES_PER_LANE = 3
+_HIDDEN = (0.0, 1e4, 0.0)
+_ANCHOR: dict[str, Literal["center-left", "center-right", "center-center"]] = {
+    "left": "center-left",
+    "right": "center-right",
+    "center": "center-center",
+}
+AMBIENT = 1.2
+FRONT = 2.0
+_FRONT = -0.5 * ROD_DEPTH - 0.004  # segments just in front of the boxes' faces
+_LABEL_Y = _FRONT - 0.01
+
+
+def linear_rgb(color: str) -> tuple[int, int, int]:
+    """An sRGB palette colour as the linear values three.js expects for mesh instance colours."""
+
+    def lin(c: int) -> int:
+        x = c / 255.0
+        y = x / 12.92 if x <= 0.04045 else ((x + 0.055) / 1.055) ** 2.4
+        return round(255.0 * y)
+
+    r, g, b = rgb(color)
+    return lin(r), lin(g), lin(b)
+
+
+class LaneRenderer:
+    """Draws :class:`LaneState` s of several lanes (stacked in z) into one client's scene."""
+
+    def __init__(self, scene: viser.SceneApi, lane_z: Sequence[float]) -> None:
+        self._scene = scene
+        self.lane_z = tuple(lane_z)
+        self._boxes: viser.BatchedMeshHandle | None = None
+        self._box_colors: tuple[str, ...] = ()
+        # flat, true colours: no environment map, an even ambient light and one from the camera
+        scene.configure_environment_map(None)
+        scene.configure_default_lights(enabled=False)
+        scene.add_light_ambient("/lanes/ambient", intensity=AMBIENT)
+        scene.add_light_directional("/lanes/front_light", intensity=FRONT, position=(0.0, -10.0, 4.0))
+        self._dynamic: viser.LineSegmentsHandle | None = None
+        self._static: viser.LineSegmentsHandle | None = None
+        self._labels: list[viser.LabelHandle] = []
+        self._static_labels: list[viser.LabelHandle] = []
+
+    # ------------------------------------------------------------------ per scene
+    def set_static(self, rulers: Sequence[tuple[Segments, Sequence[Label]]]) -> None:
+        """Per-lane static geometry (rulers, origin marks): redrawn only when the scene changes."""
+        pts = np.concatenate([segments_array(seg, z, _FRONT) for (seg, _), z in zip(rulers, self.lane_z, strict=True)])
+        if self._static is None:
+            self._static = self._scene.add_line_segments(
+                "/lanes/static", pts, colors=rgb(FRAME_COLOR), thickness=1.5, thickness_units="screen"
+            )
+        else:
+            self._static.points = pts
+        placed = [(lab, z) for (_, labels), z in zip(rulers, self.lane_z, strict=True) for lab in labels]
+        # a pool of label nodes, grown when needed and never re-added: changing a label
+        # is ~60 us, creating one ~500 us
+        while len(self._static_labels) < len(placed):
+            lab, z = placed[len(self._static_labels)]
+            self._static_labels.append(self._label(f"/lanes/static_label/{len(self._static_labels)}", lab, z))
+        for k, h in enumerate(self._static_labels):
+            if k < len(placed):
+                lab, z = placed[k]
+                h.text = plain_text(lab.text)
+                h.position = (lab.x, _LABEL_Y, lab.y + z)
+                h.font_screen_scale = lab.size / 13.0
+                h.anchor = _ANCHOR[lab.anchor]  # type: ignore[assignment]
+            h.visible = k < len(placed)
+
+    def _label(self, name: str, lab: Label, z: float) -> viser.LabelHandle:
+        return self._scene.add_label(
+            name,
+            plain_text(lab.text),
+            position=(lab.x, _LABEL_Y, lab.y + z),
+            anchor=_ANCHOR[lab.anchor],
+            font_screen_scale=lab.size / 13.0,
+        )
+
+    # ------------------------------------------------------------------ per frame
+    def update(self, states: Sequence[LaneState], labels: bool = True) -> None:
+        """Move the rods (every frame); rewrite the labels' texts only if ``labels``."""
+        boxes = [(b, z) for st, z in zip(states, self.lane_z, strict=True) for b in st.boxes]
+        self._update_boxes(boxes)
+        pts = np.concatenate(
+            [segments_array(st.segments, z, _FRONT) for st, z in zip(states, self.lane_z, strict=True)]
+        )
+        if self._dynamic is None:
+            self._dynamic = self._scene.add_line_segments(
+                "/lanes/dynamic", pts, colors=rgb(INK), thickness=1.6, thickness_units="screen"
+            )
+        else:
+            self._dynamic.points = pts
+        if not labels and self._labels:
+            return
+        placed = [(lab, z) for st, z in zip(states, self.lane_z, strict=True) for lab in st.labels]
+        if len(placed) != len(self._labels):
+            for h in self._labels:
+                h.remove()
+            self._labels = [self._label(f"/lanes/label/{k}", lab, z) for k, (lab, z) in enumerate(placed)]
+        for h, (lab, z) in zip(self._labels, placed, strict=True):
+            h.text = plain_text(lab.text)
+            h.position = (lab.x, _LABEL_Y, lab.y + z)  # unchanged positions are not re-sent
+
+    def _update_boxes(self, boxes: Sequence[tuple[Box, float]]) -> None:
+        n = BOXES_PER_LANE * len(self.lane_z)
+        if len(boxes) > n:
+            raise ValueError(f"at most {n} boxes")
+        positions = np.tile(np.array(_HIDDEN, dtype=np.float32), (n, 1))
+        scales = np.full((n, 3), 1e-6, dtype=np.float32)
+        for k, (b, z) in enumerate(boxes):
+            positions[k] = (0.5 * (b.x0 + b.x1), 0.0, z + b.z)
+            scales[k] = (max(b.x1 - b.x0, 1e-4), ROD_DEPTH, b.height)
+        names = tuple(b.color for b, _ in boxes) + ("#ffffff",) * (n - len(boxes))
+        colors = np.array([linear_rgb(c) for c in names], dtype=np.uint8)
+        if self._boxes is None:
+            self._boxes = self._scene.add_batched_meshes_simple(
+                "/lanes/boxes",
+                _CUBE_VERTICES,
+                _CUBE_FACES,
+                batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (n, 1)),
+                batched_positions=positions,
+                batched_scales=scales,
+                batched_colors=colors,
+                flat_shading=True,
+                lod="off",
+                cast_shadow=False,
+                receive_shadow=False,
+            )
+        else:
+            self._boxes.batched_positions = positions
+            self._boxes.batched_scales = scales
+            if names != self._box_colors:
+                self._boxes.batched_colors = colors
+        self._box_colors = names
+
+    def box_positions(self) -> FloatArray:
+        """Current box centres (for tests)."""
+        assert self._boxes is not None
+        return np.asarray(self._boxes.batched_positions, dtype=np.float64)

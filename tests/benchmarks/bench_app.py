@@ -1,0 +1,207 @@
+"""Speed of the app, server side and in the browser (a script that prints figures, not a test).
+
+    python -m tests.benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser]
+
+* rebuild: a slider change to every drawing rebuilt (scene, diagrams, lanes), median
+  per scene, timed in the server process (target <= 16 ms);
+* animation: N lightweight viser clients (another process) playing at once: delivered
+  rod frames per second per client (target >= 30) and server CPU per client (target <= 15 %
+  of one core);
+* first frame: headless Chromium, from ``page.goto`` to the first canvas pixels of a rod.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import io
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+import rigidrel_core as rr
+from app.server import App
+from app.settings import Settings
+from tests.viser_client import LightClient
+
+ROOT = Path(__file__).resolve().parents[2]
+
+SLIDER_SWEEPS: dict[rr.SceneKind, list[tuple[str, object]]] = {
+    rr.SceneKind.CONSTANT_ACCELERATION: [("v", v) for v in np.linspace(0.1, 0.95, 12)]
+    + [("a_front_length", a) for a in np.linspace(0.1, 0.95, 8)],
+    rr.SceneKind.DECELERATION: [("v", v) for v in np.linspace(0.1, 0.95, 12)],
+    rr.SceneKind.IMPULSIVE_START: [("v", v) for v in np.linspace(0.1, 0.95, 12)],
+    rr.SceneKind.WALL_COLLISION: [("v", v) for v in np.linspace(0.1, 0.95, 8)]
+    + [("eps", e) for e in np.linspace(0.0, 1.0, 8)],
+    rr.SceneKind.ROD_COLLISION: [("v", v) for v in np.linspace(0.3, 0.95, 8)]
+    + [("log_mass_ratio", m) for m in np.linspace(-2, 2, 8)]
+    + [("eps", e) for e in np.linspace(0.0, 1.0, 6)]
+    + [("beta", b) for b in np.linspace(-0.9, 0.9, 6)],
+}
+
+
+async def _connect(url: str, n: int) -> list[LightClient]:
+    clients = [LightClient(url) for _ in range(n)]
+    await asyncio.gather(*(c.connect() for c in clients))
+    return clients
+
+
+def _wait_sessions(app: App, n: int, timeout: float = 60.0) -> None:
+    end = time.monotonic() + timeout
+    while len(app.sessions) < n:
+        if time.monotonic() > end:
+            raise TimeoutError(f"{len(app.sessions)} of {n} sessions")
+        time.sleep(0.05)
+
+
+def bench_rebuild() -> dict[str, float]:
+    out: dict[str, float] = {}
+    with App(port=0) as app:
+        loop = asyncio.new_event_loop()
+        clients = loop.run_until_complete(_connect(app.url, 1))
+        reader = loop.create_task(clients[0].run(3600))
+        import threading
+
+        thread = threading.Thread(target=loop.run_until_complete, args=(reader,), daemon=True)
+        thread.start()
+        _wait_sessions(app, 1)
+        session = next(iter(app.sessions.values()))
+        for kind, sweep in SLIDER_SWEEPS.items():
+            session.change("scene", kind)
+            times = []
+            for field, value in sweep:
+                t0 = time.perf_counter()
+                session.change(field, float(value))  # type: ignore[arg-type]
+                times.append(time.perf_counter() - t0)
+            out[f"rebuild_median_ms[{kind.value}]"] = 1e3 * statistics.median(times)
+            out[f"rebuild_max_ms[{kind.value}]"] = 1e3 * max(times)
+        clients[0].stop()
+        thread.join(timeout=5)
+        loop.run_until_complete(clients[0].close())
+    return out
+
+
+def _client_process(url: str, n: int, seconds: float) -> None:
+    """Child process: n clients reading for ``seconds``; prints JSON stats."""
+
+    warmup = 3.0  # the server starts everyone's playback meanwhile
+
+    async def main() -> None:
+        clients = await _connect(url, n)
+        start = time.monotonic()
+        stats = await asyncio.gather(*(c.run(warmup + seconds) for c in clients))
+        for c in clients:
+            await c.close()
+        t0 = start + warmup
+        print(
+            json.dumps(
+                [
+                    {
+                        "lane_frames": sum(1 for t in s.lane_times if t0 <= t < t0 + seconds),
+                        "bytes": s.bytes * seconds / (warmup + seconds),
+                        "errors": s.errors,
+                    }
+                    for s in stats
+                ]
+            )
+        )
+
+    asyncio.run(main())
+
+
+def bench_animation(n_clients: int, seconds: float) -> dict[str, float]:
+    with App(port=0) as app:
+        child = subprocess.Popen(
+            [
+                sys.executable,
+                "-c",
+                "from tests.benchmarks.bench_app import _client_process; "
+                f"_client_process({app.url!r}, {n_clients}, {seconds})",
+            ],
+            cwd=ROOT,
+            stdout=subprocess.PIPE,
+            text=True,
+        )
+        _wait_sessions(app, n_clients)
+        for s in list(app.sessions.values()):
+            with s.lock:
+                s._try(Settings(rr.SceneKind.ROD_COLLISION), refit=True)
+                s.set_playing(True)
+        time.sleep(2.0)
+        cpu0, wall0 = time.process_time(), time.perf_counter()
+        out, _ = child.communicate(timeout=seconds + 120)
+        cpu1, wall1 = time.process_time(), time.perf_counter()
+    stats = json.loads(out.strip().splitlines()[-1])
+    fps = [s["lane_frames"] / seconds for s in stats]
+    span = wall1 - wall0
+    return {
+        f"animation_clients[{n_clients}]": float(n_clients),
+        f"animation_fps_min[{n_clients}]": min(fps),
+        f"animation_fps_median[{n_clients}]": statistics.median(fps),
+        f"server_cpu_percent_per_client[{n_clients}]": 100.0 * (cpu1 - cpu0) / span / n_clients,
+        f"kbytes_per_second_per_client[{n_clients}]": statistics.median(s["bytes"] for s in stats) / seconds / 1e3,
+        f"client_errors[{n_clients}]": float(sum(len(s["errors"]) for s in stats)),
+    }
+
+
+def bench_first_frame(repeats: int = 3) -> dict[str, float]:
+    from PIL import Image
+    from playwright.sync_api import sync_playwright
+
+    from tests.browser.conftest import CHROMIUM, CHROMIUM_ARGS, VIEWPORT
+
+    times = []
+    with App(port=0) as app, sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+        for _ in range(repeats):
+            page = browser.new_page(viewport=VIEWPORT)
+            t0 = time.perf_counter()
+            page.goto(app.url)
+            while True:
+                canvas = page.locator("canvas[data-engine]")
+                if canvas.count():
+                    img = np.asarray(Image.open(io.BytesIO(canvas.screenshot())).convert("RGB")).astype(int)
+                    if ((img[..., 2] - img[..., 0]) > 100).sum() > 500:  # the blue rod is drawn
+                        break
+                if time.perf_counter() - t0 > 120:
+                    raise TimeoutError("no rod on the canvas")
+                time.sleep(0.05)
+            times.append(time.perf_counter() - t0)
+            page.close()
+        browser.close()
+    return {
+        "page_open_to_first_rod_frame_s_median": statistics.median(times),
+        "page_open_to_first_rod_frame_s_max": max(times),
+    }
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description="rigidrel app speed figures")
+    parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--clients", type=int, nargs="+", default=[1, 10])
+    parser.add_argument("--no-browser", action="store_true")
+    parser.add_argument("--json", action="store_true")
+    args = parser.parse_args()
+    os.environ.setdefault("PYTHONPATH", str(ROOT))
+    figures: dict[str, float] = {}
+    figures.update(bench_rebuild())
+    for n in args.clients:
+        figures.update(bench_animation(n, args.seconds))
+    if not args.no_browser:
+        figures.update(bench_first_frame())
+    if args.json:
+        print(json.dumps(figures, indent=2))
+    else:
+        for k, v in figures.items():
+            print(f"{k:58s} {v:10.2f}" if math.isfinite(v) else f"{k:58s} {v}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,101 @@
+"""``rigidrel serve`` / ``python -m app`` as a user runs them: the URL it really got, clean exits."""
+
+from __future__ import annotations
+
+import os
+import re
+import signal
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+URL = re.compile(r"rigidrel: serving on (http://127\.0\.0\.1:(\d+))")
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+def start(*args: str) -> tuple[subprocess.Popen[str], str, int]:
+    env = {**os.environ, "PYTHONUNBUFFERED": "1"}
+    proc = subprocess.Popen(
+        [sys.executable, *args], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env
+    )
+    assert proc.stdout is not None
+    deadline = time.monotonic() + 60
+    seen = []
+    while time.monotonic() < deadline:
+        line = proc.stdout.readline()
+        seen.append(line)
+        m = URL.search(line)
+        if m:
+            return proc, m.group(1), int(m.group(2))
+        if proc.poll() is not None:
+            break
+    proc.kill()
+    pytest.fail("no URL printed:\n" + "".join(seen))
+
+
+def stop(proc: subprocess.Popen[str], sig: int) -> str:
+    proc.send_signal(sig)
+    try:
+        out, _ = proc.communicate(timeout=20)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        pytest.fail("the server did not stop within 20 s")
+    return out
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_serve_prints_its_url_and_stops_cleanly(sig: int) -> None:
+    port = free_port()
+    proc, url, got = start("-m", "app.cli", "serve", "--port", str(port))
+    try:
+        assert got == port
+        with urllib.request.urlopen(url, timeout=10) as r:
+            assert r.status == 200 and b"<html" in r.read().lower()
+    finally:
+        out = stop(proc, sig)
+    assert proc.returncode == 0, out
+    assert "shutting down" in out
+    assert "Traceback" not in out
+
+
+def test_busy_port_moves_on_and_says_where() -> None:
+    with socket.socket() as blocker:
+        blocker.bind(("127.0.0.1", 0))
+        blocker.listen()
+        busy = int(blocker.getsockname()[1])
+        proc, url, got = start("-m", "app", "--port", str(busy))
+        try:
+            assert got != busy
+            with urllib.request.urlopen(url, timeout=10) as r:
+                assert r.status == 200
+        finally:
+            stop(proc, signal.SIGINT)
+    assert proc.returncode == 0
+
+
+def test_binds_loopback_by_default() -> None:
+    from app.server import App
+
+    with App(port=0) as app:
+        assert app.server.get_host() == "127.0.0.1"
+        assert app.url.startswith("http://127.0.0.1:")
+
+
+@pytest.mark.parametrize("args", [["--port", "70000"], ["--port", "abc"], ["--host"]])
+def test_bad_serve_arguments(args: list[str]) -> None:
+    r = subprocess.run(
+        [sys.executable, "-m", "app.cli", "serve", *args], capture_output=True, text=True, cwd=ROOT, timeout=60
+    )
+    assert r.returncode == 2
+    assert len(r.stderr.splitlines()) == 1

@@ -1,0 +1,132 @@
+"""A lightweight client that speaks viser's websocket protocol, for benchmarks and load tests.
+
+Not a browser: it connects, announces a camera (viser counts a client as connected only
+after its first camera message), decodes every window the server sends, counts frames
+and can set GUI values by label, as the browser would. Wire format (viser 1.1): each
+server frame is ``[u64 msgpack size][u64 zstd size][zstd(msgpack)][padding][binary
+buffers]``; client messages are plain msgpack dicts with a ``"type"`` key.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+import msgspec
+import viser
+import websockets
+import zstandard
+
+_DECOMPRESS = zstandard.ZstdDecompressor()
+
+
+def decode_frame(data: bytes) -> list[dict[str, Any]]:
+    """The messages of one server frame (binary buffers left out)."""
+    size = int.from_bytes(data[0:8], "little")
+    csize = int.from_bytes(data[8:16], "little")
+    inner = _DECOMPRESS.decompress(data[16 : 16 + csize], max_output_size=size)
+    return list(msgspec.msgpack.decode(inner)["messages"])
+
+
+def camera_message(width: int = 960, height: int = 720) -> bytes:
+    return msgspec.msgpack.encode(
+        {
+            "type": "ViewerCameraMessage",
+            "wxyz": [1.0, 0.0, 0.0, 0.0],
+            "position": [0.0, -5.0, 0.0],
+            "fov": 0.5,
+            "near": 0.01,
+            "far": 1000.0,
+            "image_height": height,
+            "image_width": width,
+            "look_at": [0.0, 0.0, 0.0],
+            "up_direction": [0.0, 0.0, 1.0],
+        }
+    )
+
+
+@dataclass
+class Stats:
+    frames: int = 0
+    messages: int = 0
+    bytes: int = 0
+    lane_frames: int = 0
+    """Frames that moved the rods (a batched-mesh position update)."""
+    lane_times: list[float] = field(default_factory=list)
+    errors: list[str] = field(default_factory=list)
+
+
+class LightClient:
+    """One connection. ``await client.run(seconds)`` reads until time is up (or ``stop()``)."""
+
+    def __init__(self, url: str, read: bool = True) -> None:
+        self.url = url.replace("http://", "ws://")
+        self.read = read
+        self.stats = Stats()
+        self.gui_uuid: dict[str, str] = {}
+        self._ws: Any = None
+        self._stop = asyncio.Event()
+
+    async def connect(self) -> None:
+        self._ws = await websockets.connect(
+            self.url,
+            subprotocols=[websockets.Subprotocol(f"viser-v{viser.__version__}")],
+            max_size=None,
+            open_timeout=30,
+        )
+        await self._ws.send(camera_message())
+
+    async def set_gui(self, label: str, value: Any) -> None:
+        """As if the user moved the control labelled ``label``."""
+        uuid = self.gui_uuid[label]
+        await self._ws.send(
+            msgspec.msgpack.encode({"type": "GuiUpdateMessage", "uuid": uuid, "updates": {"value": value}})
+        )
+
+    async def send_raw(self, message: dict[str, Any]) -> None:
+        await self._ws.send(msgspec.msgpack.encode(message))
+
+    def stop(self) -> None:
+        self._stop.set()
+
+    async def run(self, seconds: float) -> Stats:
+        end = time.monotonic() + seconds
+        try:
+            while not self._stop.is_set():
+                left = end - time.monotonic()
+                if left <= 0:
+                    break
+                if not self.read:  # a stalled client: connected, reading nothing
+                    await asyncio.sleep(min(left, 0.1))
+                    continue
+                try:
+                    data = await asyncio.wait_for(self._ws.recv(), timeout=min(left, 1.0))
+                except TimeoutError:
+                    continue
+                self._consume(data)
+        except websockets.ConnectionClosed as exc:
+            self.stats.errors.append(f"closed: {exc}")
+        return self.stats
+
+    def _consume(self, data: bytes) -> None:
+        s = self.stats
+        s.frames += 1
+        s.bytes += len(data)
+        messages = decode_frame(data)
+        s.messages += len(messages)
+        moved = False
+        for m in messages:
+            kind = m.get("type", "")
+            if kind.startswith("Gui") and "props" in m and isinstance(m["props"], dict) and "label" in m["props"]:
+                self.gui_uuid[str(m["props"]["label"])] = str(m["uuid"])
+            if kind == "SceneNodeUpdateMessage" and "batched_positions" in m.get("updates", {}):
+                moved = True
+        if moved:
+            s.lane_frames += 1
+            s.lane_times.append(time.monotonic())
+
+    async def close(self) -> None:
+        if self._ws is not None:
+            await self._ws.close()
