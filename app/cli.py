@@ -161,7 +161,19 @@ def build_parser() -> OneLineParser:
     sv.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1: this machine only)")
     sv.add_argument("--port", type=_port, default=8080, help="port to try first; the next free one is used if busy")
     sv.set_defaults(func=cmd_serve)
+    bn = sub.add_parser("bench", help="speed against accuracy of every method, charted (needs rigidrel[bench])")
+    bn.add_argument("--quick", action="store_true", help="a reduced run that finishes in under a minute")
+    bn.add_argument("--out", required=True, help="folder for the JSON table, charts and stability maps")
+    bn.set_defaults(func=cmd_bench)
     return parser
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    try:
+        from .bench.cli import run_bench
+    except ImportError as exc:  # scipy / spacetimelib / mpmath are the [bench] extra
+        fail("rigidrel bench", f"{exc.name or exc} is missing: pip install 'rigidrel[bench]'")
+    return run_bench(quick=args.quick, out=args.out)
 
 
 def _port(text: str) -> int:
