@@ -9,6 +9,7 @@ import argparse
 import json
 import sys
 from collections.abc import Sequence
+from pathlib import Path
 from typing import NoReturn
 
 import rigidrel_core as rr
@@ -47,8 +48,12 @@ def _number_or_none(text: str) -> float | None:
         raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
 
 
-def add_scene_arguments(parser: argparse.ArgumentParser) -> None:
-    """``SCENE`` and one ``--name VALUE`` option per scene parameter (defaults: the paper's)."""
+def add_scene_arguments(parser: argparse.ArgumentParser, frame_default: str | None = "lab") -> None:
+    """``SCENE`` and one ``--name VALUE`` option per scene parameter (defaults: the paper's).
+
+    ``frame_default=None`` means the app's default frame (the rod's rest frame after, or
+    the barycentric frame).
+    """
     parser.add_argument("scene", choices=[k.value for k in rr.SceneKind], help="which scene")
     for name, spec in _all_parameters().items():
         flags = dict.fromkeys(["--" + name.replace("_", "-"), f"--{name}"])
@@ -78,7 +83,11 @@ def scene_from_args(prog: str, args: argparse.Namespace) -> tuple[rr.Scene, rr.F
     return scene, frame
 
 
-def resolve_frame(scene: rr.Scene, text: str) -> rr.Frame:
+def resolve_frame(scene: rr.Scene, text: str | None) -> rr.Frame:
+    if text is None:
+        from .settings import default_frame
+
+        return scene.frames[default_frame(scene)]
     if text in scene.frames:
         return scene.frames[text]
     try:
@@ -161,11 +170,68 @@ def build_parser() -> OneLineParser:
     sv.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1: this machine only)")
     sv.add_argument("--port", type=_port, default=8080, help="port to try first; the next free one is used if busy")
     sv.set_defaults(func=cmd_serve)
+    ex = sub.add_parser("export", help="offline HTML (3-D and diagram), PNG, SVG, GIF and MP4 of a scene")
+    add_scene_arguments(ex, frame_default=None)
+    ex.add_argument("--out", required=True, help="folder to write into (created if missing)")
+    ex.add_argument("--seconds", type=_positive, default=10.0, help="length of the animations (default 10 s)")
+    ex.add_argument("--fps", type=_positive, default=30.0, help="frames per second of the 3-D HTML and MP4")
+    ex.add_argument("--gif-fps", type=_positive, default=15.0, help="frames per second of the GIF")
+    ex.set_defaults(func=cmd_export)
+    fg = sub.add_parser("figures", help="regenerate the paper's Figs. 1-4 as SVG and PNG")
+    fg.add_argument("--out", required=True, help="folder to write into (created if missing)")
+    fg.set_defaults(func=cmd_figures)
     bn = sub.add_parser("bench", help="speed against accuracy of every method, charted (needs rigidrel[bench])")
     bn.add_argument("--quick", action="store_true", help="a reduced run that finishes in under a minute")
     bn.add_argument("--out", required=True, help="folder for the JSON table, charts and stability maps")
     bn.set_defaults(func=cmd_bench)
     return parser
+
+
+def _positive(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not (value > 0 and value < 1e4):
+        raise argparse.ArgumentTypeError(f"must be in (0, 1e4); got {text}")
+    return value
+
+
+def _out_dir(prog: str, text: str) -> Path:
+    out = Path(text)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        fail(prog, f"--out {text!r} cannot be created: {exc.strerror}")
+    return out
+
+
+def cmd_export(args: argparse.Namespace) -> int:
+    from .export.bundle import export_scene
+
+    prog = "rigidrel export"
+    scene, frame = scene_from_args(prog, args)
+    out = _out_dir(prog, args.out)
+    try:
+        written = export_scene(scene, frame, out, seconds=args.seconds, fps=args.fps, gif_fps=args.gif_fps)
+    except (RuntimeError, ValueError) as exc:
+        fail(prog, str(exc))
+    for w in written:
+        print(f"{w.path!s:60s} {w.megabytes:8.2f} MB {w.seconds:7.2f} s")
+    return 0
+
+
+def cmd_figures(args: argparse.Namespace) -> int:
+    from .figures import write_figures
+
+    prog = "rigidrel figures"
+    out = _out_dir(prog, args.out)
+    try:
+        for path in write_figures(out):
+            print(path)
+    except RuntimeError as exc:
+        fail(prog, str(exc))
+    return 0
 
 
 def cmd_bench(args: argparse.Namespace) -> int:

@@ -6,23 +6,37 @@ Callbacks only replace a field of :class:`Settings` and assign what pure builder
 
 from __future__ import annotations
 
-import math
 import threading
 import time
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Any, cast
 
-import numpy as np
 import plotly.graph_objects as go
 import viser
 
 import rigidrel_core as rr
 from rigidrel_core import SceneKind
 
-from . import camera as cam
-from .diagrams import View, frame_title, length_now, length_static, minkowski_now, minkowski_static, window_x_range
-from .draw import JsonFigure, SplicedFigure
-from .lanes import LaneGeometry, lane_geometry, lane_state, lane_static
+from .diagrams import length_now, minkowski_now
+from .draw import JsonFigure
+from .drawing import (
+    CONTROL_PX,
+    FRAME_Z,
+    LAB_Z,
+    LENGTH_ASPECT,
+    PLAY_SECONDS,
+    PLOT_ASPECT,
+    PLOT_CONFIG,
+    PLOT_HZ,
+    PLOT_PANEL_PX,
+    Drawn,
+    build_drawing,
+    camera_pose,
+    lane_states,
+    nice_step,
+    readout_markdown,
+)
+from .lanes import lane_static
 from .settings import (
     CUSTOM_FRAME,
     PRESETS,
@@ -35,45 +49,6 @@ from .settings import (
     with_value,
 )
 from .viser_scene import LaneRenderer
-
-#: Lane heights (z, in lane units): the lab on top, the chosen frame below.
-LAB_Z = 0.55
-FRAME_Z = -0.55
-#: The window plays in this many seconds at speed 1.
-PLAY_SECONDS = 8.0
-#: Diagrams follow playback at this rate (the 3-D lanes at the animation rate).
-PLOT_HZ = 10.0
-#: Widths of the docked panels (CSS pixels) and the plots' height/width.
-CONTROL_PX = 340
-PLOT_PANEL_PX = 440
-PLOT_ASPECT = 0.8
-LENGTH_ASPECT = 0.75
-#: The plot area inside a Minkowski diagram (pixels): the panel minus plotly's margins.
-PLOT_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * PLOT_ASPECT - 40 - 114)
-LENGTH_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * LENGTH_ASPECT - 40 - 114)
-#: Pixel width the diagrams are sampled for (chord error < half a pixel at this width).
-PANEL_PX = float(PLOT_PANEL_PX)
-_PLOT_CONFIG = {"displayModeBar": False, "responsive": True}
-
-
-@dataclass(frozen=True)
-class Drawn:
-    """What a rebuild made for one resolved scene: reused by every playback frame."""
-
-    resolved: Resolved
-    window: tuple[float, float]
-    geometry: LaneGeometry
-    x_range: tuple[float, float]
-    """Both lanes together (the camera fits this)."""
-    lane_ranges: tuple[tuple[float, float], tuple[float, float]]
-    """Each lane's own x extent (lab, chosen frame): rulers and titles depend only on their frame."""
-    lab_chart: SplicedFigure
-    frame_chart: SplicedFigure
-    length_chart: SplicedFigure
-    lab_view: View
-    frame_view: View
-    span: float
-    length_top: float
 
 
 def _log_ratio_label(value: float) -> str:
@@ -197,10 +172,10 @@ class Session:
         self.plot_panel.set_width(PLOT_PANEL_PX)
         empty = go.Figure()
         with self.plot_panel.add_tab("Minkowski diagrams"):
-            self.lab_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT, config=_PLOT_CONFIG)
-            self.frame_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT, config=_PLOT_CONFIG)
+            self.lab_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT, config=PLOT_CONFIG)
+            self.frame_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT, config=PLOT_CONFIG)
         with self.plot_panel.add_tab("Lengths (Fig. 2)"):
-            self.length_plot = gui.add_plotly(empty, aspect=LENGTH_ASPECT, config=_PLOT_CONFIG)
+            self.length_plot = gui.add_plotly(empty, aspect=LENGTH_ASPECT, config=PLOT_CONFIG)
         self._aspect = self.client.camera.aspect
 
         @self.client.camera.on_update
@@ -345,7 +320,7 @@ class Session:
         if self.frame_dd.value != name:
             self.frame_dd.value = name
         self.time_slider.min, self.time_slider.max = d.window
-        self.time_slider.step = _nice_step(d.window[1] - d.window[0])
+        self.time_slider.step = nice_step(d.window[1] - d.window[0])
         self.now = min(max(self.now, d.window[0]), d.window[1])
         x0, x1 = d.x_range[0] / d.geometry.unit, d.x_range[1] / d.geometry.unit
         self.renderer.set_static([lane_static(d.geometry, r, resolved.scene.origin_event) for r in d.lane_ranges])
@@ -368,12 +343,8 @@ class Session:
             return
         r = d.resolved
         now = self.now
-        lab_x, frame_x = (rng[0] / d.geometry.unit for rng in d.lane_ranges)
         lab = rr.Frame.lab()
-        states = [
-            lane_state(r.scene, lab, now, d.geometry, f"lab frame:   t = {now:+.3f}", lab_x),
-            lane_state(r.scene, r.frame, now, d.geometry, f"{frame_title(r.frame)} frame:   t' = {now:+.3f}", frame_x),
-        ]
+        states = lane_states(d, now)
         wall = time.monotonic()
         slow = force_plots or wall - self._last_plot >= 1.0 / PLOT_HZ
         with self.client.atomic():
@@ -390,8 +361,7 @@ class Session:
                     go.Figure,
                     JsonFigure(d.length_chart.with_dynamic(length_now(r.scene, lab, r.frame, now, d.length_top))),
                 )
-                if self.playing:
-                    self.time_slider.value = round(now, 6)
+                self.time_slider.value = round(now, 6)
 
     def tick(self, dt: float) -> None:
         """Advance playback by ``dt`` wall seconds and redraw (called by the animation loop)."""
@@ -408,86 +378,3 @@ class Session:
                     self.now = t1
                     self.set_playing(False)
             self.draw_now()
-
-
-def build_drawing(resolved: Resolved) -> Drawn:
-    """Everything that depends only on the scene and frame (not on playback time)."""
-    scene, frame = resolved.scene, resolved.frame
-    lab = rr.Frame.lab()
-    a0, a1 = scene.time_window(lab)
-    b0, b1 = scene.time_window(frame)
-    window = _round_outward(min(a0, b0), max(a1, b1))
-    unit = max(r.motion.length for r in scene.rods)
-
-    def lane_range(f: rr.Frame) -> tuple[float, float]:
-        lo, hi = window_x_range(scene, (f,), _round_outward(*scene.time_window(f)))
-        pad = 0.08 * (hi - lo) + 0.1 * unit
-        return (lo - pad, hi + pad)
-
-    lane_ranges = (lane_range(lab), lane_range(frame))
-    x_range = (min(r[0] for r in lane_ranges), max(r[1] for r in lane_ranges))
-    lab_view = View(lab, frame, "lab", "", "'")
-    frame_view = View(frame, lab, frame.name, "'", "")
-    span = 4.0 * max(abs(window[0]), abs(window[1]), abs(x_range[0]), abs(x_range[1]))
-    lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window)
-    fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window)
-    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, PLOT_AREA_PX[0], resolved.overlay)
-    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, PLOT_AREA_PX[0], resolved.overlay)
-    length_chart = length_static(scene, lab, frame, window, LENGTH_AREA_PX)
-    return Drawn(
-        resolved=resolved,
-        window=window,
-        geometry=lane_geometry(scene),
-        x_range=x_range,
-        lane_ranges=lane_ranges,
-        lab_chart=SplicedFigure(lab_chart, _PLOT_CONFIG),
-        frame_chart=SplicedFigure(frame_chart, _PLOT_CONFIG),
-        length_chart=SplicedFigure(length_chart, _PLOT_CONFIG),
-        lab_view=lab_view,
-        frame_view=frame_view,
-        span=span,
-        length_top=length_chart.y_range[1],
-    )
-
-
-def _round_outward(t0: float, t1: float) -> tuple[float, float]:
-    """The window widened to round numbers (about 1/20 of its length), for a tidy time slider."""
-    step = _nice_step(t1 - t0) * 50.0
-    return (math.floor(t0 / step) * step, math.ceil(t1 / step) * step)
-
-
-def equal_scale_ranges(
-    x: tuple[float, float], t: tuple[float, float], area: tuple[float, float] = PLOT_AREA_PX
-) -> tuple[tuple[float, float], tuple[float, float]]:
-    """Axis ranges holding ``x`` and ``t`` (padded) with one unit as long on both axes."""
-    xc, tc = 0.5 * (x[0] + x[1]), 0.5 * (t[0] + t[1])
-    half_x = 0.55 * (x[1] - x[0]) + 0.05
-    half_t = 0.5 * (t[1] - t[0])
-    ratio = area[0] / area[1]  # pixels wide per pixel high
-    if half_x / half_t > ratio:
-        half_t = half_x / ratio
-    else:
-        half_x = half_t * ratio
-    return (xc - half_x, xc + half_x), (tc - half_t, tc + half_t)
-
-
-def camera_pose(x0: float, x1: float, aspect: float) -> cam.CameraPose:
-    """Both lanes (rods, clocks, rulers, titles) in view, looking straight at them."""
-    return cam.fit_lanes((x0, x1), (FRAME_Z - 0.35, LAB_Z + 0.5), aspect)
-
-
-def _nice_step(span: float) -> float:
-    raw = span / 1000.0
-    if raw <= 0 or not math.isfinite(raw):
-        return 0.001
-    return float(10 ** math.floor(math.log10(raw)))
-
-
-def readout_markdown(resolved: Resolved) -> str:
-    scene, frame = resolved.scene, resolved.frame
-    v = ", ".join(f"{r.name}: {v:+.4f}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
-    ev = " · ".join(f"{k} ({t:.3f}, {x:.3f})" for k, (t, x) in scene.events.items())
-    return f"**Final velocities** {v}  \n**Events (lab t, x)** {ev}  \n**Frame** {frame_title(frame)}"
-
-
-__all__ = ["Session", "build_drawing", "camera_pose", "np"]

@@ -12,9 +12,9 @@ import rigidrel_core as rr
 from app import camera as cam
 from app.diagrams import View, length_static, minkowski_now, minkowski_static
 from app.draw import Chart, Label, Points, Polyline, SplicedFigure, Style, decode_array, event_label
+from app.drawing import build_drawing, camera_pose, equal_scale_ranges
 from app.lanes import TICK_FRACTIONS, lane_geometry, lane_state
 from app.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
-from app.session import build_drawing, camera_pose, equal_scale_ranges
 from app.settings import CUSTOM_FRAME, PRESETS, Preset, Resolved, Settings, resolve
 
 ALL_SETTINGS = [

@@ -18,9 +18,10 @@ import pytest
 
 import rigidrel_core as rr
 from app import camera as cam
+from app.drawing import FRAME_Z, LAB_Z
 from app.lanes import lane_geometry
 from app.server import App
-from app.session import FRAME_Z, LAB_Z, Session
+from app.session import Session
 from app.settings import CUSTOM_FRAME, Settings
 from app.viser_scene import ROD_DEPTH
 from tests.browser.conftest import VIEWPORT, wait_until

@@ -1,0 +1,155 @@
+"""What one scene in one frame looks like: everything the app, the recordings and the exports draw.
+
+Pure functions over :mod:`rigidrel_core` and the drawing vocabulary; no viser here, so
+the exporters use exactly what the app shows.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import rigidrel_core as rr
+
+from . import camera as cam
+from .diagrams import View, frame_title, length_static, minkowski_static, window_x_range
+from .draw import SplicedFigure
+from .lanes import LaneGeometry, LaneState, lane_geometry, lane_state
+from .settings import Resolved
+
+#: Lane heights (z, in lane units): the lab on top, the chosen frame below.
+LAB_Z = 0.55
+FRAME_Z = -0.55
+#: The window plays in this many seconds at speed 1.
+PLAY_SECONDS = 8.0
+#: Diagrams follow playback at this rate (the 3-D lanes at the animation rate).
+PLOT_HZ = 10.0
+#: Widths of the docked panels (CSS pixels) and the plots' height/width.
+CONTROL_PX = 340
+PLOT_PANEL_PX = 440
+PLOT_ASPECT = 0.8
+LENGTH_ASPECT = 0.75
+#: The plot area inside a Minkowski diagram (pixels): the panel minus plotly's margins.
+PLOT_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * PLOT_ASPECT - 40 - 114)
+LENGTH_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * LENGTH_ASPECT - 40 - 114)
+#: Pixel width the diagrams are sampled for (chord error < half a pixel at this width).
+PANEL_PX = float(PLOT_PANEL_PX)
+PLOT_CONFIG = {"displayModeBar": False, "responsive": True}
+
+
+@dataclass(frozen=True)
+class Drawn:
+    """What a rebuild made for one resolved scene: reused by every playback frame."""
+
+    resolved: Resolved
+    window: tuple[float, float]
+    geometry: LaneGeometry
+    x_range: tuple[float, float]
+    """Both lanes together (the camera fits this)."""
+    lane_ranges: tuple[tuple[float, float], tuple[float, float]]
+    """Each lane's own x extent (lab, chosen frame): rulers and titles depend only on their frame."""
+    lab_chart: SplicedFigure
+    frame_chart: SplicedFigure
+    length_chart: SplicedFigure
+    lab_view: View
+    frame_view: View
+    span: float
+    length_top: float
+
+
+def build_drawing(resolved: Resolved) -> Drawn:
+    """Everything that depends only on the scene and frame (not on playback time)."""
+    scene, frame = resolved.scene, resolved.frame
+    lab = rr.Frame.lab()
+    a0, a1 = scene.time_window(lab)
+    b0, b1 = scene.time_window(frame)
+    window = _round_outward(min(a0, b0), max(a1, b1))
+    unit = max(r.motion.length for r in scene.rods)
+
+    def lane_range(f: rr.Frame) -> tuple[float, float]:
+        lo, hi = window_x_range(scene, (f,), _round_outward(*scene.time_window(f)))
+        pad = 0.08 * (hi - lo) + 0.1 * unit
+        return (lo - pad, hi + pad)
+
+    lane_ranges = (lane_range(lab), lane_range(frame))
+    x_range = (min(r[0] for r in lane_ranges), max(r[1] for r in lane_ranges))
+    lab_view = View(lab, frame, "lab", "", "'")
+    frame_view = View(frame, lab, frame.name, "'", "")
+    span = 4.0 * max(abs(window[0]), abs(window[1]), abs(x_range[0]), abs(x_range[1]))
+    lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window)
+    fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window)
+    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, PLOT_AREA_PX[0], resolved.overlay)
+    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, PLOT_AREA_PX[0], resolved.overlay)
+    length_chart = length_static(scene, lab, frame, window, LENGTH_AREA_PX)
+    return Drawn(
+        resolved=resolved,
+        window=window,
+        geometry=lane_geometry(scene),
+        x_range=x_range,
+        lane_ranges=lane_ranges,
+        lab_chart=SplicedFigure(lab_chart, PLOT_CONFIG),
+        frame_chart=SplicedFigure(frame_chart, PLOT_CONFIG),
+        length_chart=SplicedFigure(length_chart, PLOT_CONFIG),
+        lab_view=lab_view,
+        frame_view=frame_view,
+        span=span,
+        length_top=length_chart.y_range[1],
+    )
+
+
+def _round_outward(t0: float, t1: float) -> tuple[float, float]:
+    """The window widened to round numbers (about 1/20 of its length), for a tidy time slider."""
+    step = nice_step(t1 - t0) * 50.0
+    return (math.floor(t0 / step) * step, math.ceil(t1 / step) * step)
+
+
+def equal_scale_ranges(
+    x: tuple[float, float], t: tuple[float, float], area: tuple[float, float] = PLOT_AREA_PX
+) -> tuple[tuple[float, float], tuple[float, float]]:
+    """Axis ranges holding ``x`` and ``t`` (padded) with one unit as long on both axes."""
+    xc, tc = 0.5 * (x[0] + x[1]), 0.5 * (t[0] + t[1])
+    half_x = 0.55 * (x[1] - x[0]) + 0.05
+    half_t = 0.5 * (t[1] - t[0])
+    ratio = area[0] / area[1]  # pixels wide per pixel high
+    if half_x / half_t > ratio:
+        half_t = half_x / ratio
+    else:
+        half_x = half_t * ratio
+    return (xc - half_x, xc + half_x), (tc - half_t, tc + half_t)
+
+
+def camera_pose(x0: float, x1: float, aspect: float) -> cam.CameraPose:
+    """Both lanes (rods, clocks, rulers, titles) in view, looking straight at them."""
+    return cam.fit_lanes((x0, x1), (FRAME_Z - 0.35, LAB_Z + 0.5), aspect)
+
+
+def nice_step(span: float) -> float:
+    raw = span / 1000.0
+    if raw <= 0 or not math.isfinite(raw):
+        return 0.001
+    return float(10 ** math.floor(math.log10(raw)))
+
+
+def lane_states(d: Drawn, now: float) -> list[LaneState]:
+    """Both lanes at playback time ``now``: the lab at t = now, the chosen frame at t' = now."""
+    r = d.resolved
+    lab_x, frame_x = (rng[0] / d.geometry.unit for rng in d.lane_ranges)
+    return [
+        lane_state(r.scene, rr.Frame.lab(), now, d.geometry, f"lab frame:   t = {now:+.3f}", lab_x),
+        lane_state(r.scene, r.frame, now, d.geometry, f"{frame_title(r.frame)} frame:   t' = {now:+.3f}", frame_x),
+    ]
+
+
+def readout_markdown(resolved: Resolved) -> str:
+    """Parameters, final velocities and events in plain numbers, for the control panel."""
+    scene, frame = resolved.scene, resolved.frame
+    names = {"v": "V", "v1": "V1", "v2": "V2", "eps": "ε", "a_front": "a'_F", "length": "L0", "l1": "L1", "l2": "L2"}
+    params = [f"{names[k]} = {v:.4g}" for k, v in scene.parameters.items() if k in names]
+    if "m1" in scene.parameters:
+        params.append(f"M2/M1 = {scene.parameters['m2'] / scene.parameters['m1']:.4g}")
+    v = ", ".join(f"{r.name}: {v:+.4f}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
+    ev = " · ".join(f"{k} ({t:.3f}, {x:.3f})" for k, (t, x) in scene.events.items())
+    return (
+        f"**Scene** {', '.join(params)}  \n**Final velocities** {v}  \n**Events (lab t, x)** {ev}  \n"
+        f"**Frame** {frame_title(frame)}"
+    )

@@ -1,0 +1,57 @@
+"""PNG and SVG of plotly figures through kaleido and the system Chromium, one browser per export run.
+
+Starting Chromium costs ~3 s; a figure through a running one ~0.3 s. ``ImageWriter``
+starts it once and writes every figure of a run through it.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any, Literal
+
+import plotly.io as pio
+
+ImageFormat = Literal["png", "svg"]
+
+
+def chromium_path() -> str:
+    """The system Chromium kaleido drives (never a downloaded one)."""
+    for candidate in (
+        os.environ.get("RIGIDREL_CHROMIUM"),
+        "/usr/bin/chromium",
+        shutil.which("chromium"),
+        shutil.which("chromium-browser"),
+        shutil.which("google-chrome"),
+    ):
+        if candidate and Path(candidate).exists():
+            return candidate
+    raise RuntimeError("PNG/SVG export needs Chromium: on Debian, apt-get install chromium (or set RIGIDREL_CHROMIUM)")
+
+
+class ImageWriter:
+    """Writes plotly figure dicts as PNG or SVG through one running kaleido server."""
+
+    def write(self, figure: dict[str, Any], path: Path, width: int, height: int, scale: float = 1.0) -> Path:
+        fmt = path.suffix.lstrip(".")
+        if fmt not in ("png", "svg"):
+            raise ValueError(f"image format must be png or svg; got {fmt!r}")
+        with warnings.catch_warnings():
+            warnings.filterwarnings("ignore", message="The kopts argument is ignored if using a server")
+            pio.write_image(figure, str(path), format=fmt, width=width, height=height, scale=scale)
+        return path
+
+
+@contextmanager
+def image_writer() -> Iterator[ImageWriter]:
+    import kaleido
+
+    kaleido.start_sync_server(path=chromium_path(), mathjax=False, n=1, silence_warnings=True)
+    try:
+        yield ImageWriter()
+    finally:
+        kaleido.stop_sync_server(silence_warnings=True)

@@ -1,0 +1,61 @@
+"""The 3-D lanes as a standalone HTML page that plays offline (viser's scene serializer).
+
+A temporary viser server (127.0.0.1, free port, no client, no GUI and no plotly panel, so
+no plotly.js is recorded) draws the lanes with the app's own renderer; each playback
+frame is recorded with a timed sleep; ``as_html()`` inlines viser's client and the
+recording. Nothing is fetched when the page opens.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+from collections.abc import Iterator
+
+import numpy as np
+import viser
+
+from ..drawing import FRAME_Z, LAB_Z, PLOT_HZ, Drawn, camera_pose, lane_states
+from ..lanes import lane_static
+from ..viser_scene import LaneRenderer
+
+
+@contextlib.contextmanager
+def quiet_server() -> Iterator[viser.ViserServer]:
+    """A viser server on 127.0.0.1 whose start and stop banners stay off the console."""
+    with contextlib.redirect_stdout(io.StringIO()):
+        server = viser.ViserServer(host="127.0.0.1", port=0, verbose=False)
+    try:
+        yield server
+    finally:
+        with contextlib.redirect_stdout(io.StringIO()):
+            server.stop()
+
+
+def playback_times(drawn: Drawn, seconds: float, fps: float) -> np.ndarray:
+    """Frame times of a ``seconds``-long playback of the drawing's window at ``fps``."""
+    n = max(2, round(seconds * fps))
+    return np.linspace(drawn.window[0], drawn.window[1], n)
+
+
+def record_lanes_html(drawn: Drawn, seconds: float = 10.0, fps: float = 30.0, aspect: float = 16 / 9) -> str:
+    """HTML of both lanes playing through the scene's window in ``seconds`` at ``fps`` frames per second."""
+    with quiet_server() as server:
+        renderer = LaneRenderer(server.scene, (LAB_Z, FRAME_Z))
+        renderer.set_static(
+            [lane_static(drawn.geometry, r, drawn.resolved.scene.origin_event) for r in drawn.lane_ranges]
+        )
+        u = drawn.geometry.unit
+        pose = camera_pose(drawn.x_range[0] / u, drawn.x_range[1] / u, aspect)
+        server.initial_camera.position = pose.position
+        server.initial_camera.look_at = pose.look_at
+        server.initial_camera.up = pose.up
+        server.initial_camera.fov = pose.fov
+        times = playback_times(drawn, seconds, fps)
+        renderer.update(lane_states(drawn, float(times[0])))
+        serializer = server.get_scene_serializer()
+        label_every = max(1, round(fps / PLOT_HZ))
+        for k, now in enumerate(times):
+            renderer.update(lane_states(drawn, float(now)), labels=k % label_every == 0)
+            serializer.insert_sleep(1.0 / fps)
+        return serializer.as_html()

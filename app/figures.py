@@ -1,0 +1,202 @@
+"""The paper's missing Figs. 1-4, regenerated from the core with the paper's labels.
+
+Franklin (2012) prints captions but no images. Each figure here is exact (every sample
+a core evaluation, sampled to half a pixel at the export size) and drawn in print style:
+black curves, the rods' world tubes lightly shaded, events named as in the paper.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+import rigidrel_core as rr
+from rigidrel_core import examples
+
+from .diagrams import window_x_range
+from .draw import Area, Chart, Item, Label, Points, Polyline, Style, chart_to_plotly, event_label
+from .drawing import equal_scale_ranges
+from .sampling import sample_lengths, sample_worldlines
+
+#: Export size of every figure (CSS pixels; PNGs are written at twice this).
+FIGURE_SIZE = (640, 560)
+_PLOT_AREA = (FIGURE_SIZE[0] - 110.0, FIGURE_SIZE[1] - 110.0)
+#: PNGs are written at this scale; curves are sampled for it (half a pixel of the PNG).
+_PNG_SCALE = 2.0
+_BLACK = "#000000"
+_GREY = "#555555"
+_FONT = "DejaVu Serif, Liberation Serif, Times New Roman, serif"
+
+
+@dataclass(frozen=True)
+class PaperFigure:
+    name: str
+    caption: str
+    """The paper's caption, verbatim apart from typesetting."""
+    chart: Chart
+
+
+CAPTIONS = {
+    "fig1": "Fig. 1: Constant acceleration of a rigid body. The solid curve is the trajectory for continuous "
+    "acceleration. The dashed curve is for impulsive acceleration. The time T_B on the solid curve represents the "
+    "end of acceleration for the back end of the rod, and T_F for the front end.",
+    "fig2": "Fig. 2: Equal time length of an accelerating rigid rod. The length decreases from L0 to L0/γ. The time "
+    "T_B on the solid curve represents the end of acceleration for the back end of the rod, and T_F for the front end.",
+    "fig3": "Fig. 3: Trajectories for a collision between rigid rods for case I: M2 = 2M1. The times T1 and T2 "
+    "represent the start of acceleration, and T'1 and T'2 the end of acceleration for the outer ends of the rods.",
+    "fig4": "Fig. 4: Trajectories for a collision between rigid rods for case II: M1 = 2M2. The times T1 and T2 "
+    "represent the start of acceleration, and T'1 and T'2 the end of acceleration for the outer ends of the rods.",
+}
+
+
+def _tube(
+    scene: rr.Scene,
+    t_range: tuple[float, float],
+    x_range: tuple[float, float],
+    dash: str = "solid",
+    shade: bool = True,
+    colors: tuple[str, ...] = (_BLACK, _GREY),
+) -> list[Item]:
+    lab = rr.Frame.lab()
+    px_per_x = _PNG_SCALE * _PLOT_AREA[0] / (x_range[1] - x_range[0])
+    lines = sample_worldlines(scene, lab, np.array([0.0, 1.0]), t_range, px_per_x)
+    items: list[Item] = []
+    for r in range(scene.n_rods):
+        left, right = lines[r]
+        if shade:
+            items.append(
+                Area(
+                    np.concatenate([left.x, right.x[::-1]]),
+                    np.concatenate([left.t, right.t[::-1]]),
+                    Style("rgba(0,0,0,0.07)", 0.0),
+                )
+            )
+        color = colors[r % len(colors)]
+        for w in (left, right):
+            items.append(Polyline(w.x, w.t, Style(color, 2.0, dash)))  # type: ignore[arg-type]
+    return items
+
+
+def _events(scene: rr.Scene, names: tuple[str, ...], side: dict[str, str] | None = None) -> list[Item]:
+    ev = scene.events
+    items: list[Item] = [
+        Points(np.array([ev[n][1] for n in names]), np.array([ev[n][0] for n in names]), Style(_BLACK), size=7)
+    ]
+    for n in names:
+        t, x = ev[n]
+        items.append(Label(x, t, event_label(n), Style(_BLACK), anchor=(side or {}).get(n, "left"), size=15))  # type: ignore[arg-type]
+    return items
+
+
+def _ranges(scene: rr.Scene, t_range: tuple[float, float]) -> tuple[tuple[float, float], tuple[float, float]]:
+    return equal_scale_ranges(window_x_range(scene, (rr.Frame.lab(),), t_range), t_range, _PLOT_AREA)
+
+
+def figure1() -> PaperFigure:
+    solid = examples.fig1_constant_acceleration()
+    dashed = examples.fig1_impulsive_start()
+    t_range = (0.0, 2.2)
+    x_range, t_range = _ranges(solid, t_range)
+    items = [
+        *_tube(solid, t_range, x_range),
+        *_tube(dashed, t_range, x_range, "dash", shade=False),
+        *_events(solid, ("T_B", "T_F"), {"T_B": "right"}),
+    ]
+    return PaperFigure(
+        "fig1",
+        CAPTIONS["fig1"],
+        Chart(tuple(items), "x / L<sub>0</sub>", "t / L<sub>0</sub>", x_range, t_range, equal_aspect=True),
+    )
+
+
+def figure2() -> PaperFigure:
+    scene = examples.fig1_constant_acceleration()
+    t_range = (0.0, 2.2)
+    y_range = (0.75, 1.02)
+    px_per_length = _PNG_SCALE * _PLOT_AREA[1] / (y_range[1] - y_range[0])
+    curve = sample_lengths(scene, rr.Frame.lab(), t_range, px_per_length)[0]
+    items: list[Item] = [Polyline(curve.t, curve.x, Style(_BLACK, 2.0))]
+    for n in ("T_B", "T_F"):
+        t = scene.events[n][0]
+        length = float(scene.lengths(np.array([t]))[0, 0])
+        items.append(Points(np.array([t]), np.array([length]), Style(_BLACK), size=7))
+        items.append(Label(t, length + 0.008, event_label(n), Style(_BLACK), anchor="left", size=15))
+    gamma = 1.25
+    items.append(Label(2.15, 1.0 / gamma - 0.012, "L<sub>0</sub>/γ", Style(_GREY), anchor="right", size=13))
+    items.append(Label(0.05, 0.99, "L<sub>0</sub>", Style(_GREY), anchor="left", size=13))
+    return PaperFigure(
+        "fig2", CAPTIONS["fig2"], Chart(tuple(items), "t / L<sub>0</sub>", "L / L<sub>0</sub>", t_range, y_range)
+    )
+
+
+def _collision(scene: rr.Scene, name: str) -> PaperFigure:
+    t_range = (-1.0, 1.3) if name == "fig3" else (-1.0, 1.4)
+    x_range, t_range = _ranges(scene, t_range)
+    side = {"T_1": "right", "T_1'": "right", "T_2": "left", "T_2'": "left"}
+    items = [
+        *_tube(scene, t_range, x_range),
+        *_events(scene, ("T_1", "T_1'", "T_2", "T_2'"), side),
+        Label(-0.5, t_range[0] + 0.08, "rod 1", Style(_BLACK), anchor="center", size=13),
+        Label(0.5, t_range[0] + 0.08, "rod 2", Style(_GREY), anchor="center", size=13),
+    ]
+    return PaperFigure(
+        name,
+        CAPTIONS[name],
+        Chart(tuple(items), "x / L<sub>0</sub>", "t / L<sub>0</sub>", x_range, t_range, equal_aspect=True),
+    )
+
+
+def paper_figures() -> list[PaperFigure]:
+    return [
+        figure1(),
+        figure2(),
+        _collision(examples.fig3_case_one(), "fig3"),
+        _collision(examples.fig4_case_two(), "fig4"),
+    ]
+
+
+def print_style(chart: Chart) -> dict[str, Any]:
+    """The chart as a plotly figure in print style: serif, black axes, no legend, no grid."""
+    fig = chart_to_plotly(chart)
+    layout = fig["layout"]
+    layout.update(
+        {
+            "showlegend": False,
+            "margin": {"l": 70, "r": 30, "t": 20, "b": 60},
+            "font": {"family": _FONT, "size": 15, "color": _BLACK},
+        }
+    )
+    layout.pop("title", None)
+    for ax in ("xaxis", "yaxis"):
+        layout[ax].update(
+            {
+                "showgrid": False,
+                "linecolor": _BLACK,
+                "mirror": True,
+                "ticks": "outside",
+                "tickcolor": _BLACK,
+                "zeroline": False,
+            }
+        )
+    return fig
+
+
+def write_figures(out: Path) -> list[Path]:
+    """Every figure as SVG and PNG in ``out`` (one Chromium for all, through kaleido)."""
+    from .export.images import image_writer
+
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    with image_writer() as writer:
+        for fig in paper_figures():
+            plotly_fig = print_style(fig.chart)
+            for ext in ("svg", "png"):
+                written.append(
+                    writer.write(
+                        plotly_fig, out / f"{fig.name}.{ext}", *FIGURE_SIZE, scale=_PNG_SCALE if ext == "png" else 1.0
+                    )
+                )
+    return written

@@ -1,0 +1,66 @@
+"""Regenerate the pictures in assets/ from the code as it is today (keep the README true).
+
+    python -m tests.make_assets
+
+Writes assets/app.png (the app in headless Chromium: Fig. 3's collision seen from the
+barycentric frame, paused mid-collision), assets/figures/fig1-4.{svg,png} (the paper's
+figures) and assets/rod-collision-lanes.gif (the lanes of that collision).
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import rigidrel_core as rr
+from app.drawing import build_drawing
+from app.export.raster import write_gif
+from app.export.recording import playback_times
+from app.figures import write_figures
+from app.server import App
+from app.settings import PRESETS, Preset, Resolved
+from tests.browser.conftest import CHROMIUM, CHROMIUM_ARGS, VIEWPORT
+
+ASSETS = Path(__file__).resolve().parents[1] / "assets"
+
+
+def app_screenshot(path: Path) -> None:
+    from dataclasses import replace
+
+    from playwright.sync_api import sync_playwright
+
+    with App(port=0) as app, sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+        page = browser.new_page(viewport=VIEWPORT)
+        page.goto(app.url)
+        page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
+        while not app.sessions:
+            time.sleep(0.05)
+        session = next(iter(app.sessions.values()))
+        with session.lock:
+            session._try(replace(PRESETS[Preset.FIG3], frame="barycentric"), refit=True)
+            session.now = 0.15
+            session.draw_now(force_plots=True)
+        for button in page.locator(".mantine-Notification-root button").all():
+            button.click()  # the headless browser's "software WebGL" notice
+        time.sleep(2.5)
+        page.screenshot(path=str(path))
+        browser.close()
+
+
+def lanes_gif(path: Path) -> None:
+    scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
+    drawn = build_drawing(Resolved(scene, scene.frames["barycentric"], None))
+    write_gif(drawn, path, playback_times(drawn, 8.0, 10.0), 10.0, width=720)
+
+
+def main() -> None:
+    ASSETS.mkdir(exist_ok=True)
+    app_screenshot(ASSETS / "app.png")
+    write_figures(ASSETS / "figures")
+    lanes_gif(ASSETS / "rod-collision-lanes.gif")
+    print(f"assets written: {ASSETS} ({CHROMIUM})")
+
+
+if __name__ == "__main__":
+    main()

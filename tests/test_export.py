@@ -1,0 +1,110 @@
+"""``rigidrel export`` and ``rigidrel figures``: every file written, the right size, not blank."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from PIL import Image
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def rigidrel(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "app.cli", *args], capture_output=True, text=True, cwd=ROOT, timeout=300
+    )
+
+
+def not_blank(img: Image.Image) -> bool:
+    a = np.asarray(img.convert("RGB")).astype(int)
+    return bool(a.std() > 10 and (a.sum(axis=-1) < 600).mean() > 0.01)
+
+
+@pytest.fixture(scope="module")
+def exported(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    out = tmp_path_factory.mktemp("export")
+    r = rigidrel(
+        "export", "rod-collision", "--m2", "2", "--out", str(out), "--seconds", "2", "--fps", "10", "--gif-fps", "5"
+    )
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+def test_export_writes_every_format(exported: Path) -> None:
+    names = sorted(p.name for p in exported.iterdir())
+    assert names == sorted(
+        f"rod-collision-{s}"
+        for s in ("3d.html", "diagram.html", "diagram.png", "diagram.svg", "lanes.gif", "lanes.mp4")
+    )
+
+
+def test_3d_html_is_standalone_and_small(exported: Path) -> None:
+    html = (exported / "rod-collision-3d.html").read_text()
+    assert len(html.encode()) < 3e6
+    assert "__VISER_EMBED_DATA__" in html
+    assert "http://" not in html.split("__VISER_EMBED_DATA__")[1][:200]
+
+
+def test_diagram_images(exported: Path) -> None:
+    png = Image.open(exported / "rod-collision-diagram.png")
+    assert png.size == (1520, 1280)  # 760 x 640 at scale 2
+    assert not_blank(png)
+    a = np.asarray(png.convert("RGB")).astype(int)
+    blue = ((a[..., 2] - a[..., 0]) > 80).mean()
+    orange = ((a[..., 0] - a[..., 2]) > 120).mean()
+    assert blue > 0.001 and orange > 0.001  # both rods drawn
+    svg = (exported / "rod-collision-diagram.svg").read_text()
+    assert svg.startswith("<svg") and svg.count("<path") > 10
+    assert "Minkowski diagram" in svg
+
+
+def test_gif_and_mp4_animate(exported: Path) -> None:
+    gif = Image.open(exported / "rod-collision-lanes.gif")
+    n_frames = int(getattr(gif, "n_frames", 1))
+    assert n_frames == 10  # 2 s at 5 fps
+    gif.seek(0)
+    first = np.asarray(gif.convert("RGB")).astype(int)
+    gif.seek(n_frames - 1)
+    last = np.asarray(gif.convert("RGB")).astype(int)
+    assert not_blank(Image.fromarray(first.astype(np.uint8)))
+    assert (np.abs(first - last).sum(axis=-1) > 60).mean() > 0.005  # the rods moved
+    import imageio_ffmpeg
+
+    frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(exported / "rod-collision-lanes.mp4"))
+    assert frames == 20 and seconds == pytest.approx(2.0, abs=0.2)
+
+
+def test_figures_regenerate_the_paper(tmp_path: Path) -> None:
+    r = rigidrel("figures", "--out", str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    for n in (1, 2, 3, 4):
+        png = Image.open(tmp_path / f"fig{n}.png")
+        assert png.size == (1280, 1120) and not_blank(png)
+        svg = (tmp_path / f"fig{n}.svg").read_text()
+        assert svg.startswith("<svg")
+    fig1 = (tmp_path / "fig1.svg").read_text().replace("\u200b", "")  # plotly pads labels with zero-width spaces
+    assert "stroke-dasharray" in fig1  # the impulsive curve, dashed
+    for label in (">T<", ">B<", ">F<"):
+        assert label in fig1
+    fig3 = (tmp_path / "fig3.svg").read_text().replace("\u200b", "")
+    assert fig3.count(">T<") + fig3.count(">T'<") >= 4
+
+
+@pytest.mark.parametrize(
+    ("args", "needle"),
+    [
+        (["export", "wall-collision", "--eps", "2", "--out", "{tmp}"], "eps must be a finite number in [0, 1]"),
+        (["export", "rod-collision", "--out", "/proc/rigidrel-cannot"], "--out '/proc/rigidrel-cannot' cannot"),
+        (["export", "rod-collision", "--out", "{tmp}", "--fps", "0"], "must be in (0, 1e4)"),
+        (["export", "rod-collision"], "--out"),
+        (["figures", "--out", "/proc/rigidrel-cannot"], "cannot be created"),
+    ],
+)
+def test_bad_export_arguments(args: list[str], needle: str, tmp_path: Path) -> None:
+    r = rigidrel(*(a.replace("{tmp}", str(tmp_path)) for a in args))
+    assert r.returncode == 2
+    assert len(r.stderr.splitlines()) == 1 and needle in r.stderr, r.stderr
