@@ -152,8 +152,11 @@ def minkowski_static(
     )
 
 
-def minkowski_now(scene: rr.Scene, view: View, now: float, span: float) -> tuple[Item, ...]:
-    """The moving parts: this frame's 'now' line, the other frame's, the rods' current places."""
+def minkowski_now(view: View, now: float, span: float, ends: FloatArray) -> tuple[Item, ...]:
+    """The moving parts: this frame's 'now' line, the other frame's, the rods' current places.
+
+    ``ends``: the rods' end positions at ``now`` in this view's frame (from the core), any shape.
+    """
     frame = view.frame
     items: list[Item] = [
         Polyline(
@@ -166,8 +169,7 @@ def minkowski_now(scene: rr.Scene, view: View, now: float, span: float) -> tuple
         items.append(
             Polyline(e[:, 1], e[:, 0], Style(FRAME_COLOR, 1.2, "dot", name=f"now: t{view.other_prime} = {now:.3g}"))
         )
-    x = scene.positions(np.array([now]), frame)[:, :, 0]
-    items.append(Points(x.ravel(), np.full(x.size, now), Style(INK), size=6))
+    items.append(Points(ends.ravel(), np.full(ends.size, now), Style(INK), size=6))
     return tuple(items)
 
 
@@ -218,11 +220,15 @@ def _event_rod(scene: rr.Scene, name: str) -> int:
     return 0
 
 
-def length_now(scene: rr.Scene, lab: rr.Frame, chosen: rr.Frame, now: float, y_top: float) -> tuple[Item, ...]:
+def length_now(now: float, y_top: float, ends: tuple[FloatArray, ...]) -> tuple[Item, ...]:
+    """The current time on the length plot, and each rod's length there in each frame.
+
+    ``ends``: per frame, the rods' end positions at ``now`` (from the core), shape ``(n_rods, 2)``.
+    """
     items: list[Item] = [
         Segments(np.array([now]), np.array([0.0]), np.array([now]), np.array([y_top]), Style(INK, 1.2))
     ]
-    for frame in (lab, chosen):
-        le = scene.lengths(np.array([now]), frame)[:, 0]
-        items.append(Points(np.full(le.size, now), le, Style(INK), size=6))
+    for e in ends:
+        length = e[:, 1] - e[:, 0]
+        items.append(Points(np.full(length.size, now), length, Style(INK), size=6))
     return tuple(items)

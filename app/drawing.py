@@ -130,14 +130,19 @@ def nice_step(span: float) -> float:
     return float(10 ** math.floor(math.log10(raw)))
 
 
-def lane_states(d: Drawn, now: float) -> list[LaneState]:
+def lane_states(d: Drawn, now: float, labels: bool = True) -> list[LaneState]:
     """Both lanes at playback time ``now``: the lab at t = now, the chosen frame at t' = now."""
     r = d.resolved
     lab_x, frame_x = (rng[0] / d.geometry.unit for rng in d.lane_ranges)
     return [
-        lane_state(r.scene, rr.Frame.lab(), now, d.geometry, f"lab frame:   t = {now:+.3f}", lab_x),
-        lane_state(r.scene, r.frame, now, d.geometry, f"{frame_title(r.frame)} frame:   t' = {now:+.3f}", frame_x),
+        lane_state(r.scene, _LAB, now, d.geometry, f"lab frame:   t = {now:+.3f}", lab_x, labels),
+        lane_state(
+            r.scene, r.frame, now, d.geometry, f"{frame_title(r.frame)} frame:   t' = {now:+.3f}", frame_x, labels
+        ),
     ]
+
+
+_LAB = rr.Frame.lab()
 
 
 def readout_markdown(resolved: Resolved) -> str:

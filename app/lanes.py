@@ -16,13 +16,12 @@ import numpy.typing as npt
 
 import rigidrel_core as rr
 
-from .draw import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, Label, Segments, Style
+from .draw import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, Label, Segments, Style
 
 #: Material points with ticks: every tenth of the rest length.
 TICK_FRACTIONS = np.linspace(0.0, 1.0, 11)
 #: One turn of a clock hand per this much proper time (in units of the largest rest length).
 CLOCK_PERIOD = 1.0
-_DIAL = np.linspace(0.0, 2.0 * np.pi, 25)
 
 
 @dataclass(frozen=True)
@@ -62,7 +61,13 @@ class LaneState:
 
     boxes: tuple[Box, ...]
     segments: Segments
+    """The ticks and the clock hands."""
+    dials: FloatArray
+    """Centres ``(x, z)`` of the clock dials (radius ``LaneGeometry.clock_radius``); shape ``(n, 2)``."""
     labels: tuple[Label, ...]
+    """Empty unless asked for (they change at the plots' rate, not every frame)."""
+    ends: FloatArray
+    """The rods' end positions in the frame (physical units, not lane units); shape ``(n_rods, 2)``."""
 
 
 def lane_geometry(scene: rr.Scene) -> LaneGeometry:
@@ -70,43 +75,55 @@ def lane_geometry(scene: rr.Scene) -> LaneGeometry:
 
 
 def lane_state(
-    scene: rr.Scene, frame: rr.Frame, now: float, geo: LaneGeometry, title: str, title_x: float
+    scene: rr.Scene,
+    frame: rr.Frame,
+    now: float,
+    geo: LaneGeometry,
+    title: str,
+    title_x: float,
+    labels: bool = True,
 ) -> LaneState:
     """The rods of ``scene`` at time ``now`` of ``frame``, drawn in lane coordinates.
 
-    Two labels per lane, at fixed places: ``title`` (the frame's name and clock) at lane x
-    ``title_x``, and beneath it the readings of the proper-time clocks on the rods' ends.
+    One two-line label per lane, at a fixed place (only if ``labels``): ``title`` (the
+    frame's name and clock) at lane x ``title_x``, and beneath it the readings of the
+    proper-time clocks on the rods' ends. Each end carries a dial whose hand turns once per
+    ``CLOCK_PERIOD``.
     """
     u = geo.unit
-    x = scene.material_positions(TICK_FRACTIONS, np.array([now]), frame)[:, :, 0] / u  # (rods, 11)
-    tau = scene.proper_times(np.array([now]), frame)[:, :, 0]  # (rods, 2)
+    x_phys, tau = scene.snapshot(now, frame, TICK_FRACTIONS)  # (rods, 11), (rods, 2)
+    x = x_phys / u
     h = geo.rod_height
     boxes = [Box(float(x[r, 0]), float(x[r, -1]), h, ROD_COLORS[r % len(ROD_COLORS)]) for r in range(scene.n_rods)]
     if scene.has_wall:
         xw = float(scene.wall_x(np.array([now]), frame)[0]) / u
         boxes.append(Box(xw - 0.02, xw, geo.wall_height, WALL_COLOR, z=0.5 * (geo.wall_height - h)))
-    # ticks across each rod's face
     tx = x.ravel()
     n = tx.size
-    # a dial (24 chords) and a hand above each end: one turn per CLOCK_PERIOD of proper time
-    r = geo.clock_radius
-    cx = x[:, [0, -1]].ravel()  # (ends,)
+    cx = x[:, [0, -1]].ravel()  # the ends: (rods * 2,)
     cz = geo.clock_z
-    a0, a1 = np.sin(_DIAL[:-1]), np.cos(_DIAL[:-1])
-    b0, b1 = np.sin(_DIAL[1:]), np.cos(_DIAL[1:])
     phase = 2.0 * np.pi * tau.ravel() / (CLOCK_PERIOD * u)
-    x0 = np.concatenate([tx, (cx[:, None] + r * a0).ravel(), cx])
-    z0 = np.concatenate([np.full(n, -0.5 * h), np.tile(cz + r * a1, cx.size), np.full(cx.size, cz)])
-    x1 = np.concatenate([tx, (cx[:, None] + r * b0).ravel(), cx + 0.85 * r * np.sin(phase)])
-    z1 = np.concatenate([np.full(n, 0.5 * h), np.tile(cz + r * b1, cx.size), cz + 0.85 * r * np.cos(phase)])
-    readings = "    ".join(f"{rod.name}: {tau[i, 0]:+.3f} | {tau[i, 1]:+.3f}" for i, rod in enumerate(scene.rods))
-    labels = (
-        Label(title_x, geo.title_z, title, Style(INK), anchor="left", size=14),
-        Label(
-            title_x, geo.title_z - 0.11, f"clocks τ (left | right end)   {readings}", Style(INK), anchor="left", size=11
-        ),
-    )
-    return LaneState(tuple(boxes), Segments(x0, z0, x1, z1, Style(INK, 1.5)), labels)
+    hand = 0.85 * geo.clock_radius
+    x0 = np.concatenate([tx, cx])
+    z0 = np.concatenate([np.full(n, -0.5 * h), np.full(cx.size, cz)])
+    x1 = np.concatenate([tx, cx + hand * np.sin(phase)])
+    z1 = np.concatenate([np.full(n, 0.5 * h), cz + hand * np.cos(phase)])
+    dials = np.stack([cx, np.full(cx.size, cz)], axis=-1)
+    texts: tuple[Label, ...] = ()
+    if labels:  # one two-line label per lane: each label update is a message
+        readings = "    ".join(f"{rod.name}: {tau[i, 0]:+.3f} | {tau[i, 1]:+.3f}" for i, rod in enumerate(scene.rods))
+        texts = (
+            Label(
+                title_x,
+                geo.title_z - 0.05,
+                f"{title}\nclocks τ (left | right end)   {readings}",
+                Style(INK),
+                anchor="left",
+                size=12,
+            ),
+        )
+    ends = x_phys[:, [0, -1]]
+    return LaneState(tuple(boxes), Segments(x0, z0, x1, z1, Style(INK, 1.5)), dials, texts, ends)
 
 
 def lane_static(

@@ -6,15 +6,15 @@ Callbacks only replace a field of :class:`Settings` and assign what pure builder
 
 from __future__ import annotations
 
+import math
 import threading
 import time
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any, cast
 
 import plotly.graph_objects as go
 import viser
 
-import rigidrel_core as rr
 from rigidrel_core import SceneKind
 
 from .diagrams import length_now, minkowski_now
@@ -26,7 +26,6 @@ from .drawing import (
     LENGTH_ASPECT,
     PLAY_SECONDS,
     PLOT_ASPECT,
-    PLOT_CONFIG,
     PLOT_HZ,
     PLOT_PANEL_PX,
     Drawn,
@@ -55,6 +54,51 @@ def _log_ratio_label(value: float) -> str:
     return f"M2/M1 = {10.0**value:.3g}"
 
 
+@dataclass(frozen=True)
+class SliderSpec:
+    """A slider that holds one field of :class:`Settings`; its range is also the server's check."""
+
+    field: str
+    label: str
+    lo: float
+    hi: float
+    step: float
+    hint: str
+    marks: tuple[tuple[float, str], ...] | None = None
+
+
+SLIDERS = {
+    spec.field: spec
+    for spec in (
+        SliderSpec("v", "V", 0.01, 0.99, 0.01, "Final speed V (V1 of rod 1 for a collision), c = 1"),
+        SliderSpec(
+            "a_front_length",
+            "a'_F L0",
+            0.01,
+            0.99,
+            0.01,
+            "Front-end proper acceleration times rest length; the back end gets a'_F/(1 - a'_F L0). "
+            "1 is the impulsive limit.",
+        ),
+        SliderSpec("eps", "ε (restitution)", 0.0, 1.0, 0.01, "0: the rods stick (crash), 1: elastic"),
+        SliderSpec("v2", "V2", -0.99, 0.99, 0.01, "Velocity of rod 2 (must be below V1)"),
+        SliderSpec(
+            "log_mass_ratio",
+            "log10 M2/M1",
+            -2.0,
+            2.0,
+            0.01,
+            "Mass ratio M2/M1 on a log scale",
+            ((-2.0, "0.01"), (-1.0, "0.1"), (0.0, "1"), (1.0, "10"), (2.0, "100")),
+        ),
+        SliderSpec("length_ratio", "L2/L1", 0.1, 5.0, 0.05, "Rest length of rod 2 in rod 1's"),
+        SliderSpec(
+            "beta", "β (custom)", -0.99, 0.99, 0.01, "Velocity of the custom frame; moving it selects the custom frame"
+        ),
+    )
+}
+
+
 class Session:
     """State and controls of one client; ``tick`` is called by the server's animation loop."""
 
@@ -70,6 +114,7 @@ class Session:
         self._last_slider = 0.0
         self._notice = ""
         self.closed = False
+        self._slider_field: dict[str, str] = {}
         resolved = resolve(self.settings)
         assert isinstance(resolved, Resolved)
         self.drawn: Drawn | None = None
@@ -91,44 +136,12 @@ class Session:
                 hint="Reproduce the paper's Figs. 1, 3 and 4 exactly",
             )
             self.scene_dd = gui.add_dropdown("Scene", list(SCENE_LABELS.values()), initial_value=SCENE_LABELS[s.scene])
-            self.v_slider = gui.add_slider(
-                "V",
-                min=0.01,
-                max=0.99,
-                step=0.01,
-                initial_value=s.v,
-                hint="Final speed V (V1 of rod 1 for a collision), c = 1",
-            )
-            self.a_slider = gui.add_slider(
-                "a'_F L0",
-                min=0.01,
-                max=0.99,
-                step=0.01,
-                initial_value=s.a_front_length,
-                hint="Front-end proper acceleration times rest length; the back end gets "
-                "a'_F/(1 - a'_F L0). 1 is the impulsive limit.",
-            )
-            self.eps_slider = gui.add_slider(
-                "ε (restitution)",
-                min=0.0,
-                max=1.0,
-                step=0.01,
-                initial_value=s.eps,
-                hint="0: the rods stick (crash), 1: elastic",
-            )
-            self.v2_slider = gui.add_slider(
-                "V2", min=-0.99, max=0.99, step=0.01, initial_value=s.v2, hint="Velocity of rod 2 (must be below V1)"
-            )
-            self.m_slider = gui.add_slider(
-                "log10 M2/M1",
-                min=-2.0,
-                max=2.0,
-                step=0.01,
-                initial_value=s.log_mass_ratio,
-                marks=((-2.0, "0.01"), (-1.0, "0.1"), (0.0, "1"), (1.0, "10"), (2.0, "100")),
-                hint="Mass ratio M2/M1 on a log scale",
-            )
-            self.l_slider = gui.add_slider("L2/L1", min=0.1, max=5.0, step=0.05, initial_value=s.length_ratio)
+            self.v_slider = self._setting_slider(SLIDERS["v"])
+            self.a_slider = self._setting_slider(SLIDERS["a_front_length"])
+            self.eps_slider = self._setting_slider(SLIDERS["eps"])
+            self.v2_slider = self._setting_slider(SLIDERS["v2"])
+            self.m_slider = self._setting_slider(SLIDERS["log_mass_ratio"])
+            self.l_slider = self._setting_slider(SLIDERS["length_ratio"])
             self.overlay_cb = gui.add_checkbox(
                 "Fig. 1 dashed",
                 s.overlay_impulsive,
@@ -142,14 +155,7 @@ class Session:
                 initial_value=s.frame,
                 hint="The lower lane and the second diagram are drawn in this frame",
             )
-            self.beta_slider = gui.add_slider(
-                "β (custom)",
-                min=-0.99,
-                max=0.99,
-                step=0.01,
-                initial_value=s.beta,
-                hint="Velocity of the custom frame; moving it selects the custom frame",
-            )
+            self.beta_slider = self._setting_slider(SLIDERS["beta"])
         with gui.add_folder("Playback"):
             self.play_btn = gui.add_button("Play", icon=viser.Icon.PLAYER_PLAY)
             self.time_slider = gui.add_slider(
@@ -170,12 +176,13 @@ class Session:
         self.plot_panel = gui.add_panel()
         self.plot_panel.dock_left()
         self.plot_panel.set_width(PLOT_PANEL_PX)
+        # no config= here: viser would re-parse every figure to merge it; the spliced JSON carries it
         empty = go.Figure()
         with self.plot_panel.add_tab("Minkowski diagrams"):
-            self.lab_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT, config=PLOT_CONFIG)
-            self.frame_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT, config=PLOT_CONFIG)
+            self.lab_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT)
+            self.frame_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT)
         with self.plot_panel.add_tab("Lengths (Fig. 2)"):
-            self.length_plot = gui.add_plotly(empty, aspect=LENGTH_ASPECT, config=PLOT_CONFIG)
+            self.length_plot = gui.add_plotly(empty, aspect=LENGTH_ASPECT)
         self._aspect = self.client.camera.aspect
 
         @self.client.camera.on_update
@@ -188,13 +195,36 @@ class Session:
 
         self._wire()
 
+    def _setting_slider(self, spec: SliderSpec) -> viser.GuiSliderHandle[float]:
+        """A slider for one field of :class:`Settings`; remembered so a refused value can be undone."""
+        handle = self.client.gui.add_slider(
+            spec.label,
+            min=spec.lo,
+            max=spec.hi,
+            step=spec.step,
+            initial_value=float(getattr(self.settings, spec.field)),
+            marks=spec.marks,
+            hint=spec.hint,
+        )
+        self._slider_field[handle._impl.uuid] = spec.field
+        return handle
+
     def _wire(self) -> None:
-        def setting(handle: Any, field: str, transform: Any = float) -> None:
+        """Every control's callback. Values are checked here, on the server: a client that
+        bypasses the sliders (a hostile websocket) is refused like an out-of-range slider."""
+
+        def on_user(handle: Any, act: Any) -> None:
             @handle.on_update
             def _(event: viser.GuiEvent) -> None:
-                if event.client is None:
+                if event.client is None:  # set by the server itself
                     return
-                self.change(field, transform(handle.value))
+                value = self._checked(handle)
+                if value is None:
+                    return
+                act(value)
+
+        def setting(handle: Any, field: str) -> None:
+            on_user(handle, lambda v: self.change(field, v))
 
         setting(self.v_slider, "v")
         setting(self.a_slider, "a_front_length")
@@ -202,32 +232,27 @@ class Session:
         setting(self.v2_slider, "v2")
         setting(self.m_slider, "log_mass_ratio")
         setting(self.l_slider, "length_ratio")
-        setting(self.overlay_cb, "overlay_impulsive", bool)
-        setting(self.frame_dd, "frame", str)
+        setting(self.overlay_cb, "overlay_impulsive")
+        setting(self.frame_dd, "frame")
 
-        @self.beta_slider.on_update
-        def _(event: viser.GuiEvent) -> None:
-            if event.client is None:
-                return
+        def custom_frame(beta: float) -> None:
             with self.lock:
-                new = replace(self.settings, beta=float(self.beta_slider.value), frame=CUSTOM_FRAME)
-                self._try(new)
+                self._try(replace(self.settings, beta=beta, frame=CUSTOM_FRAME))
 
-        @self.scene_dd.on_update
-        def _(event: viser.GuiEvent) -> None:
-            if event.client is None:
-                return
-            kind = next(k for k, label in SCENE_LABELS.items() if label == self.scene_dd.value)
-            self.change("scene", kind)
+        on_user(self.beta_slider, custom_frame)
 
-        @self.preset.on_update
-        def _(event: viser.GuiEvent) -> None:
-            if event.client is None:
-                return
-            preset = Preset(self.preset.value)
-            if preset is not Preset.NONE:
+        def scene(label: str) -> None:
+            self.change("scene", next(k for k, name in SCENE_LABELS.items() if name == label))
+
+        on_user(self.scene_dd, scene)
+
+        def preset(label: str) -> None:
+            chosen = Preset(label)
+            if chosen is not Preset.NONE:
                 with self.lock:
-                    self._try(replace(PRESETS[preset], frame=self.settings.frame), refit=True)
+                    self._try(replace(PRESETS[chosen], frame=self.settings.frame), refit=True)
+
+        on_user(self.preset, preset)
 
         @self.play_btn.on_click
         def _(_: viser.GuiEvent) -> None:
@@ -236,22 +261,90 @@ class Session:
                     self.now = self.drawn.window[0]
                 self.set_playing(not self.playing)
 
-        @self.time_slider.on_update
-        def _(event: viser.GuiEvent) -> None:
-            if event.client is None:
-                return
+        def scrub(now: float) -> None:
             with self.lock:
                 self.set_playing(False)
-                self.now = float(self.time_slider.value)
+                self.now = now
                 self.draw_now(force_plots=True)
 
-        @self.speed_slider.on_update
-        def _(_: viser.GuiEvent) -> None:
-            self.speed = float(self.speed_slider.value)
+        on_user(self.time_slider, scrub)
 
-        @self.loop_cb.on_update
-        def _(_: viser.GuiEvent) -> None:
-            self.loop = bool(self.loop_cb.value)
+        def speed(value: float) -> None:
+            self.speed = value
+
+        def loop(value: bool) -> None:
+            self.loop = value
+
+        on_user(self.speed_slider, speed)
+        on_user(self.loop_cb, loop)
+        on_user(self.fit_cb, lambda _: None)
+
+    def _checked(self, handle: Any) -> Any:
+        """The control's new value if it is one the control can hold; else None, a notice, and the old value back."""
+        value = handle.value
+        if isinstance(handle, viser.GuiSliderHandle):
+            ok = (
+                isinstance(value, (int, float))
+                and not isinstance(value, bool)
+                and math.isfinite(value)
+                and handle.min - 1e-12 <= value <= handle.max + 1e-12
+            )
+            allowed = f"a number in [{handle.min:g}, {handle.max:g}]"
+        elif isinstance(handle, viser.GuiDropdownHandle):
+            ok = value in handle.options
+            allowed = "one of the listed choices"
+        elif isinstance(handle, viser.GuiCheckboxHandle):
+            ok = isinstance(value, bool)
+            allowed = "true or false"
+        else:
+            return value
+        if ok:
+            return float(value) if isinstance(handle, viser.GuiSliderHandle) else value
+        with self.lock:
+            self._set_notice(
+                f"{handle.label} = {value!r} refused: it must be {allowed}. The last valid scene stays on screen."
+            )
+            self._restore(handle)
+        return None
+
+    def _restore(self, handle: Any) -> None:
+        """Put a control back to what the session holds (after a refused value)."""
+        field = self._slider_field.get(handle._impl.uuid)
+        if field is not None:
+            handle.value = float(getattr(self.settings, field))
+        elif handle is self.frame_dd:
+            name = self.drawn.resolved.frame.name if self.drawn else "lab"
+            handle.value = name if name in handle.options else handle.options[0]
+        else:
+            handle.value = {
+                id(self.overlay_cb): self.settings.overlay_impulsive,
+                id(self.scene_dd): SCENE_LABELS[self.settings.scene],
+                id(self.preset): Preset.NONE.value,
+                id(self.time_slider): round(self.now, 6),
+                id(self.speed_slider): self.speed,
+                id(self.loop_cb): self.loop,
+                id(self.fit_cb): self.fit_cb.value,
+            }.get(id(handle), handle.value)
+
+    def greet(self, version: str) -> None:
+        """Tell a tab that was last used with another version that it now runs this one.
+
+        Runs in its own thread: reading the browser's localStorage is a round trip.
+        """
+        storage = self.client.local_storage
+        try:
+            seen = storage.get_item("rigidrel_version", timeout=10.0)
+            storage.set_item("rigidrel_version", version)
+        except (TimeoutError, RuntimeError):  # not a browser, or gone
+            return
+        if seen is not None and seen != version and not self.closed:
+            self.client.add_notification(
+                "rigidrel was updated",
+                f"This page was last used with rigidrel {seen}; the server now runs {version}. The controls are "
+                "back to their defaults. If anything looks out of date, reload the page (Ctrl+R).",
+                color="blue",
+                auto_close_seconds=20.0,
+            )
 
     # ------------------------------------------------------------------ state
     def change(self, field: str, value: object) -> None:
@@ -341,25 +434,27 @@ class Session:
         d = self.drawn
         if d is None:
             return
-        r = d.resolved
         now = self.now
-        lab = rr.Frame.lab()
-        states = lane_states(d, now)
         wall = time.monotonic()
         slow = force_plots or wall - self._last_plot >= 1.0 / PLOT_HZ
+        states = lane_states(d, now, labels=slow)
         with self.client.atomic():
-            self.renderer.update(states, labels=slow)
+            self.renderer.update(states, d.geometry.clock_radius, labels=slow)
             if slow:
                 self._last_plot = wall
                 self.lab_plot.figure = cast(
-                    go.Figure, JsonFigure(d.lab_chart.with_dynamic(minkowski_now(r.scene, d.lab_view, now, d.span)))
+                    go.Figure,
+                    JsonFigure(d.lab_chart.with_dynamic(minkowski_now(d.lab_view, now, d.span, states[0].ends))),
                 )
                 self.frame_plot.figure = cast(
-                    go.Figure, JsonFigure(d.frame_chart.with_dynamic(minkowski_now(r.scene, d.frame_view, now, d.span)))
+                    go.Figure,
+                    JsonFigure(d.frame_chart.with_dynamic(minkowski_now(d.frame_view, now, d.span, states[1].ends))),
                 )
                 self.length_plot.figure = cast(
                     go.Figure,
-                    JsonFigure(d.length_chart.with_dynamic(length_now(r.scene, lab, r.frame, now, d.length_top))),
+                    JsonFigure(
+                        d.length_chart.with_dynamic(length_now(now, d.length_top, (states[0].ends, states[1].ends)))
+                    ),
                 )
                 self.time_slider.value = round(now, 6)
 

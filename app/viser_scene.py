@@ -6,6 +6,7 @@ points) and the labels' texts; it never creates nodes except when a scene's shap
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 from typing import Literal
 
@@ -49,6 +50,23 @@ _FRONT = -0.5 * ROD_DEPTH - 0.004  # segments just in front of the boxes' faces
 _LABEL_Y = _FRONT - 0.01
 
 
+def _ring(radius: float, width: float = 0.13, n: int = 32) -> tuple[np.ndarray, np.ndarray]:
+    """A flat annulus in the x-z plane (facing the camera on -y): a clock dial."""
+    a = np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
+    outer = np.stack([radius * np.cos(a), np.zeros(n), radius * np.sin(a)], axis=-1)
+    inner = outer * (1.0 - width)
+    vertices = np.concatenate([outer, inner]).astype(np.float32)
+    k = np.arange(n)
+    k1 = (k + 1) % n
+    faces = np.concatenate([np.stack([k, k1, n + k], -1), np.stack([k1, n + k1, n + k], -1)]).astype(np.uint32)
+    return vertices, faces
+
+
+@functools.lru_cache(maxsize=64)
+def _instance_colors(names: tuple[str, ...]) -> np.ndarray:
+    return np.array([linear_rgb(c) for c in names], dtype=np.uint8)
+
+
 def linear_rgb(color: str) -> tuple[int, int, int]:
     """An sRGB palette colour as the linear values three.js expects for mesh instance colours."""
 
@@ -69,6 +87,8 @@ class LaneRenderer:
         self.lane_z = tuple(lane_z)
         self._boxes: viser.BatchedMeshHandle | None = None
         self._box_colors: tuple[str, ...] = ()
+        self._box_positions = np.zeros((0, 3), dtype=np.float32)
+        self._box_scales = np.zeros((0, 3), dtype=np.float32)
         # flat, true colours: no environment map, an even ambient light and one from the camera
         scene.configure_environment_map(None)
         scene.configure_default_lights(enabled=False)
@@ -77,6 +97,10 @@ class LaneRenderer:
         self._dynamic: viser.LineSegmentsHandle | None = None
         self._static: viser.LineSegmentsHandle | None = None
         self._labels: list[viser.LabelHandle] = []
+        self._label_state: dict[int, tuple[str, tuple[float, float, float]]] = {}
+        self._dials: viser.BatchedMeshHandle | None = None
+        self._dial_count = -1
+        self._dial_radius = 0.0
         self._static_labels: list[viser.LabelHandle] = []
 
     # ------------------------------------------------------------------ per scene
@@ -114,8 +138,8 @@ class LaneRenderer:
         )
 
     # ------------------------------------------------------------------ per frame
-    def update(self, states: Sequence[LaneState], labels: bool = True) -> None:
-        """Move the rods (every frame); rewrite the labels' texts only if ``labels``."""
+    def update(self, states: Sequence[LaneState], radius: float, labels: bool = True) -> None:
+        """Move the rods and clocks (every frame); rewrite the labels if the states carry them."""
         boxes = [(b, z) for st, z in zip(states, self.lane_z, strict=True) for b in st.boxes]
         self._update_boxes(boxes)
         pts = np.concatenate(
@@ -127,16 +151,52 @@ class LaneRenderer:
             )
         else:
             self._dynamic.points = pts
-        if not labels and self._labels:
+        self._update_dials(states, radius)
+        if not labels or not any(st.labels for st in states):
             return
         placed = [(lab, z) for st, z in zip(states, self.lane_z, strict=True) for lab in st.labels]
         if len(placed) != len(self._labels):
             for h in self._labels:
                 h.remove()
             self._labels = [self._label(f"/lanes/label/{k}", lab, z) for k, (lab, z) in enumerate(placed)]
-        for h, (lab, z) in zip(self._labels, placed, strict=True):
-            h.text = plain_text(lab.text)
-            h.position = (lab.x, _LABEL_Y, lab.y + z)  # unchanged positions are not re-sent
+            self._label_state = {}
+        for k, (h, (lab, z)) in enumerate(zip(self._labels, placed, strict=True)):
+            text, position = plain_text(lab.text), (lab.x, _LABEL_Y, lab.y + z)
+            if (text, position) != self._label_state.get(k):  # a cheap check before viser's
+                h.text = text
+                h.position = position
+                self._label_state[k] = (text, position)
+
+    def _update_dials(self, states: Sequence[LaneState], radius: float) -> None:
+        """One ring mesh, instanced at every clock: positions only change per frame."""
+        centres = [(st.dials, z) for st, z in zip(states, self.lane_z, strict=True)]
+        n = sum(c.shape[0] for c, _ in centres)
+        positions = np.zeros((n, 3), dtype=np.float32)
+        k = 0
+        for c, z in centres:
+            positions[k : k + c.shape[0], 0] = c[:, 0]
+            positions[k : k + c.shape[0], 1] = _FRONT
+            positions[k : k + c.shape[0], 2] = c[:, 1] + z
+            k += c.shape[0]
+        if self._dials is None or n != self._dial_count or radius != self._dial_radius:
+            vertices, faces = _ring(radius)
+            self._dials = self._scene.add_batched_meshes_simple(
+                "/lanes/dials",
+                vertices,
+                faces,
+                batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (n, 1)),
+                batched_positions=positions,
+                batched_colors=np.array(linear_rgb(INK), dtype=np.uint8),
+                flat_shading=True,
+                lod="off",
+                cast_shadow=False,
+                receive_shadow=False,
+                side="double",
+            )
+            self._dial_count = n
+            self._dial_radius = radius
+        else:
+            self._dials.batched_positions = positions
 
     def _update_boxes(self, boxes: Sequence[tuple[Box, float]]) -> None:
         n = BOXES_PER_LANE * len(self.lane_z)
@@ -148,7 +208,7 @@ class LaneRenderer:
             positions[k] = (0.5 * (b.x0 + b.x1), 0.0, z + b.z)
             scales[k] = (max(b.x1 - b.x0, 1e-4), ROD_DEPTH, b.height)
         names = tuple(b.color for b, _ in boxes) + ("#ffffff",) * (n - len(boxes))
-        colors = np.array([linear_rgb(c) for c in names], dtype=np.uint8)
+        colors = _instance_colors(names)
         if self._boxes is None:
             self._boxes = self._scene.add_batched_meshes_simple(
                 "/lanes/boxes",
@@ -164,11 +224,16 @@ class LaneRenderer:
                 receive_shadow=False,
             )
         else:
-            self._boxes.batched_positions = positions
-            self._boxes.batched_scales = scales
+            # skip what did not change (the boxes' lengths are constant while the rods coast):
+            # each assignment costs a message and a wake-up of viser's event loop
+            if not np.array_equal(positions, self._box_positions):
+                self._boxes.batched_positions = positions
+            if not np.array_equal(scales, self._box_scales):
+                self._boxes.batched_scales = scales
             if names != self._box_colors:
                 self._boxes.batched_colors = colors
         self._box_colors = names
+        self._box_positions, self._box_scales = positions, scales
 
     def box_positions(self) -> FloatArray:
         """Current box centres (for tests)."""

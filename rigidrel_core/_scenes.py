@@ -188,6 +188,22 @@ class Scene:
         tau = self._plan(as_frame(frame_velocity), f).proper_times(tt.ravel())
         return tau.reshape((self.n_rods, f.size, *tt.shape))
 
+    def snapshot(self, t: float, frame_velocity: FrameLike, fractions: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
+        """Positions of material points and the ends' clock readings at one frame time.
+
+        The per-frame call of an animation: ``(x of shape (n_rods, len(fractions)),
+        proper times of shape (n_rods, 2) at the ends)``; one plan, two evaluations.
+        ``fractions`` must start at 0 and end at 1.
+        """
+        tt = check_times("t", np.array([t], dtype=np.float64))
+        f = check_fractions("fractions", fractions)
+        if f.size < 2 or f[0] != 0.0 or f[-1] != 1.0:
+            raise ParameterError("fractions", "sorted fractions starting at 0 and ending at 1", fractions)
+        plan = self._plan(as_frame(frame_velocity), f)
+        x = plan.positions(tt).reshape(self.n_rods, f.size)
+        tau = plan.proper_times(tt).reshape(self.n_rods, f.size)
+        return x, tau[:, [0, -1]]
+
     def lengths(self, t: npt.ArrayLike, frame_velocity: FrameLike = 0.0) -> FloatArray:
         """Equal-time length ``x_right(t') - x_left(t')`` of each rod in the frame (Fig. 2).
 

@@ -99,3 +99,35 @@ def test_bad_serve_arguments(args: list[str]) -> None:
     )
     assert r.returncode == 2
     assert len(r.stderr.splitlines()) == 1
+
+
+def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
+    """SIGINT/SIGTERM while tabs are playing and one stopped reading: exit 0, no traceback, in time."""
+    import asyncio
+
+    from tests.viser_client import LightClient
+
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        proc, url, _ = start("-m", "app.cli", "serve", "--port", str(free_port()))
+
+        async def clients(url: str = url) -> list[LightClient]:
+            cs = [LightClient(url) for _ in range(3)] + [LightClient(url, read=False)]
+            await asyncio.gather(*(c.connect() for c in cs))
+            return cs
+
+        loop = asyncio.new_event_loop()
+        try:
+            cs = loop.run_until_complete(clients())
+            readers = [loop.create_task(c.run(30)) for c in cs]
+            loop.run_until_complete(asyncio.sleep(2.0))
+            t0 = time.monotonic()
+            out = stop(proc, sig)
+            took = time.monotonic() - t0
+            for c in cs:
+                c.stop()
+            loop.run_until_complete(asyncio.gather(*readers, return_exceptions=True))
+        finally:
+            loop.close()
+        assert proc.returncode == 0, out
+        assert "Traceback" not in out and "Error" not in out.replace("rigidrel: dropped", ""), out
+        assert took < 15.0

@@ -63,6 +63,10 @@ class LaneRaster:
                 d.rectangle([float(u0), float(v0), max(float(u1), float(u0) + 1), float(v1)], fill=rgb(b.color))
             seg = st.segments
             self._segments(d, seg.x0, seg.y0 + z, seg.x1, seg.y1 + z, INK, 2)
+            r = self.drawn.geometry.clock_radius * self.scale
+            for cx, cz in st.dials.tolist():
+                (u,), (v,) = self.px(np.array([cx]), np.array([cz + z]))
+                d.ellipse([float(u) - r, float(v) - r, float(u) + r, float(v) + r], outline=rgb(INK), width=2)
             for lab in st.labels:
                 self._text(d, lab.x, lab.y + z, plain_text(lab.text), INK, lab.size, lab.anchor)
         return img

@@ -52,10 +52,12 @@ def record_lanes_html(drawn: Drawn, seconds: float = 10.0, fps: float = 30.0, as
         server.initial_camera.up = pose.up
         server.initial_camera.fov = pose.fov
         times = playback_times(drawn, seconds, fps)
-        renderer.update(lane_states(drawn, float(times[0])))
+        radius = drawn.geometry.clock_radius
+        renderer.update(lane_states(drawn, float(times[0])), radius)
         serializer = server.get_scene_serializer()
         label_every = max(1, round(fps / PLOT_HZ))
         for k, now in enumerate(times):
-            renderer.update(lane_states(drawn, float(now)), labels=k % label_every == 0)
+            labels = k % label_every == 0
+            renderer.update(lane_states(drawn, float(now), labels=labels), radius, labels=labels)
             serializer.insert_sleep(1.0 / fps)
         return serializer.as_html()

@@ -38,6 +38,16 @@ class AppPage:
         self.errors: list[str] = []
         before = set(app.sessions)
         self.page = browser.new_page(viewport=VIEWPORT)
+        self.external: list[str] = []
+
+        def route(r: Any) -> None:  # the app needs nothing beyond its own server
+            if r.request.url.startswith(("http://127.0.0.1", "ws://127.0.0.1", "data:", "blob:")):
+                r.continue_()
+            else:
+                self.external.append(r.request.url)
+                r.abort()
+
+        self.page.route("**/*", route)
         self.page.on("pageerror", lambda e: self.errors.append(f"pageerror: {e}"))
         self.page.on("console", lambda m: self.errors.append(f"console: {m.text}") if m.type == "error" else None)
         self.opened = time.monotonic()
@@ -159,6 +169,7 @@ def test_page_loads_and_renders(tab: AppPage, shots: Path) -> None:
     dark = (img.sum(axis=-1) < 200).sum()
     assert blue > 2000 and dark > 300, (blue, dark)
     assert tab.errors == []
+    assert tab.external == []
 
 
 def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> None:
@@ -300,3 +311,37 @@ def test_playback_moves_the_rods_and_the_now_lines(tab: AppPage) -> None:
     tab.page.click("button:has-text('Pause')")
     wait_until(lambda: not tab.session.playing)
     assert json.dumps(tab.errors) == "[]"
+
+
+def test_share_button_is_hidden(tab: AppPage) -> None:
+    """viser's share button needs the internet: hidden. Hover every header icon: no "Share" tooltip."""
+    icons = tab.page.locator("button.mantine-ActionIcon-root")
+    assert icons.count() > 0
+    for k in range(icons.count()):
+        icon = icons.nth(k)
+        if icon.is_visible():
+            icon.hover()
+            tab.page.wait_for_timeout(150)
+            assert tab.page.locator("text=/^Share/").count() == 0
+
+
+def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:
+    old = App(port=0, version="0.0.1-old")
+    port = old.server.get_port()
+    page = AppPage(browser, old)
+    new = None
+    try:
+        time.sleep(2.0)  # the tab has recorded the version it runs
+        old.stop()
+        new = App(port=port, version="9.9.9-new")
+        assert new.server.get_port() == port
+        # the tab reconnects by itself and is told what happened
+        page.page.wait_for_selector("text=rigidrel was updated", timeout=60_000)
+        text = page.page.locator(".mantine-Notification-root").all_inner_texts()
+        assert any("0.0.1-old" in t and "9.9.9-new" in t and "reload" in t for t in text), text
+    finally:
+        page.close()
+        if new is not None:
+            new.stop()
+        else:
+            old.stop()

@@ -1,0 +1,132 @@
+"""Load benchmark: many lightweight clients playing at once (not a test: machines are noisy).
+
+    python -m tests.load --clients 30 --seconds 60 --fps 30
+    python -m tests.load --find-max --seconds 20 --fps 30      # the most clients held at 25 fps
+
+The server runs in this process with its animation loop at ``--fps``; the clients (viser's
+websocket protocol, tests/viser_client.py, no browsers) run in another process so they do
+not share the server's interpreter. Every client is a tab playing Fig. 3's collision. The
+final line reports: clients, the minimum (and median) delivered frames per second per client,
+errors (client disconnects plus server-side errors), and the growth of the server's resident
+memory between the start and the end of the measurement.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from app.server import App
+from app.settings import PRESETS, Preset
+from tests.viser_client import LightClient
+
+ROOT = Path(__file__).resolve().parents[1]
+WARMUP = 3.0
+TARGET_FPS = 25.0
+
+
+def rss_mb() -> float:
+    for line in Path("/proc/self/status").read_text().splitlines():
+        if line.startswith("VmRSS:"):
+            return int(line.split()[1]) / 1024.0
+    return float("nan")
+
+
+def client_process(url: str, n: int, seconds: float) -> None:
+    """In the child: ``n`` clients read for WARMUP + ``seconds``; print per-client frame counts as JSON."""
+
+    async def main() -> None:
+        clients = [LightClient(url) for _ in range(n)]
+        await asyncio.gather(*(c.connect() for c in clients))
+        start = time.monotonic()
+        stats = await asyncio.gather(*(c.run(WARMUP + seconds) for c in clients))
+        for c in clients:
+            await c.close()
+        t0 = start + WARMUP
+        print(
+            json.dumps(
+                [{"frames": sum(1 for t in s.lane_times if t0 <= t < t0 + seconds), "errors": s.errors} for s in stats]
+            )
+        )
+
+    asyncio.run(main())
+
+
+def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
+    with App(port=0, animation_hz=fps) as app:
+        child = subprocess.Popen(
+            [
+                sys.executable,
+                "-c",
+                f"from tests.load import client_process; client_process({app.url!r}, {clients}, {seconds})",
+            ],
+            cwd=ROOT,
+            stdout=subprocess.PIPE,
+            text=True,
+        )
+        end = time.monotonic() + 60.0
+        while len(app.sessions) < clients:
+            if time.monotonic() > end or child.poll() is not None:
+                child.kill()
+                raise RuntimeError(f"only {len(app.sessions)} of {clients} clients connected")
+            time.sleep(0.05)
+        for session in list(app.sessions.values()):
+            with session.lock:
+                session._try(PRESETS[Preset.FIG3], refit=True)
+                session.set_playing(True)
+        # memory at the start and at the end of the measured window, both with every client connected
+        time.sleep(WARMUP - 0.5)
+        mem0 = rss_mb()
+        time.sleep(max(0.0, seconds - 1.0))
+        mem1 = rss_mb()  # a second before the clients' window closes: all still connected
+        out, _ = child.communicate(timeout=seconds + 120.0)
+        server_errors = app.errors
+    stats = json.loads(out.strip().splitlines()[-1])
+    fps_each = [s["frames"] / seconds for s in stats]
+    return {
+        "clients": float(clients),
+        "min_fps": min(fps_each),
+        "median_fps": statistics.median(fps_each),
+        "errors": float(sum(len(s["errors"]) for s in stats) + server_errors),
+        "memory_growth_mb": mem1 - mem0,
+        "seconds": seconds,
+    }
+
+
+def line(r: dict[str, float]) -> str:
+    return (
+        f"clients={r['clients']:.0f} min_fps={r['min_fps']:.1f} median_fps={r['median_fps']:.1f} "
+        f"errors={r['errors']:.0f} memory_growth_mb={r['memory_growth_mb']:.1f} seconds={r['seconds']:.0f}"
+    )
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description="rigidrel load benchmark (lightweight websocket clients)")
+    parser.add_argument("--clients", type=int, default=30)
+    parser.add_argument("--seconds", type=float, default=60.0)
+    parser.add_argument("--fps", type=float, default=30.0, help="the server's animation rate")
+    parser.add_argument("--find-max", action="store_true", help="raise the clients until one gets < 25 fps")
+    args = parser.parse_args()
+    if not args.find_max:
+        print(line(run(args.clients, args.seconds, args.fps)), flush=True)
+        return
+    best = 0
+    n = 10
+    while True:
+        r = run(n, args.seconds, args.fps)
+        print(line(r), file=sys.stderr, flush=True)
+        if r["min_fps"] < TARGET_FPS or r["errors"] > 0:
+            break
+        best = n
+        n += 5
+    print(f"max_clients_at_{TARGET_FPS:.0f}_fps={best} (fps={args.fps:g}, seconds={args.seconds:g})", flush=True)
+
+
+if __name__ == "__main__":
+    main()
