@@ -85,9 +85,6 @@ class ExactVelocity:
             return 0.5 * math.log1p(2.0 * (self.hi + self.lo) / self.one_minus())
         return -0.5 * math.log1p(-2.0 * (self.hi + self.lo) / self.one_plus())
 
-    def negated(self) -> ExactVelocity:
-        return ExactVelocity(-self.hi, -self.lo, self.gap)
-
 
 REST = ExactVelocity(0.0, 0.0, 1.0)
 

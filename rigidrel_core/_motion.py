@@ -14,18 +14,22 @@ A hyperbola piece is Lorentz covariant: in lab coordinates its points are
 ``theta_f``; a boost into a frame of rapidity ``psi`` maps it to
 ``C' + sign * rho * (sinh(theta - psi), cosh(theta - psi))``. So a frame only changes the
 centre event and shifts the rapidity interval; the piece stays a hyperbola and a slice
-at equal frame time is closed form:
+at equal frame time is closed form. With ``t'_C`` the centre's frame time, each piece is
+anchored where it crosses the frame's ``t' = 0`` line (the line through every scene's key
+event, the origin):
 
 .. math::
-    x'(t') = x'_V + \\sigma\\,\\frac{s_c^2}{\\sqrt{\\rho^2 + s_c^2} + \\rho}
-             + w_i \\min(s - s_i, 0) + w_f \\max(s - s_f, 0),
+    x'(t') = X'_0 + \tanh(\theta')\,t' \quad\text{(inertial; } X'_0 = a \cosh\theta/\cosh\theta'\text{)},
 
-with ``s = t' - t'_C``, ``s_c = clip(s, s_i, s_f)``, ``s_{i,f} = sigma rho sinh(theta_{i,f} - psi)``,
-``w_{i,f} = tanh(theta_{i,f} - psi)`` and ``x'_V = x'_C + sigma rho`` the point's vertex (where
-it is at rest in the frame). The two inertial pieces are the tangents at the switch events.
-Written this way nothing subtracts nearly equal numbers: the hyperbola's rise uses
-``s^2/(sqrt(rho^2+s^2)+rho)`` instead of ``sqrt(rho^2+s^2) - rho``, and all rapidity
-differences come from :func:`relative_rapidity`.
+    x'(t') = X'_h + \sigma\,\frac{t'\,(t' - 2 t'_C)}{\sqrt{\rho^2 + (t' - t'_C)^2} + \sqrt{\rho^2 + t'^2_C}}
+    \quad\text{(hyperbola)},
+
+with ``a`` the inertial tangent's lab intercept and ``X'_h`` the hyperbola's ``t' = 0``
+crossing, each formed without cancellation (see :meth:`RigidMotion.plan`). Nothing
+subtracts nearly equal numbers: the hyperbola's rise is a product over a sum of square
+roots, and every rapidity difference comes from :func:`relative_rapidity` (double-double
+velocities). Near the origin an ultra-relativistic rod keeps its length L/γ to full
+relative precision.
 
 Material points are labelled by ``f`` in [0, 1], the fraction of the rest length from the
 rod's left end.
