@@ -1,4 +1,4 @@
-"""Born-rigid motion of one rod whose velocity changes once, evaluated in any frame.
+r"""Born-rigid motion of one rod whose velocity changes once, evaluated in any frame.
 
 Every scene of Franklin (2012) is built from one motion per rod (units c = 1):
 
