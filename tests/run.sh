@@ -15,6 +15,7 @@ python3 -m venv .venv
 .venv/bin/python -m pip install -q --disable-pip-version-check -e '.[test]'
 
 .venv/bin/ruff check .
+.venv/bin/ruff format --check .
 .venv/bin/pyright
 .venv/bin/lint-imports
 .venv/bin/python -m pytest -q "$@"

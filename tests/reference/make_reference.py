@@ -13,7 +13,10 @@ Independent of the core by construction:
   ``gamma (t - beta x(t)) = t'`` (the core never inverts anything: it evaluates closed
   forms in the frame).
 
-Floats are stored as ``float.hex`` (exact), reference values as 30-digit strings.
+The worldlines, scene solutions and frame slices live in :mod:`app.bench.reference` (also
+the run-time reference of ``rigidrel bench``); this script picks the cases, frames and
+sample times and writes the table. Floats are stored as ``float.hex`` (exact), reference
+values as 30-digit strings.
 
 Run from the repository root::
 
@@ -27,233 +30,16 @@ import json
 import random
 import sys
 import time
-from collections.abc import Callable
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import mpmath as mp
 
+from app.bench.reference import BUILDERS, F, Mp, RefScene, boost_event, frame_slice
+
 mp.mp.dps = 50
 OUT = Path(__file__).with_name("reference.json")
 FRACTIONS = (0.0, 0.375, 1.0)
-
-#: An mpmath number (mpmath ships no precise type hints).
-Mp = Any
-Worldline = Callable[[Mp], Mp]
-
-
-def F(x: float) -> Mp:
-    """A float taken as exact."""
-    return mp.mpf(float(x))
-
-
-def gamma_of(v: Mp) -> Mp:
-    return 1 / mp.sqrt(1 - v * v)
-
-
-@dataclass
-class RefScene:
-    """Reference description: per rod, a lab worldline for each material fraction."""
-
-    worldlines: list[list[Worldline]]  # [rod][fraction] -> x(t)
-    events: dict[str, tuple[Mp, Mp]]
-    final_velocities: list[Mp]
-    lengths_rest: list[Mp]
-    extra: dict[str, Mp]
-
-
-# ------------------------------------------------------------------ worldlines
-def accelerating_point(xi: Mp, alpha: Mp, V: Mp) -> Worldline:
-    """Eq. (deriv): a point at rest at xi for t <= 0, proper acceleration alpha until speed V."""
-    T = gamma_of(V) * V / alpha
-    X = xi + (gamma_of(V) - 1) / alpha
-
-    def x(t: Mp) -> Mp:
-        if t <= 0:
-            return xi
-        if t <= T:
-            return xi + (mp.sqrt(1 + alpha * alpha * t * t) - 1) / alpha
-        return X + V * (t - T)
-
-    return x
-
-
-def hyperbola_point(centre: Mp, d: Mp, side: int, v_before: Mp, v_after: Mp) -> Worldline:
-    """A point at rest-distance d from a centre event (0, centre) on side +1/-1.
-
-    Eq. (imp12): x = centre + side sqrt(d^2 + t^2) between the times where its velocity
-    is v_before and v_after; the tangent lines outside.
-    """
-
-    def t_at(v: Mp) -> Mp:  # dx/dt = side t / sqrt(d^2 + t^2) = v
-        return side * d * gamma_of(v) * v
-
-    t0, t1 = t_at(v_before), t_at(v_after)
-    x0 = centre + side * d * gamma_of(v_before)
-    x1 = centre + side * d * gamma_of(v_after)
-
-    def x(t: Mp) -> Mp:
-        if t < t0:
-            return x0 + v_before * (t - t0)
-        if t > t1:
-            return x1 + v_after * (t - t1)
-        return centre + side * mp.sqrt(d * d + t * t)
-
-    return x
-
-
-# ------------------------------------------------------------------ scenes
-def ref_constant_acceleration(v: float, length: float, a_front: float) -> RefScene:
-    V, L, aF = F(v), F(length), F(a_front)
-    aB = aF / (1 - aF * L)  # Eq. (gl)
-    wl = []
-    for f in FRACTIONS:
-        xi = F(f) * L if f != 1.0 else L
-        alpha = 1 / (xi + 1 / aB)
-        wl.append(accelerating_point(xi, alpha, V))
-    g = gamma_of(V)
-    events = {
-        "T_B": (g * V / aB, (g - 1) / aB),
-        "T_F": (g * V / aF, L + (g - 1) / aF),
-    }
-    return RefScene([wl], events, [V], [L], {"a_B": aB})
-
-
-def ref_deceleration(v: float, length: float, a_front: float) -> RefScene:
-    acc = ref_constant_acceleration(v, length, a_front)
-    wl = [[(lambda t, w=w: w(-t)) for w in acc.worldlines[0]]]
-    events = {
-        "-T_F": (-acc.events["T_F"][0], acc.events["T_F"][1]),
-        "-T_B": (-acc.events["T_B"][0], acc.events["T_B"][1]),
-    }
-    return RefScene(wl, events, [mp.mpf(0)], acc.lengths_rest, {})
-
-
-def ref_impulsive_start(v: float, length: float) -> RefScene:
-    V, L = F(v), F(length)
-    wl = []
-    for f in FRACTIONS:
-        xi = F(f) * L if f != 1.0 else L
-        wl.append(hyperbola_point(mp.mpf(0), xi, +1, mp.mpf(0), V))
-    g = gamma_of(V)
-    return RefScene([wl], {"T_F": (V * g * L, g * L)}, [V], [L], {})  # Eq. (tf)
-
-
-def ref_velocity_change(v_initial: float, v_final: float, length: float, a_front: float | None) -> RefScene:
-    Vi, Vf, L = F(v_initial), F(v_final), F(length)
-    near = mp.mpf(0) if a_front is None else (1 - F(a_front) * L) / F(a_front)
-    side = 1 if Vf > Vi else -1
-    centre = -near if side == 1 else L + near
-    wl = []
-    for f in FRACTIONS:
-        xi = F(f) * L if f != 1.0 else L
-        d = abs(xi - centre)
-        wl.append(hyperbola_point(centre, d, side, Vi, Vf))
-    near_xi, far_xi = (mp.mpf(0), L) if side == 1 else (L, mp.mpf(0))
-    events = {}
-    for name, xi in (("B", near_xi), ("F", far_xi)):
-        d = abs(xi - centre)
-        for suffix, v in (("0", Vi), ("", Vf)):
-            g = gamma_of(v)
-            events[f"T_{name}{suffix}"] = (side * d * g * v, centre + side * d * g)
-    return RefScene([wl], events, [Vf], [L], {})
-
-
-def ref_wall_collision(v: float, length: float, eps: float) -> RefScene:
-    V, L, e = F(v), F(length), F(eps)
-    # wall frame = barycentric frame of an infinitely heavy wall: gamma' V' = eps gamma V
-    p = e * gamma_of(V) * V
-    Vp = p / mp.sqrt(1 + p * p)
-    wl = []
-    for f in FRACTIONS:
-        xi = F(f) * L if f != 1.0 else L
-        wl.append(hyperbola_point(mp.mpf(0), xi, +1, -V, Vp))
-    g, gp = gamma_of(V), gamma_of(Vp)
-    events = {"T_1": (-g * V * L, g * L), "T_1'": (gp * Vp * L, gp * L)}
-    return RefScene([wl], events, [Vp], [L], {"heat": g - gp})
-
-
-def ref_collision_velocities(v1: float, v2: float, m1: float, m2: float, eps: float) -> dict[str, Mp]:
-    """Sec. 6 route: u, barycentric velocities, Eq. (epsilon), velocity addition back."""
-    V1, V2, M1, M2, e = F(v1), F(v2), F(m1), F(m2), F(eps)
-    g1, g2 = gamma_of(V1), gamma_of(V2)
-    u = (M1 * g1 * V1 + M2 * g2 * V2) / (M1 * g1 + M2 * g2)
-    Vb1 = (V1 - u) / (1 - u * V1)
-    Vb2 = (V2 - u) / (1 - u * V2)
-    out = {"u": u, "Vb1": Vb1, "Vb2": Vb2}
-    for i, Vb in ((1, Vb1), (2, Vb2)):
-        p = -e * gamma_of(Vb) * Vb  # Eq. (epsilon)
-        Vbp = p / mp.sqrt(1 + p * p)
-        out[f"Vbp{i}"] = Vbp
-        out[f"Vp{i}"] = (u + Vbp) / (1 + u * Vbp)  # Eq. (vp)
-    # rest-mass gain: energy conservation in the barycentric frame, common factor k
-    E_bar = M1 * gamma_of(Vb1) + M2 * gamma_of(Vb2)
-    k = E_bar / (M1 * gamma_of(out["Vbp1"]) + M2 * gamma_of(out["Vbp2"]))
-    out["k"] = k
-    out["heat"] = (k - 1) * (M1 + M2)
-    return out
-
-
-def ref_rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float) -> RefScene:
-    sol = ref_collision_velocities(v1, v2, m1, m2, eps)
-    V1, V2, L1, L2 = F(v1), F(v2), F(l1), F(l2)
-    Vp1, Vp2 = sol["Vp1"], sol["Vp2"]
-    rod1, rod2 = [], []
-    for f in FRACTIONS:
-        xi1 = F(f) * L1 if f != 1.0 else L1
-        xi2 = F(f) * L2 if f != 1.0 else L2
-        rod1.append(hyperbola_point(mp.mpf(0), L1 - xi1, -1, V1, Vp1))
-        rod2.append(hyperbola_point(mp.mpf(0), xi2, +1, V2, Vp2))
-    g1, g2, gp1, gp2 = gamma_of(V1), gamma_of(V2), gamma_of(Vp1), gamma_of(Vp2)
-    events = {  # Eqs. (t12), (t'1), (t'12) with x from Eq. (imp12)
-        "T_1": (-g1 * V1 * L1, -g1 * L1),
-        "T_1'": (-gp1 * Vp1 * L1, -gp1 * L1),
-        "T_2": (g2 * V2 * L2, g2 * L2),
-        "T_2'": (gp2 * Vp2 * L2, gp2 * L2),
-    }
-    return RefScene([rod1, rod2], events, [Vp1, Vp2], [L1, L2], sol)
-
-
-BUILDERS: dict[str, Callable[..., RefScene]] = {
-    "constant-acceleration": ref_constant_acceleration,
-    "deceleration": ref_deceleration,
-    "impulsive-start": ref_impulsive_start,
-    "velocity-change": ref_velocity_change,
-    "wall-collision": ref_wall_collision,
-    "rod-collision": ref_rod_collision,
-}
-
-
-# ------------------------------------------------------------------ frame slices
-def frame_slice(x: Worldline, beta: Mp, t_frame: Mp) -> Mp:
-    """x' at frame time t': bisection on lab t of gamma (t - beta x(t)) = t' (strictly increasing)."""
-    g = gamma_of(beta)
-
-    def f(t: Mp) -> Mp:
-        return g * (t - beta * x(t)) - t_frame
-
-    lo, hi = mp.mpf(-1), mp.mpf(1)
-    while f(lo) > 0:
-        lo *= 4
-    while f(hi) < 0:
-        hi *= 4
-    scale = max(abs(lo), abs(hi), mp.mpf(1))
-    tol = scale * mp.mpf(10) ** (-(mp.mp.dps - 2))
-    while hi - lo > tol:
-        mid = (lo + hi) / 2
-        if f(mid) < 0:
-            lo = mid
-        else:
-            hi = mid
-    t = (lo + hi) / 2
-    return g * (x(t) - beta * t)
-
-
-def boost_event(e: tuple[Mp, Mp], beta: Mp) -> tuple[Mp, Mp]:
-    g = gamma_of(beta)
-    t, x = e
-    return g * (t - beta * x), g * (x - beta * t)
 
 
 def s(x: Mp) -> str:
@@ -368,7 +154,7 @@ def frames_for(ref: RefScene, rng: random.Random) -> list[float]:
 def build_case(case: dict[str, object], rng: random.Random) -> dict[str, object]:
     kind = str(case["kind"])
     params: dict[str, Any] = dict(case["params"])  # type: ignore[arg-type]
-    ref = BUILDERS[kind](**params)
+    ref = BUILDERS[kind](FRACTIONS, **params)
     frames = []
     for beta_f in frames_for(ref, rng):
         beta = F(beta_f)

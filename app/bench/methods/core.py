@@ -1,0 +1,17 @@
+"""Method 1: rigidrel's closed form (the core).
+
+The scene is solved once in 60-digit decimal (final velocities as double-double), then
+every end is sampled in the frame from Lorentz-covariant closed forms (hyperbola pieces
+``x' = x'_h + sign t'(t' - 2 t'_C)/(sqrt(rho^2 + (t' - t'_C)^2) + q_0)`` and their tangents,
+see ``rigidrel_core/_motion.py``): no boost of lab coordinates, no root finding.
+"""
+
+from __future__ import annotations
+
+from ..scenes import BenchScene
+from . import FloatArray
+
+
+def positions(scene: BenchScene, frame_velocity: float, t: FloatArray) -> FloatArray:
+    """Build the core's scene and sample both ends of each rod at frame times ``t``."""
+    return scene.core().positions(t, frame_velocity)

@@ -1,0 +1,144 @@
+"""Files of a bench run: the JSON table, and the charts as HTML and PNG (kaleido + the system Chromium).
+
+The HTML files load plotly.js from its CDN (``include_plotlyjs="cdn"``): each is then a
+few hundred kB instead of 4.7 MB. The PNGs are the offline copies.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+import json
+import math
+import numbers
+import os
+import threading
+import time
+import warnings
+from pathlib import Path
+from typing import Any
+
+import plotly.graph_objects as go
+import plotly.io as pio
+
+#: Debian's Chromium; other installs are looked up the way kaleido does. Nothing is ever downloaded.
+CHROMIUM = "/usr/bin/chromium"
+#: Deadline for the browser's first figure (it starts in about 3 s on an idle machine).
+STARTUP_SECONDS = 90.0
+
+
+def find_chromium() -> str | None:
+    """``/usr/bin/chromium`` if it is there, else the Chromium or Chrome choreographer (kaleido) would find."""
+    if os.access(CHROMIUM, os.X_OK):
+        return CHROMIUM
+    from choreographer.browsers.chromium import Chromium
+
+    return Chromium.find_browser(skip_local=False)
+
+
+def plain(obj: Any) -> Any:
+    """Dataclasses, enums, tuples and numpy scalars as JSON values; non-finite floats as null."""
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        return {f.name: plain(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
+    if isinstance(obj, enum.Enum):
+        return obj.value
+    if isinstance(obj, dict):
+        return {str(plain(k)): plain(v) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [plain(v) for v in obj]
+    if isinstance(obj, bool) or obj is None or isinstance(obj, str | int):
+        return obj
+    if isinstance(obj, numbers.Real):
+        x = float(obj)
+        return x if math.isfinite(x) else None
+    raise TypeError(f"cannot write {type(obj).__name__} to JSON")
+
+
+def write_json(path: Path, data: Any) -> None:
+    path.write_text(json.dumps(plain(data), indent=1, allow_nan=False) + "\n")
+
+
+def write_html(fig: go.Figure, path: Path) -> None:
+    fig.write_html(path, include_plotlyjs="cdn", full_html=True, config={"displaylogo": False})
+
+
+class ChromiumUnavailable(RuntimeError):
+    """kaleido could not start or use a Chromium."""
+
+
+class ImageWriter:
+    """One kaleido server (one headless Chromium) for every PNG of a run; use as a context manager."""
+
+    def __init__(self) -> None:
+        self.error: str | None = None
+        self.baseline_seconds: float | None = None
+        """Best time to render an empty figure (kaleido's fixed cost per image)."""
+        self._started = False
+
+    def __enter__(self) -> ImageWriter:
+        warnings.filterwarnings("ignore", message="The kopts argument is ignored if using a server")
+        try:
+            import kaleido
+
+            browser = find_chromium()
+            if browser is None:
+                self.error = _why(FileNotFoundError("no Chromium or Chrome executable found"))
+                return self
+            kaleido.start_sync_server(path=browser, mathjax=False, n=1, timeout=120, silence_warnings=True)
+            self._started = True
+        except Exception as exc:  # kaleido raises its own error types; any failure means no PNGs
+            self.error = _why(exc)
+            return self
+        # Start the browser now (about 3 s) and time an empty figure: kaleido's own cost per image.
+        # kaleido's sync server waits forever if its browser died, so the first call gets a deadline.
+        first: list[float | None] = []
+        worker = threading.Thread(
+            target=lambda: first.append(self.render_seconds(go.Figure().to_dict(), 440, 352, repeats=5)), daemon=True
+        )
+        worker.start()
+        worker.join(STARTUP_SECONDS)
+        if worker.is_alive():
+            self.error = _why(TimeoutError(f"{browser} did not render a figure within {STARTUP_SECONDS:g} s"))
+        elif first:
+            self.baseline_seconds = first[0]
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        if self._started and self.error is None:
+            import kaleido
+
+            kaleido.stop_sync_server(silence_warnings=True)
+
+    def write_png(self, fig: go.Figure | dict[str, Any], path: Path, width: int, height: int) -> None:
+        """Render ``fig`` to ``path``; raises :class:`ChromiumUnavailable` with the reason."""
+        if self.error is not None:
+            raise ChromiumUnavailable(self.error)
+        try:
+            pio.write_image(fig, path, format="png", width=width, height=height, scale=1)
+        except Exception as exc:  # ChromeNotFoundError, BrowserFailedError, RuntimeError from plotly
+            self.error = _why(exc)
+            raise ChromiumUnavailable(self.error) from exc
+
+    def render_seconds(self, fig: dict[str, Any], width: int, height: int, repeats: int) -> float | None:
+        """Best wall time for Chromium to draw ``fig`` (plotly.js) into a PNG; None without a browser."""
+        if self.error is not None:
+            return None
+        best = float("inf")
+        try:
+            for _ in range(repeats):
+                start = time.perf_counter()
+                pio.to_image(fig, format="png", width=width, height=height, scale=1)
+                best = min(best, time.perf_counter() - start)
+        except Exception as exc:
+            self.error = _why(exc)
+            return None
+        return best
+
+
+def _why(exc: BaseException) -> str:
+    text = str(exc).strip().splitlines()
+    first = text[0] if text else type(exc).__name__
+    return (
+        f"PNG charts need Chromium or Chrome (looked for {CHROMIUM} and on PATH; nothing is downloaded): "
+        f"{type(exc).__name__}: {first}"
+    )

@@ -1,0 +1,267 @@
+"""Model no more than a panel shows: fixed-N against adaptive sampling of the app's diagrams.
+
+The app draws each curve (worldlines of five material points per rod in two Minkowski
+diagrams, each rod's equal-time length) with :mod:`app.sampling`: samples start at the
+core's switch times and an interval is halved only while its midpoint leaves the chord
+by more than half a pixel at the panel's size, over the visible time window only. The
+alternative is a fixed number ``N`` of equally spaced times per curve.
+
+For a few of the app's scenes this module rebuilds the whole drawing
+(:func:`app.drawing.build_drawing`, what every slider change costs on the server) once with
+the app's samplers and once with fixed-``N`` samplers swapped in, and records
+
+* points used: all samples of all curves of the drawing;
+* max deviation: the largest horizontal (worldlines) or vertical (lengths) distance, in
+  pixels of the panel, between a drawn polyline and the exact curve, checked at 9 points
+  inside every segment (exact values from the core);
+* redraw cost: best wall time of ``build_drawing``, the JSON bytes sent to the browser, and
+  optionally the time Chromium (through kaleido) takes to draw the three diagrams.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import time
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, replace
+from typing import Any, Literal
+from unittest import mock
+
+import numpy as np
+import numpy.typing as npt
+
+import rigidrel_core as rr
+from app import diagrams
+from app.drawing import LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX, Drawn, build_drawing
+from app.sampling import TOLERANCE_PX, Sampled, sample_lengths, sample_worldlines
+from app.settings import PRESETS, Preset, Resolved, Settings, resolve
+from rigidrel_core import SceneKind
+
+FloatArray = npt.NDArray[np.float64]
+SamplerKind = Literal["adaptive", "fixed"]
+#: Points checked inside every drawn segment (fractions 0.1 .. 0.9 of it).
+_INSIDE = np.linspace(0.0, 1.0, 11)[1:-1]
+
+
+@dataclass(frozen=True)
+class StudyScene:
+    """An app scene (as the controls set it) and its name in the charts."""
+
+    label: str
+    short: str
+    settings: Settings
+
+
+STUDY_SCENES: tuple[StudyScene, ...] = (
+    StudyScene("Fig. 1, rod's final rest frame", "Fig. 1", PRESETS[Preset.FIG1]),
+    StudyScene("Fig. 3, barycentric frame", "Fig. 3", PRESETS[Preset.FIG3]),
+    StudyScene("impulsive start to V = 0.99", "impulse V=0.99", Settings(SceneKind.IMPULSIVE_START, v=0.99)),
+    StudyScene("V = 0.9, a'_F L0 = 0.99 (near the horizon)", "a'_F L0=0.99", Settings(v=0.9, a_front_length=0.99)),
+)
+
+
+@dataclass(frozen=True)
+class _Curve:
+    """One drawn curve and how to evaluate it exactly (frame times -> panel pixels)."""
+
+    sampled: Sampled
+    exact: Callable[[FloatArray], FloatArray]
+    px_per_unit: float
+
+
+@dataclass(frozen=True)
+class SamplingPoint:
+    """One drawing of one scene with one sampler."""
+
+    sampler: SamplerKind
+    n_fixed: int | None
+    points: int
+    max_deviation_px: float
+    build_seconds: float
+    json_bytes: int
+    render_seconds: float | None = None
+    """Browser (Chromium via kaleido) time to draw the three diagrams, best of repeats, summed."""
+
+
+@dataclass(frozen=True)
+class SceneStudy:
+    """One scene drawn adaptively and with every fixed N tried (ascending)."""
+
+    label: str
+    short: str
+    adaptive: SamplingPoint
+    fixed: tuple[SamplingPoint, ...]
+
+    def fixed_at_equal_accuracy(self, tol_px: float) -> SamplingPoint:
+        """The smallest fixed N from which on every N tried draws within ``tol_px`` (a kink between grid
+        points makes the deviation jump about with N), else the largest N tried."""
+        for i, p in enumerate(self.fixed):
+            if all(q.max_deviation_px <= tol_px for q in self.fixed[i:]):
+                return p
+        return self.fixed[-1]
+
+
+def _fixed_times(t_range: tuple[float, float], n: int) -> FloatArray:
+    return np.linspace(t_range[0], t_range[1], n)
+
+
+def _fixed_worldlines(n: int) -> Callable[..., list[list[Sampled]]]:
+    def sampler(
+        scene: rr.Scene,
+        frame: rr.Frame,
+        fractions: FloatArray,
+        t_range: tuple[float, float],
+        px_per_x: float,
+        tol_px: float = TOLERANCE_PX,
+    ) -> list[list[Sampled]]:
+        t = _fixed_times(t_range, n)
+        x = scene.material_positions(fractions, t, frame)
+        return [[Sampled(t, x[r, k]) for k in range(fractions.size)] for r in range(scene.n_rods)]
+
+    return sampler
+
+
+def _fixed_lengths(n: int) -> Callable[..., list[Sampled]]:
+    def sampler(
+        scene: rr.Scene,
+        frame: rr.Frame,
+        t_range: tuple[float, float],
+        px_per_length: float,
+        tol_px: float = TOLERANCE_PX,
+    ) -> list[Sampled]:
+        t = _fixed_times(t_range, n)
+        lengths = scene.lengths(t, frame)
+        return [Sampled(t, lengths[r]) for r in range(scene.n_rods)]
+
+    return sampler
+
+
+@contextlib.contextmanager
+def _samplers(kind: SamplerKind, n: int, curves: list[_Curve] | None) -> Iterator[None]:
+    """Swap the diagram builders' samplers (fixed N, or the app's own) and record what they draw."""
+    worldlines = sample_worldlines if kind == "adaptive" else _fixed_worldlines(n)
+    lengths = sample_lengths if kind == "adaptive" else _fixed_lengths(n)
+
+    def recorded_worldlines(
+        scene: rr.Scene, frame: rr.Frame, fractions: FloatArray, t_range: tuple[float, float], px_per_x: float
+    ) -> list[list[Sampled]]:
+        out = worldlines(scene, frame, fractions, t_range, px_per_x)
+        if curves is not None:
+            for r, rod in enumerate(out):
+                for k, s in enumerate(rod):
+                    exact = _worldline_exact(scene, frame, float(fractions[k]), r)
+                    curves.append(_Curve(s, exact, px_per_x))
+        return out
+
+    def recorded_lengths(
+        scene: rr.Scene, frame: rr.Frame, t_range: tuple[float, float], px_per_length: float
+    ) -> list[Sampled]:
+        out = lengths(scene, frame, t_range, px_per_length)
+        if curves is not None:
+            for r, s in enumerate(out):
+                curves.append(_Curve(s, _length_exact(scene, frame, r), px_per_length))
+        return out
+
+    with (
+        mock.patch.object(diagrams, "sample_worldlines", recorded_worldlines),
+        mock.patch.object(diagrams, "sample_lengths", recorded_lengths),
+    ):
+        yield
+
+
+def _worldline_exact(scene: rr.Scene, frame: rr.Frame, fraction: float, rod: int) -> Callable[[FloatArray], FloatArray]:
+    return lambda t: scene.material_positions(np.array([fraction]), t, frame)[rod, 0]
+
+
+def _length_exact(scene: rr.Scene, frame: rr.Frame, rod: int) -> Callable[[FloatArray], FloatArray]:
+    return lambda t: scene.lengths(t, frame)[rod]
+
+
+def max_deviation_px(curve: _Curve) -> float:
+    """Largest distance (pixels) between the polyline and the exact curve inside its segments."""
+    t, x = curve.sampled.t, curve.sampled.x
+    if t.size < 2:
+        return 0.0
+    dt = np.diff(t)[:, None]
+    inside_t = t[:-1, None] + dt * _INSIDE
+    chord = x[:-1, None] + np.diff(x)[:, None] * _INSIDE
+    exact = curve.exact(inside_t.ravel()).reshape(inside_t.shape)
+    return float(np.max(np.abs(exact - chord)) * curve.px_per_unit)
+
+
+def _json_bytes(d: Drawn) -> int:
+    return sum(len(c.to_json()) for c in (d.lab_chart, d.frame_chart, d.length_chart))
+
+
+def drawing(resolved: Resolved, kind: SamplerKind, n: int) -> Drawn:
+    """The app's drawing of a scene, with the app's samplers or fixed-N ones."""
+    with _samplers(kind, n, None):
+        return build_drawing(resolved)
+
+
+def measure(resolved: Resolved, kind: SamplerKind, n: int, repeats: int) -> SamplingPoint:
+    """Points, deviation, best build time and payload of one drawing."""
+    curves: list[_Curve] = []
+    with _samplers(kind, n, curves):
+        drawn = build_drawing(resolved)
+    best = float("inf")
+    with _samplers(kind, n, None):
+        for _ in range(repeats):
+            start = time.perf_counter()
+            build_drawing(resolved)
+            best = min(best, time.perf_counter() - start)
+    return SamplingPoint(
+        sampler=kind,
+        n_fixed=None if kind == "adaptive" else n,
+        points=sum(c.sampled.t.size for c in curves),
+        max_deviation_px=max(max_deviation_px(c) for c in curves),
+        build_seconds=best,
+        json_bytes=_json_bytes(drawn),
+    )
+
+
+#: ``render(figure dict, width, height) -> seconds`` (None without a browser): the browser's time
+#: to draw a figure.
+Renderer = Callable[[dict[str, Any], int, int], float | None]
+
+
+def _with_render(resolved: Resolved, point: SamplingPoint, render: Renderer) -> SamplingPoint:
+    """Add the browser's time to draw all three diagrams of the drawing (each at its panel size)."""
+    drawn = drawing(resolved, point.sampler, point.n_fixed or 0)
+    width = int(PLOT_PANEL_PX)
+    total = 0.0
+    for chart, aspect in (
+        (drawn.lab_chart, PLOT_ASPECT),
+        (drawn.frame_chart, PLOT_ASPECT),
+        (drawn.length_chart, LENGTH_ASPECT),
+    ):
+        seconds = render(json.loads(chart.to_json()), width, int(width * aspect))
+        if seconds is None:
+            return point
+        total += seconds
+    return replace(point, render_seconds=total)
+
+
+def run_study(
+    fixed_counts: Sequence[int],
+    repeats: int,
+    render: Renderer | None = None,
+    scenes: Sequence[StudyScene] = STUDY_SCENES,
+) -> list[SceneStudy]:
+    """Adaptive and every fixed N for each scene; with ``render``, also the browser's time to draw
+    the frame diagram for adaptive, fixed N at equal accuracy and the largest fixed N."""
+    out = []
+    for scene in scenes:
+        resolved = resolve(scene.settings)
+        if not isinstance(resolved, Resolved):
+            raise ValueError(f"study scene {scene.label!r}: {resolved}")
+        adaptive = measure(resolved, "adaptive", 0, repeats)
+        fixed = tuple(measure(resolved, "fixed", n, repeats) for n in fixed_counts)
+        study = SceneStudy(scene.label, scene.short, adaptive, fixed)
+        if render is not None:
+            equal = study.fixed_at_equal_accuracy(TOLERANCE_PX)
+            fixed = tuple(_with_render(resolved, p, render) if p in (equal, fixed[-1]) else p for p in fixed)
+            study = SceneStudy(scene.label, scene.short, _with_render(resolved, adaptive, render), fixed)
+        out.append(study)
+    return out

@@ -1,0 +1,106 @@
+"""``rigidrel bench``: a reduced run writes the JSON table and readable charts; bad --out is one line, status 2.
+
+The smoke run goes through every stage of ``--quick`` (table, cost-per-sample curves,
+stability maps, sampling study, HTML and PNG charts) with the smallest settings. PNGs need
+Chromium through kaleido: if it cannot start, this test fails and says why.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from app.bench.cli import run
+from app.bench.config import SMOKE
+from app.bench.methods import MethodName
+from app.bench.scenes import Regime
+
+ROOT = Path(__file__).resolve().parents[1]
+CHARTS = ("speed_accuracy", "stability_maps", "sampling", "throughput")
+
+
+@pytest.fixture(scope="module")
+def smoke(tmp_path_factory: pytest.TempPathFactory) -> tuple[int, Path, dict[str, Any]]:
+    out = tmp_path_factory.mktemp("bench") / "out"
+    code = run(SMOKE, str(out))
+    data = json.loads((out / "bench.json").read_text())
+    return code, out, data
+
+
+def test_smoke_run_renders_pngs(smoke: tuple[int, Path, dict[str, Any]]) -> None:
+    code, _, data = smoke
+    if data["png_error"] is not None:
+        pytest.fail(f"PNG charts were not rendered: {data['png_error']}")
+    assert code == 0
+
+
+def test_json_table_schema(smoke: tuple[int, Path, dict[str, Any]]) -> None:
+    _, _, data = smoke
+    assert data["schema"] == "rigidrel-bench/1"
+    assert data["run"] == "smoke"
+    rows = data["table"]
+    assert {r["method"] for r in rows} == {m.value for m in MethodName}
+    assert {r["regime"] for r in rows} == {r.value for r in Regime}
+    for r in rows:
+        assert set(r) >= {"method", "setting", "regime", "seconds_per_sample", "max_error", "samples", "failures"}
+        assert r["seconds_per_sample"] > 0.0
+        if r["max_error"] is None:
+            assert r["failures"], r
+        else:
+            assert r["max_error"] >= 0.0
+    core = [r for r in rows if r["method"] == MethodName.CORE.value]
+    assert core and all(r["max_error"] is not None and r["max_error"] <= 1e-12 for r in core)
+    maps = data["stability"]["map"]
+    n_beta, n_v = len(maps["frame_velocities"]), len(maps["velocities"])
+    for grid in maps["errors"].values():
+        assert len(grid) == n_beta and all(len(row) == n_v for row in grid)
+    study = data["sampling"][0]
+    assert study["adaptive"]["max_deviation_px"] <= 0.5 + 1e-9
+    assert study["adaptive"]["points"] < study["fixed"][-1]["points"]
+    assert {p["series"] for p in data["throughput"]["points"]} >= {"rigidrel core", "textbook float64"}
+
+
+@pytest.mark.parametrize("name", CHARTS)
+def test_chart_files_exist_and_pngs_are_not_blank(smoke: tuple[int, Path, dict[str, Any]], name: str) -> None:
+    _, out, data = smoke
+    html = (out / f"{name}.html").read_text()
+    assert "plotly" in html and len(html) > 2000
+    if data["png_error"] is not None:
+        pytest.fail(f"PNG charts were not rendered: {data['png_error']}")
+    img = np.asarray(Image.open(out / f"{name}.png").convert("L"), dtype=float)
+    assert img.shape[0] >= 400 and img.shape[1] >= 800
+    ink = (img < 200).mean()
+    assert 0.01 < ink < 0.9, f"{name}.png: {ink:.1%} of the pixels are dark"
+    assert img.std() > 20.0
+
+
+def _bench(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "app.cli", "bench", *args], cwd=ROOT, capture_output=True, text=True, timeout=120
+    )
+
+
+@pytest.mark.parametrize("where", ["file", "under-a-file"])
+def test_bad_out_is_one_line_and_exit_status_2(tmp_path: Path, where: str) -> None:
+    a_file = tmp_path / "a-file"
+    a_file.write_text("not a folder")
+    out = a_file if where == "file" else a_file / "sub"
+    proc = _bench("--quick", "--out", str(out))
+    assert proc.returncode == 2
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1, proc.stderr
+    assert "--out" in lines[0] and "Traceback" not in proc.stderr
+    assert proc.stdout == ""
+
+
+def test_missing_out_is_a_usage_error() -> None:
+    proc = _bench("--quick")
+    assert proc.returncode == 2
+    assert "--out" in proc.stderr and "Traceback" not in proc.stderr
