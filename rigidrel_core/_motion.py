@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Literal
 
@@ -82,82 +83,83 @@ class RigidMotion:
     velocity_initial: ExactVelocity
     velocity_final: ExactVelocity
 
-    def radii(self, fractions: FloatArray) -> FloatArray:
-        """``rho(f) = rho_left + sign * f * L``; the ends use their stored radii."""
-        rho = self.radius_left + self.sign * (fractions * self.length)
-        rho = np.where(fractions == 1.0, self.radius_right, rho)
-        return np.where(fractions == 0.0, self.radius_left, rho)
-
     def plan(self, frame: Frame, fractions: FloatArray) -> MotionPlan:
-        """Per-frame constants for the material points ``fractions`` (see module docstring).
+        """Per-frame constants for the material points ``fractions`` (see :func:`plan_motions`)."""
+        return plan_motions((self,), frame, fractions)
 
-        Every piece is anchored where it crosses the frame's ``t' = 0`` line, the line
-        through the scene's key event (the origin). Inertial piece of lab velocity ``v``:
-        ``x' = X_0' + tanh(theta') t'`` with ``X_0' = a cosh(theta) / cosh(theta')`` and ``a``
-        the lab intercept at ``t = 0``. Hyperbola: ``x' = X_h + sign t'(t' - 2 t'_C) / (q + q_0)``
-        with ``q = sqrt(rho^2 + (t' - t'_C)^2)``, ``q_0 = sqrt(rho^2 + t'_C^2)`` and ``X_h`` its
-        ``t' = 0`` crossing. Each constant is formed without cancellation.
-        """
-        sh = frame.sinh_rapidity()
-        chm1 = frame.cosh_rapidity_minus_one()
-        ch = 1.0 + chm1
-        th_i = relative_rapidity(self.velocity_initial, frame.velocity)
-        th_f = relative_rapidity(self.velocity_final, frame.velocity)
-        sig = float(self.sign)
-        xc = self.horizon_x
-        rho = self.radii(fractions)
-        x_vertex_lab = self.vertex_left + fractions * self.length
-        x_vertex_lab = np.where(fractions == 1.0, self.vertex_left + self.length, x_vertex_lab)
-        # centre event in the frame (lab t_C = 0)
+
+def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatArray) -> MotionPlan:
+    """Per-frame constants of every rod's material points ``fractions`` (rows: rod-major).
+
+    Every piece is anchored where it crosses the frame's ``t' = 0`` line, the line through
+    the scene's key event (the origin). Inertial piece of lab velocity ``v``:
+    ``x' = X_0' + tanh(theta') t'`` with ``X_0' = a cosh(theta) / cosh(theta')`` and ``a`` the
+    lab intercept at ``t = 0``: ``a = x_C + sign rho / gamma`` (the tangent's distance from
+    the centre, contracted) or, when the centre lies on the other side,
+    ``a = x_V - sign rho (gamma - 1)/gamma`` with ``gamma - 1 = (gamma v)^2 / (gamma + 1)``.
+    Hyperbola: ``x' = X_h + sign t'(t' - 2 t'_C) / (q + q_0)`` with
+    ``q = sqrt(rho^2 + (t' - t'_C)^2)``, ``q_0 = sqrt(rho^2 + t'_C^2)`` and ``X_h`` its ``t' = 0``
+    crossing ``x'_C + sign q_0``, or, when those two cancel, ``x_V (x_C - sign rho)/(x'_C - sign q_0)``
+    (the product of the quadratic's roots). One broadcast pass over rods x fractions.
+    """
+    sh = frame.sinh_rapidity()
+    chm1 = frame.cosh_rapidity_minus_one()
+    ch = 1.0 + chm1
+    fs = fractions.tolist()
+    rows: list[tuple[float, ...]] = []
+    # Plans have few rows (2 per rod for the ends, 11 for the ticks): float arithmetic on
+    # Python floats is many times cheaper here than numpy calls on tiny arrays.
+    for m in motions:
+        th_i = relative_rapidity(m.velocity_initial, frame.velocity)
+        th_f = relative_rapidity(m.velocity_final, frame.velocity)
+        sig, xc, length = float(m.sign), m.horizon_x, m.length
+        sinh_i, sinh_f = math.sinh(th_i), math.sinh(th_f)
+        w_i, w_f = math.tanh(th_i), math.tanh(th_f)
         t_c = -xc * sh
         x_c = xc * ch
-        # vertex (rest point in the frame): x'_V = x'_C + sign rho = x_V + x_C (cosh psi - 1)
-        x_vertex = x_vertex_lab + xc * chm1
-        q0 = np.hypot(rho, t_c)
-        if sig * x_c >= 0.0:  # same signs: the direct sum does not cancel
-            x_hyp = x_c + sig * q0
-        else:  # product of the two roots is x_C^2 - rho^2 = x_V (x_C - sign rho)
-            x_hyp = x_vertex_lab * (xc - sig * rho) / (x_c - sig * q0)
-        s_i = sig * rho * math.sinh(th_i)
-        s_f = sig * rho * math.sinh(th_f)
-        return MotionPlan(
-            sign=np.full_like(rho, sig),
-            radius=rho,
-            t_vertex=np.full_like(rho, t_c),
-            x_vertex=x_vertex,
-            q0=np.where((rho > 0.0) | (q0 > 0.0), q0, _TINY),
-            x_hyp=x_hyp,
-            s_start=s_i,
-            s_stop=s_f,
-            t_start=t_c + s_i,
-            t_stop=t_c + s_f,
-            x0_start=self._frame_intercept(self.velocity_initial, th_i, rho, x_vertex_lab),
-            x0_stop=self._frame_intercept(self.velocity_final, th_f, rho, x_vertex_lab),
-            w_start=np.full_like(rho, math.tanh(th_i)),
-            w_stop=np.full_like(rho, math.tanh(th_f)),
-            rapidity_start=np.full_like(rho, th_i),
-            rapidity_stop=np.full_like(rho, th_f),
-        )
-
-    def _frame_intercept(
-        self, v: ExactVelocity, theta_rel: float, rho: FloatArray, x_vertex_lab: FloatArray
-    ) -> FloatArray:
-        """``X_0'``: where the inertial tangent of velocity ``v`` crosses the frame's ``t' = 0``.
-
-        The lab line ``x = a + v t`` meets ``t' = 0`` at ``x' = a / (gamma_psi (1 - v beta))
-        = a cosh(theta) / cosh(theta')``. Its lab intercept is ``a = x_C + sign rho / gamma``
-        (the tangent's distance from the centre, contracted), or, when the centre lies on
-        the other side, ``a = x_V - sign rho (gamma - 1)/gamma`` with
-        ``gamma - 1 = (gamma v)^2/(gamma + 1)``.
-        """
-        gamma = v.lorentz_factor()
-        sig = float(self.sign)
-        if sig * self.horizon_x >= 0.0:
-            a = self.horizon_x + sig * rho / gamma
-        else:
-            u = v.proper_velocity()
-            a = x_vertex_lab - sig * rho * (u * u / ((gamma + 1.0) * gamma))
-        return a * (gamma / math.cosh(theta_rel))
+        same_side = sig * x_c >= 0.0  # the direct sum x'_C + sign q_0 does not cancel
+        centre_side = sig * xc >= 0.0  # the direct sum x_C + sign rho / gamma does not cancel
+        ends = []
+        for v, th in ((m.velocity_initial, th_i), (m.velocity_final, th_f)):
+            g, u = v.lorentz_factor(), v.proper_velocity()
+            ends.append((g, u * u / ((g + 1.0) * g), g / math.cosh(th)))
+        (g_i, k_i, c_i), (g_f, k_f, c_f) = ends
+        for f in fs:
+            if f == 0.0:
+                rho, x_lab = m.radius_left, m.vertex_left
+            elif f == 1.0:
+                rho, x_lab = m.radius_right, m.vertex_left + length
+            else:
+                rho, x_lab = m.radius_left + sig * (f * length), m.vertex_left + f * length
+            q0 = math.hypot(rho, t_c)
+            x_hyp = x_c + sig * q0 if same_side else x_lab * (xc - sig * rho) / (x_c - sig * q0)
+            if centre_side:
+                a_i, a_f = xc + sig * rho / g_i, xc + sig * rho / g_f
+            else:
+                a_i, a_f = x_lab - sig * rho * k_i, x_lab - sig * rho * k_f
+            s_i, s_f = sig * rho * sinh_i, sig * rho * sinh_f
+            rows.append(
+                (
+                    sig,
+                    rho,
+                    t_c,
+                    x_lab + xc * chm1,
+                    q0 if (rho > 0.0 or q0 > 0.0) else _TINY,
+                    x_hyp,
+                    s_i,
+                    s_f,
+                    t_c + s_i,
+                    t_c + s_f,
+                    a_i * c_i,
+                    w_i,
+                    a_f * c_f,
+                    w_f,
+                    th_i,
+                    th_f,
+                )
+            )
+    table = np.array(rows, dtype=np.float64).reshape(-1, len(_PLAN_FIELDS)).T
+    return MotionPlan(**dict(zip(_PLAN_FIELDS, table, strict=True)))
 
 
 @dataclass(frozen=True)
@@ -185,11 +187,6 @@ class MotionPlan:
     w_stop: FloatArray
     rapidity_start: FloatArray
     rapidity_stop: FloatArray
-
-    @staticmethod
-    def concatenate(plans: list[MotionPlan]) -> MotionPlan:
-        fields = MotionPlan.__dataclass_fields__
-        return MotionPlan(**{k: np.concatenate([getattr(p, k) for p in plans]) for k in fields})
 
     def column(self, name: str) -> FloatArray:
         return getattr(self, name)[:, None]
@@ -326,3 +323,7 @@ class MotionPlan:
             rise = self.sign * 2.0 * self.radius * np.sinh(0.5 * getattr(self, th_key)) ** 2
             out.append(np.stack([getattr(self, t_key), self.x_vertex + rise], axis=-1))
         return out[0], out[1]
+
+
+#: MotionPlan's fields in declaration order (the columns ``plan_motions`` fills).
+_PLAN_FIELDS = tuple(MotionPlan.__dataclass_fields__)

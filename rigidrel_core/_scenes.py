@@ -31,7 +31,7 @@ from ._exact import (
     relative_rapidity,
     velocity_from_proper_velocity,
 )
-from ._motion import MotionPlan, RigidMotion
+from ._motion import MotionPlan, RigidMotion, plan_motions
 from ._validate import (
     ParameterError,
     check_fractions,
@@ -136,7 +136,7 @@ class Scene:
         plan = self._plans.get(key)
         if plan is None:
             rods = self.rods if rod is None else (self.rods[rod],)
-            plan = MotionPlan.concatenate([r.motion.plan(frame, fractions) for r in rods])
+            plan = plan_motions([r.motion for r in rods], frame, fractions)
             if len(self._plans) >= _MAX_CACHED_PLANS:
                 self._plans.clear()
             self._plans[key] = plan
@@ -287,7 +287,11 @@ def _rigid_motion(
 ) -> RigidMotion:
     """Born-rigid change ``v_initial -> v_final``; at lab t = 0 the (extended) family is at rest on
     ``[vertex_left, vertex_left + length]``; the end nearest the centre is ``rho_near`` from it."""
-    sign: Literal[1, -1] = 1 if v_final.as_decimal() > v_initial.as_decimal() else -1
+    sign: Literal[1, -1] = 1 if (v_final.hi, v_final.lo) > (v_initial.hi, v_initial.lo) else -1
+    if rho_near == 0:  # an impulse: single float operations, each correctly rounded, suffice
+        horizon_f = vertex_left if sign == 1 else vertex_left + length
+        r_left_f, r_right_f = (0.0, length) if sign == 1 else (length, 0.0)
+        return RigidMotion(length, sign, horizon_f, r_left_f, r_right_f, vertex_left, v_initial, v_final)
     with _ctx():
         L = Decimal(length)
         near = rho_near
@@ -562,11 +566,22 @@ class CollisionSolution:
     """
 
     u: ExactVelocity
-    bar_before: tuple[ExactVelocity, ExactVelocity]
-    bar_after: tuple[ExactVelocity, ExactVelocity]
+    bar_proper_before: tuple[Decimal, Decimal]
+    """Barycentric proper velocities ``gamma v`` before (60 digits)."""
+    bar_proper_after: tuple[Decimal, Decimal]
     after: tuple[ExactVelocity, ExactVelocity]
     mass_factor: Decimal
     heat: Decimal
+
+    @property
+    def bar_before(self) -> tuple[ExactVelocity, ExactVelocity]:
+        a, b = self.bar_proper_before
+        return velocity_from_proper_velocity(a), velocity_from_proper_velocity(b)
+
+    @property
+    def bar_after(self) -> tuple[ExactVelocity, ExactVelocity]:
+        a, b = self.bar_proper_after
+        return velocity_from_proper_velocity(a), velocity_from_proper_velocity(b)
 
 
 def _cancelled_sum(a: Decimal, b: Decimal) -> Decimal:
@@ -618,11 +633,8 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         u_exact = ExactVelocity(u_hi, float(u - Decimal(u_hi)), float(u_gap))
         return CollisionSolution(
             u=u_exact,
-            bar_before=(velocity_from_proper_velocity(bar_u[0]), velocity_from_proper_velocity(bar_u[1])),
-            bar_after=(
-                velocity_from_proper_velocity(bar_u_after[0]),
-                velocity_from_proper_velocity(bar_u_after[1]),
-            ),
+            bar_proper_before=bar_u,
+            bar_proper_after=bar_u_after,
             after=(velocity_from_proper_velocity(lab_u_after[0]), velocity_from_proper_velocity(lab_u_after[1])),
             mass_factor=factor,
             heat=heat,
