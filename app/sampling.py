@@ -41,39 +41,52 @@ def refine(
 
     ``evaluate(t)`` returns every curve's value at times ``t``: shape ``(n_curves, t.size)``.
     ``knots[i]`` are curve ``i``'s starting samples (sorted, unique). An interval is split
-    while its midpoint deviates from the chord by more than ``tol`` (value units).
+    while its midpoint deviates from the chord by more than ``tol`` (value units); an
+    interval once accepted is not tested again, so each round evaluates only new midpoints.
     """
     n = len(knots)
     all_t = np.unique(np.concatenate(knots))
     values_all = evaluate(all_t)
     ts = list(knots)
     xs = [values_all[i, np.searchsorted(all_t, ts[i])] for i in range(n)]
+    pending = [np.ones(t.size - 1, dtype=bool) for t in ts]  # intervals not yet accepted
     span = float(all_t[-1] - all_t[0]) if all_t.size > 1 else 1.0
     for _ in range(MAX_DEPTH):
-        mids = [0.5 * (t[:-1] + t[1:]) for t in ts]
+        mids = [0.5 * (t[:-1] + t[1:])[p] for t, p in zip(ts, pending, strict=True)]
         stacked = np.unique(np.concatenate(mids))
         if stacked.size == 0:
             break
         vm = evaluate(stacked)
-        refined = False
         for i in range(n):
-            t, x, m = ts[i], xs[i], mids[i]
+            if not pending[i].any():
+                continue
+            t, x, p = ts[i], xs[i], pending[i]
+            k = np.flatnonzero(p)  # the tested intervals
+            m = mids[i]
             xm = vm[i, np.searchsorted(stacked, m)]
-            bad = (np.abs(xm - 0.5 * (x[:-1] + x[1:])) > tol) & ((t[1:] - t[:-1]) > 1e-12 * span)
-            if bad.any():
-                refined = True
-                at = np.flatnonzero(bad) + 1
-                ts[i] = np.insert(t, at, m[bad])
-                xs[i] = np.insert(x, at, xm[bad])
-        if not refined:
-            break
+            chord = 0.5 * (x[k] + x[k + 1])
+            bad = (np.abs(xm - chord) > tol) & ((t[k + 1] - t[k]) > 1e-12 * span)
+            split = k[bad]
+            # accepted intervals stay, split ones become two pending halves
+            new_pending = np.zeros(t.size - 1, dtype=bool)
+            new_pending[split] = True
+            ts[i] = np.insert(t, split + 1, m[bad])
+            xs[i] = np.insert(x, split + 1, xm[bad])
+            pending[i] = np.insert(new_pending, split + 1, True)
     return [Sampled(t, x) for t, x in zip(ts, xs, strict=True)]
 
 
+#: A curved piece starts as this many equal intervals (saves the first rounds of halving).
+SEED_INTERVALS = 8
+
+
 def _knots(switches: FloatArray, t_range: tuple[float, float]) -> FloatArray:
+    """Start and end of the range, the switch times inside it, and a seed grid on the curved piece."""
     t0, t1 = t_range
     inner = switches[(switches > t0) & (switches < t1)]
-    return np.unique(np.concatenate([[t0, t1], inner]))
+    lo, hi = max(t0, float(switches.min())), min(t1, float(switches.max()))
+    seed = np.linspace(lo, hi, SEED_INTERVALS + 1) if hi > lo else np.empty(0)
+    return np.unique(np.concatenate([[t0, t1], inner, seed]))
 
 
 def sample_worldlines(
