@@ -250,7 +250,7 @@ class Session:
             chosen = Preset(label)
             if chosen is not Preset.NONE:
                 with self.lock:
-                    self._try(replace(PRESETS[chosen], frame=self.settings.frame), refit=True)
+                    self._try(replace(PRESETS[chosen], frame=self.settings.frame))
 
         on_user(self.preset, preset)
 
@@ -350,10 +350,11 @@ class Session:
     def change(self, field: str, value: object) -> None:
         """A control moved: try the new settings; on failure keep the scene and explain."""
         with self.lock:
-            refit = field in ("scene", "frame")
-            self._try(with_value(self.settings, field, value), refit=refit)
+            self._try(with_value(self.settings, field, value))
 
-    def _try(self, new: Settings, refit: bool = False) -> None:
+    def _try(self, new: Settings, refit: bool | None = None) -> None:
+        """Apply ``new`` if it makes a scene; else show why. The camera refits if ``refit``,
+        or, when that is None, if "Auto-fit view" is on."""
         resolved = resolve(new)
         self.settings = new
         if isinstance(resolved, str):
@@ -362,7 +363,7 @@ class Session:
         self._set_notice("")
         with self.client.atomic():
             self._sync_controls()
-            self._apply(resolved, refit=refit or self.fit_cb.value)
+            self._apply(resolved, refit=self.fit_cb.value if refit is None else refit)
 
     def _set_notice(self, text: str) -> None:
         self._notice = text
