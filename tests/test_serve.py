@@ -104,30 +104,32 @@ def test_bad_serve_arguments(args: list[str]) -> None:
 def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
     """SIGINT/SIGTERM while tabs are playing and one stopped reading: exit 0, no traceback, in time."""
     import asyncio
+    import threading
 
     from tests.viser_client import LightClient
 
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        proc, url, _ = start("-m", "app.cli", "serve", "--port", str(free_port()))
-
-        async def clients(url: str = url) -> list[LightClient]:
-            cs = [LightClient(url) for _ in range(3)] + [LightClient(url, read=False)]
-            await asyncio.gather(*(c.connect() for c in cs))
-            return cs
-
-        loop = asyncio.new_event_loop()
-        try:
-            cs = loop.run_until_complete(clients())
-            readers = [loop.create_task(c.run(30)) for c in cs]
-            loop.run_until_complete(asyncio.sleep(2.0))
+    # the clients' event loop runs in its own thread (pytest may already run one here: playwright's)
+    loop = asyncio.new_event_loop()
+    thread = threading.Thread(target=loop.run_forever, daemon=True)
+    thread.start()
+    try:
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            proc, url, _ = start("-m", "app.cli", "serve", "--port", str(free_port()))
+            clients = [LightClient(url) for _ in range(3)] + [LightClient(url, read=False)]
+            for c in clients:
+                asyncio.run_coroutine_threadsafe(c.connect(), loop).result(30)
+            readers = [asyncio.run_coroutine_threadsafe(c.run(30), loop) for c in clients]
+            time.sleep(2.0)
             t0 = time.monotonic()
             out = stop(proc, sig)
             took = time.monotonic() - t0
-            for c in cs:
+            for c in clients:
                 c.stop()
-            loop.run_until_complete(asyncio.gather(*readers, return_exceptions=True))
-        finally:
-            loop.close()
-        assert proc.returncode == 0, out
-        assert "Traceback" not in out and "Error" not in out.replace("rigidrel: dropped", ""), out
-        assert took < 15.0
+            for r in readers:
+                r.result(30)
+            assert proc.returncode == 0, out
+            assert "Traceback" not in out and "Error" not in out.replace("rigidrel: dropped", ""), out
+            assert took < 15.0
+    finally:
+        loop.call_soon_threadsafe(loop.stop)
+        thread.join(timeout=5)

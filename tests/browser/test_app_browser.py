@@ -15,9 +15,11 @@ from typing import Any
 
 import numpy as np
 import pytest
+from PIL import Image
 
 import rigidrel_core as rr
 from app import camera as cam
+from app.draw import ROD_COLORS
 from app.drawing import FRAME_Z, LAB_Z
 from app.lanes import lane_geometry
 from app.server import App
@@ -101,8 +103,6 @@ class AppPage:
         )
 
     def canvas(self) -> np.ndarray:
-        from PIL import Image
-
         png = self.page.locator("canvas[data-engine]").screenshot()
         return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
 
@@ -242,10 +242,25 @@ def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) 
     tab.page.screenshot(path=str(shots / "frame_rod2_after.png"))
     h, w = img0.shape[:2]
     top = int(cam.project(np.array([[0.0, 0.0, 0.5 * (LAB_Z + FRAME_Z)]]), pose, w, h)[0, 1])
-    upper_changed = (np.abs(img1[:top] - img0[:top]).sum(axis=-1) > 60).mean()
-    lower_changed = (np.abs(img1[top:] - img0[top:]).sum(axis=-1) > 60).mean()
-    assert upper_changed < 0.002, upper_changed
-    assert lower_changed > 0.002, lower_changed
+    Image.fromarray(img0.astype(np.uint8)).save(shots / "canvas_before.png")
+    Image.fromarray(img1.astype(np.uint8)).save(shots / "canvas_after.png")
+    # Compare where the rods are drawn, not raw pixels: swiftshader may re-rasterise
+    # an unchanged lane one pixel over (antialiasing of the stripes and labels).
+    before_lab, before_frame = rod_extents(img0[:top]), rod_extents(img0[top:])
+    after_lab, after_frame = rod_extents(img1[:top]), rod_extents(img1[top:])
+    assert np.abs(after_lab - before_lab).max() <= 3, (before_lab, after_lab)
+    assert np.abs(after_frame - before_frame).max() >= 8, (before_frame, after_frame)
+
+
+def rod_extents(img: np.ndarray) -> np.ndarray:
+    """Leftmost and rightmost pixel column of each rod colour, shape (rods, 2)."""
+    out = []
+    for color in ROD_COLORS:
+        rgb = np.array([int(color[i : i + 2], 16) for i in (1, 3, 5)], dtype=float)
+        columns = np.nonzero((np.abs(img - rgb).sum(axis=-1) < 60).any(axis=0))[0]
+        assert columns.size, f"no pixel of rod colour {color}"
+        out.append((columns.min(), columns.max()))
+    return np.array(out)
 
 
 def test_plotly_panels_carry_traces_and_event_labels(tab: AppPage) -> None:
