@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from app.bench.paper import textbook_collision, textbook_gamma
 from tests.test_accuracy import CASES, build
 
 #: The core holds this (relative) ...
@@ -29,23 +30,6 @@ def find_case(kind: str, **params: float) -> dict[str, Any]:
         if c["kind"] == kind and all(p.get(k) == v for k, v in params.items()):
             return c
     raise LookupError((kind, params))
-
-
-def textbook_gamma(v: float) -> float:
-    return 1.0 / math.sqrt(1.0 - v * v)
-
-
-def textbook_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> tuple[float, float]:
-    """Sec. 6 as printed: u, barycentric velocities, Eq. (epsilon), Eq. (vp)."""
-    g1, g2 = textbook_gamma(v1), textbook_gamma(v2)
-    u = (m1 * g1 * v1 + m2 * g2 * v2) / (m1 * g1 + m2 * g2)
-    out = []
-    for v in (v1, v2):
-        vb = (v - u) / (1 - u * v)
-        p = -eps * textbook_gamma(vb) * vb
-        vbp = p / math.sqrt(1 + p * p)
-        out.append((u + vbp) / (1 + u * vbp))
-    return out[0], out[1]
 
 
 def test_equal_masses_rod_one_stops_but_not_in_textbook_floats() -> None:
