@@ -38,6 +38,18 @@ def _style(series: str) -> tuple[str, str]:
     return SERIES_STYLE.get(series, ("#444444", "circle"))
 
 
+def _frame_axes(fig: go.Figure, title: str) -> None:
+    """The house style of every chart: boxed light-grid axes, white paper, a left title."""
+    fig.update_xaxes(gridcolor="#e6e6e6", linecolor="#999", mirror=True, ticks="outside")
+    fig.update_yaxes(gridcolor="#e6e6e6", linecolor="#999", mirror=True, ticks="outside")
+    fig.update_layout(
+        title={"text": title, "x": 0.01, "font": {"size": 17}},
+        font=FONT,
+        plot_bgcolor="white",
+        paper_bgcolor="white",
+    )
+
+
 def _plotted_error(e: float | None) -> float:
     return ERROR_FAILED if e is None else min(max(e, ERROR_FLOOR), ERROR_FAILED)
 
@@ -144,13 +156,8 @@ def speed_accuracy_figure(rows: Sequence[RegimeRow], title: str) -> go.Figure:
             yanchor="bottom",
             font={"size": 10, "color": "#0072B2"},
         )
-    fig.update_xaxes(gridcolor="#e6e6e6", linecolor="#999", mirror=True, ticks="outside")
-    fig.update_yaxes(gridcolor="#e6e6e6", linecolor="#999", mirror=True, ticks="outside")
+    _frame_axes(fig, title)
     fig.update_layout(
-        title={"text": title, "x": 0.01, "font": {"size": 17}},
-        font=FONT,
-        plot_bgcolor="white",
-        paper_bgcolor="white",
         legend={"orientation": "h", "x": 0.0, "y": -0.1, "font": {"size": 13}},
         margin={"l": 80, "r": 20, "t": 80, "b": 110},
         width=1500,
@@ -331,14 +338,9 @@ def sampling_figure(studies: Sequence[SceneStudy], title: str, render_baseline: 
         fig.update_yaxes(title_text="ms above an empty figure (kaleido)", row=1, col=4)
     for col in range(2, len(titles) + 1):
         fig.update_xaxes(tickangle=-30, row=1, col=col)
-    fig.update_xaxes(gridcolor="#e6e6e6", linecolor="#999", mirror=True, ticks="outside")
-    fig.update_yaxes(gridcolor="#e6e6e6", linecolor="#999", mirror=True, ticks="outside")
+    _frame_axes(fig, title)
     fig.update_layout(
-        title={"text": title, "x": 0.01, "font": {"size": 17}},
-        font=FONT,
         barmode="group",
-        plot_bgcolor="white",
-        paper_bgcolor="white",
         legend={"orientation": "h", "x": 0.0, "y": -0.3, "font": {"size": 12}},
         margin={"l": 80, "r": 20, "t": 80, "b": 200},
         width=1600,
@@ -365,13 +367,8 @@ def throughput_figure(points: Sequence[ThroughputPoint], title: str) -> go.Figur
         )
     fig.update_xaxes(type="log", title_text="frame times per call (samples)", exponentformat="power")
     fig.update_yaxes(type="log", title_text="seconds per sample (best call / samples)", exponentformat="power")
-    fig.update_xaxes(gridcolor="#e6e6e6", linecolor="#999", mirror=True, ticks="outside")
-    fig.update_yaxes(gridcolor="#e6e6e6", linecolor="#999", mirror=True, ticks="outside")
+    _frame_axes(fig, title)
     fig.update_layout(
-        title={"text": title, "x": 0.01, "font": {"size": 17}},
-        font=FONT,
-        plot_bgcolor="white",
-        paper_bgcolor="white",
         legend={"x": 1.02, "y": 1.0, "font": {"size": 12}},
         margin={"l": 90, "r": 20, "t": 70, "b": 70},
         width=1100,
