@@ -14,20 +14,16 @@ memory between the start and the end of the measurement.
 from __future__ import annotations
 
 import argparse
-import asyncio
-import json
 import statistics
-import subprocess
 import sys
 import time
 from pathlib import Path
 
 from app.server import App
 from app.settings import PRESETS, Preset
-from tests.viser_client import LightClient
+from tests.viser_client import SWARM_WARMUP, client_swarm, swarm_result
 
 ROOT = Path(__file__).resolve().parents[1]
-WARMUP = 3.0
 TARGET_FPS = 25.0
 
 
@@ -38,42 +34,11 @@ def rss_mb() -> float:
     return float("nan")
 
 
-def client_process(url: str, n: int, seconds: float) -> None:
-    """In the child: ``n`` clients read for WARMUP + ``seconds``; print per-client frame counts as JSON."""
-
-    async def main() -> None:
-        clients = [LightClient(url) for _ in range(n)]
-        await asyncio.gather(*(c.connect() for c in clients))
-        start = time.monotonic()
-        stats = await asyncio.gather(*(c.run(WARMUP + seconds) for c in clients))
-        for c in clients:
-            await c.close()
-        t0 = start + WARMUP
-        print(
-            json.dumps(
-                [{"frames": sum(1 for t in s.lane_times if t0 <= t < t0 + seconds), "errors": s.errors} for s in stats]
-            )
-        )
-
-    asyncio.run(main())
-
-
 def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
-    with App(port=0, animation_hz=fps) as app:
-        child = subprocess.Popen(
-            [
-                sys.executable,
-                "-c",
-                f"from tests.load import client_process; client_process({app.url!r}, {clients}, {seconds})",
-            ],
-            cwd=ROOT,
-            stdout=subprocess.PIPE,
-            text=True,
-        )
+    with App(port=0, animation_hz=fps) as app, client_swarm(app.url, clients, seconds) as child:
         end = time.monotonic() + 60.0
         while len(app.sessions) < clients:
             if time.monotonic() > end or child.poll() is not None:
-                child.kill()
                 raise RuntimeError(f"only {len(app.sessions)} of {clients} clients connected")
             time.sleep(0.05)
         for session in list(app.sessions.values()):
@@ -81,14 +46,13 @@ def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
                 session._try(PRESETS[Preset.FIG3], refit=True)
                 session.set_playing(True)
         # memory at the start and at the end of the measured window, both with every client connected
-        time.sleep(WARMUP - 0.5)
+        time.sleep(SWARM_WARMUP - 0.5)
         mem0 = rss_mb()
         time.sleep(max(0.0, seconds - 1.0))
         mem1 = rss_mb()  # a second before the clients' window closes: all still connected
-        out, _ = child.communicate(timeout=seconds + 120.0)
+        stats = swarm_result(child, seconds)
         server_errors = app.errors
-    stats = json.loads(out.strip().splitlines()[-1])
-    fps_each = [s["frames"] / seconds for s in stats]
+    fps_each = [s["lane_frames"] / seconds for s in stats]
     return {
         "clients": float(clients),
         "min_fps": min(fps_each),

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import signal
@@ -10,6 +11,7 @@ import subprocess
 import sys
 import time
 import urllib.request
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -44,6 +46,18 @@ def start(*args: str) -> tuple[subprocess.Popen[str], str, int]:
     pytest.fail("no URL printed:\n" + "".join(seen))
 
 
+@contextlib.contextmanager
+def serving(*args: str) -> Iterator[tuple[subprocess.Popen[str], str, int]]:
+    """``start`` whose process is killed on the way out, whatever the test did with it."""
+    proc, url, port = start(*args)
+    try:
+        yield proc, url, port
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate(timeout=20)
+
+
 def stop(proc: subprocess.Popen[str], sig: int) -> str:
     proc.send_signal(sig)
     try:
@@ -57,12 +71,10 @@ def stop(proc: subprocess.Popen[str], sig: int) -> str:
 @pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
 def test_serve_prints_its_url_and_stops_cleanly(sig: int) -> None:
     port = free_port()
-    proc, url, got = start("-m", "app.cli", "serve", "--port", str(port))
-    try:
+    with serving("-m", "app.cli", "serve", "--port", str(port)) as (proc, url, got):
         assert got == port
         with urllib.request.urlopen(url, timeout=10) as r:
             assert r.status == 200 and b"<html" in r.read().lower()
-    finally:
         out = stop(proc, sig)
     assert proc.returncode == 0, out
     assert "shutting down" in out
@@ -74,12 +86,10 @@ def test_busy_port_moves_on_and_says_where() -> None:
         blocker.bind(("127.0.0.1", 0))
         blocker.listen()
         busy = int(blocker.getsockname()[1])
-        proc, url, got = start("-m", "app", "--port", str(busy))
-        try:
+        with serving("-m", "app", "--port", str(busy)) as (proc, url, got):
             assert got != busy
             with urllib.request.urlopen(url, timeout=10) as r:
                 assert r.status == 200
-        finally:
             stop(proc, signal.SIGINT)
     assert proc.returncode == 0
 
@@ -114,19 +124,19 @@ def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
     thread.start()
     try:
         for sig in (signal.SIGINT, signal.SIGTERM):
-            proc, url, _ = start("-m", "app.cli", "serve", "--port", str(free_port()))
-            clients = [LightClient(url) for _ in range(3)] + [LightClient(url, read=False)]
-            for c in clients:
-                asyncio.run_coroutine_threadsafe(c.connect(), loop).result(30)
-            readers = [asyncio.run_coroutine_threadsafe(c.run(30), loop) for c in clients]
-            time.sleep(2.0)
-            t0 = time.monotonic()
-            out = stop(proc, sig)
-            took = time.monotonic() - t0
-            for c in clients:
-                c.stop()
-            for r in readers:
-                r.result(30)
+            with serving("-m", "app.cli", "serve", "--port", str(free_port())) as (proc, url, _):
+                clients = [LightClient(url) for _ in range(3)] + [LightClient(url, read=False)]
+                for c in clients:
+                    asyncio.run_coroutine_threadsafe(c.connect(), loop).result(30)
+                readers = [asyncio.run_coroutine_threadsafe(c.run(30), loop) for c in clients]
+                time.sleep(2.0)
+                t0 = time.monotonic()
+                out = stop(proc, sig)
+                took = time.monotonic() - t0
+                for c in clients:
+                    c.stop()
+                for r in readers:
+                    r.result(30)
             assert proc.returncode == 0, out
             assert "Traceback" not in out and "Error" not in out.replace("rigidrel: dropped", ""), out
             assert took < 15.0

@@ -10,14 +10,22 @@ buffers]``; client messages are plain msgpack dicts with a ``"type"`` key.
 from __future__ import annotations
 
 import asyncio
+import contextlib
+import json
+import subprocess
+import sys
 import time
+from collections.abc import Iterator
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import msgspec
 import viser
 import websockets
 import zstandard
+
+ROOT = Path(__file__).resolve().parents[1]
 
 _DECOMPRESS = zstandard.ZstdDecompressor()
 
@@ -130,3 +138,60 @@ class LightClient:
     async def close(self) -> None:
         if self._ws is not None:
             await self._ws.close()
+
+
+#: Seconds every client of a swarm reads before its measured window (playback starts meanwhile).
+SWARM_WARMUP = 3.0
+
+
+def swarm_main(url: str, n: int, seconds: float) -> None:
+    """In a child process: ``n`` clients read for SWARM_WARMUP + ``seconds``; print one JSON line.
+
+    Per client: ``lane_frames`` (rod-moving frames inside the measured window), ``bytes`` (received,
+    prorated to the window) and ``errors``.
+    """
+
+    async def main() -> list[Stats]:
+        clients = [LightClient(url) for _ in range(n)]
+        await asyncio.gather(*(c.connect() for c in clients))
+        stats = await asyncio.gather(*(c.run(SWARM_WARMUP + seconds) for c in clients))
+        for c in clients:
+            await c.close()
+        return stats
+
+    start = time.monotonic()
+    stats = asyncio.run(main())
+    t0 = start + SWARM_WARMUP
+    share = seconds / (SWARM_WARMUP + seconds)
+    rows = [
+        {
+            "lane_frames": sum(1 for t in s.lane_times if t0 <= t < t0 + seconds),
+            "bytes": s.bytes * share,
+            "errors": s.errors,
+        }
+        for s in stats
+    ]
+    print(json.dumps(rows))
+
+
+@contextlib.contextmanager
+def client_swarm(url: str, n: int, seconds: float) -> Iterator[subprocess.Popen[str]]:
+    """Start ``swarm_main`` in another interpreter (so the clients do not share the server's GIL).
+
+    Read its result with ``swarm_result``; the child is killed on the way out whatever happened.
+    """
+    code = f"from tests.viser_client import swarm_main; swarm_main({url!r}, {n}, {seconds})"
+    child = subprocess.Popen([sys.executable, "-c", code], cwd=ROOT, stdout=subprocess.PIPE, text=True)
+    try:
+        yield child
+    finally:
+        if child.poll() is None:
+            child.kill()
+            child.communicate(timeout=30)
+
+
+def swarm_result(child: subprocess.Popen[str], seconds: float) -> list[dict[str, Any]]:
+    out, _ = child.communicate(timeout=seconds + SWARM_WARMUP + 120.0)
+    if child.returncode != 0 or not out.strip():
+        raise RuntimeError(f"the client process failed (exit {child.returncode})")
+    return json.loads(out.strip().splitlines()[-1])

@@ -19,8 +19,6 @@ import json
 import math
 import os
 import statistics
-import subprocess
-import sys
 import time
 from pathlib import Path
 
@@ -29,7 +27,7 @@ import numpy as np
 import rigidrel_core as rr
 from app.server import App
 from app.settings import Settings
-from tests.viser_client import LightClient
+from tests.viser_client import LightClient, client_swarm, swarm_result
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -88,47 +86,8 @@ def bench_rebuild() -> dict[str, float]:
     return out
 
 
-def _client_process(url: str, n: int, seconds: float) -> None:
-    """Child process: n clients reading for ``seconds``; prints JSON stats."""
-
-    warmup = 3.0  # the server starts everyone's playback meanwhile
-
-    async def main() -> None:
-        clients = await _connect(url, n)
-        start = time.monotonic()
-        stats = await asyncio.gather(*(c.run(warmup + seconds) for c in clients))
-        for c in clients:
-            await c.close()
-        t0 = start + warmup
-        print(
-            json.dumps(
-                [
-                    {
-                        "lane_frames": sum(1 for t in s.lane_times if t0 <= t < t0 + seconds),
-                        "bytes": s.bytes * seconds / (warmup + seconds),
-                        "errors": s.errors,
-                    }
-                    for s in stats
-                ]
-            )
-        )
-
-    asyncio.run(main())
-
-
 def bench_animation(n_clients: int, seconds: float) -> dict[str, float]:
-    with App(port=0) as app:
-        child = subprocess.Popen(
-            [
-                sys.executable,
-                "-c",
-                "from tests.benchmarks.bench_app import _client_process; "
-                f"_client_process({app.url!r}, {n_clients}, {seconds})",
-            ],
-            cwd=ROOT,
-            stdout=subprocess.PIPE,
-            text=True,
-        )
+    with App(port=0) as app, client_swarm(app.url, n_clients, seconds) as child:
         _wait_sessions(app, n_clients)
         for s in list(app.sessions.values()):
             with s.lock:
@@ -136,9 +95,8 @@ def bench_animation(n_clients: int, seconds: float) -> dict[str, float]:
                 s.set_playing(True)
         time.sleep(2.0)
         cpu0, wall0 = time.process_time(), time.perf_counter()
-        out, _ = child.communicate(timeout=seconds + 120)
+        stats = swarm_result(child, seconds)
         cpu1, wall1 = time.process_time(), time.perf_counter()
-    stats = json.loads(out.strip().splitlines()[-1])
     fps = [s["lane_frames"] / seconds for s in stats]
     span = wall1 - wall0
     return {
