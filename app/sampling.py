@@ -43,37 +43,39 @@ def refine(
     ``knots[i]`` are curve ``i``'s starting samples (sorted, unique). An interval is split
     while its midpoint deviates from the chord by more than ``tol`` (value units); an
     interval once accepted is not tested again, so each round evaluates only new midpoints.
+    All curves' pending intervals live in flat arrays (curve index, ends, end values), so a
+    round is a few array operations whatever the number of curves.
     """
     n = len(knots)
     all_t = np.unique(np.concatenate(knots))
     values_all = evaluate(all_t)
-    ts = list(knots)
-    xs = [values_all[i, np.searchsorted(all_t, ts[i])] for i in range(n)]
-    pending = [np.ones(t.size - 1, dtype=bool) for t in ts]  # intervals not yet accepted
+    curve = np.repeat(np.arange(n), [k.size for k in knots])
+    t_pts = np.concatenate(knots)
+    x_pts = values_all[curve, np.searchsorted(all_t, t_pts)]
+    points = [(curve, t_pts, x_pts)]
+    # pending intervals: every pair of consecutive knots of one curve
+    left = np.flatnonzero(curve[:-1] == curve[1:])
+    c, ta, tb, xa, xb = curve[left], t_pts[left], t_pts[left + 1], x_pts[left], x_pts[left + 1]
     span = float(all_t[-1] - all_t[0]) if all_t.size > 1 else 1.0
     for _ in range(MAX_DEPTH):
-        mids = [0.5 * (t[:-1] + t[1:])[p] for t, p in zip(ts, pending, strict=True)]
-        stacked = np.unique(np.concatenate(mids))
-        if stacked.size == 0:
+        if c.size == 0:
             break
-        vm = evaluate(stacked)
-        for i in range(n):
-            if not pending[i].any():
-                continue
-            t, x, p = ts[i], xs[i], pending[i]
-            k = np.flatnonzero(p)  # the tested intervals
-            m = mids[i]
-            xm = vm[i, np.searchsorted(stacked, m)]
-            chord = 0.5 * (x[k] + x[k + 1])
-            bad = (np.abs(xm - chord) > tol) & ((t[k + 1] - t[k]) > 1e-12 * span)
-            split = k[bad]
-            # accepted intervals stay, split ones become two pending halves
-            new_pending = np.zeros(t.size - 1, dtype=bool)
-            new_pending[split] = True
-            ts[i] = np.insert(t, split + 1, m[bad])
-            xs[i] = np.insert(x, split + 1, xm[bad])
-            pending[i] = np.insert(new_pending, split + 1, True)
-    return [Sampled(t, x) for t, x in zip(ts, xs, strict=True)]
+        tm = 0.5 * (ta + tb)
+        unique_t = np.unique(tm)
+        xm = evaluate(unique_t)[c, np.searchsorted(unique_t, tm)]
+        bad = (np.abs(xm - 0.5 * (xa + xb)) > tol) & ((tb - ta) > 1e-12 * span)
+        c, ta, tb, xa, xb, tm, xm = c[bad], ta[bad], tb[bad], xa[bad], xb[bad], tm[bad], xm[bad]
+        points.append((c, tm, xm))
+        # each split interval becomes two pending halves
+        c, ta, tb = np.concatenate([c, c]), np.concatenate([ta, tm]), np.concatenate([tm, tb])
+        xa, xb = np.concatenate([xa, xm]), np.concatenate([xm, xb])
+    curve = np.concatenate([p[0] for p in points])
+    t_all = np.concatenate([p[1] for p in points])
+    x_all = np.concatenate([p[2] for p in points])
+    order = np.lexsort((t_all, curve))
+    curve, t_all, x_all = curve[order], t_all[order], x_all[order]
+    bounds = np.searchsorted(curve, np.arange(n + 1))
+    return [Sampled(t_all[bounds[i] : bounds[i + 1]], x_all[bounds[i] : bounds[i + 1]]) for i in range(n)]
 
 
 #: A curved piece starts as this many equal intervals (saves the first rounds of halving).
@@ -81,12 +83,19 @@ SEED_INTERVALS = 8
 
 
 def _knots(switches: FloatArray, t_range: tuple[float, float]) -> FloatArray:
-    """Start and end of the range, the switch times inside it, and a seed grid on the curved piece."""
+    """Start and end of the range, the switch times inside it, and a seed grid on the curved piece.
+
+    A handful of numbers per curve: plain Python floats are faster here than array calls.
+    """
     t0, t1 = t_range
-    inner = switches[(switches > t0) & (switches < t1)]
-    lo, hi = max(t0, float(switches.min())), min(t1, float(switches.max()))
-    seed = np.linspace(lo, hi, SEED_INTERVALS + 1) if hi > lo else np.empty(0)
-    return np.unique(np.concatenate([[t0, t1], inner, seed]))
+    s = switches.ravel().tolist()
+    points = {t0, t1, *(v for v in s if t0 < v < t1)}
+    lo, hi = max(t0, min(s)), min(t1, max(s))
+    if hi > lo:
+        step = (hi - lo) / SEED_INTERVALS
+        points.update(lo + k * step for k in range(SEED_INTERVALS))
+        points.add(hi)
+    return np.array(sorted(points))
 
 
 def sample_worldlines(
