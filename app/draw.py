@@ -139,7 +139,9 @@ def plain_text(text: str) -> str:
 
 # ------------------------------------------------------------------- plotly backend
 def _plotly_line(style: Style) -> dict[str, Any]:
-    return {"color": style.color, "width": style.width, "dash": style.dash}
+    """Plotly line attributes. ``simplify`` off: plotly would otherwise drop vertices it judges
+    collinear (about a pixel), undoing the sampler's chord tolerance and leaving visible corners."""
+    return {"color": style.color, "width": style.width, "dash": style.dash, "simplify": False}
 
 
 def item_to_traces(item: Item) -> list[dict[str, Any]]:

@@ -24,8 +24,12 @@ from .sampling import sample_lengths, sample_worldlines
 #: Export size of every figure (CSS pixels; PNGs are written at twice this).
 FIGURE_SIZE = (640, 560)
 _PLOT_AREA = (FIGURE_SIZE[0] - 110.0, FIGURE_SIZE[1] - 110.0)
-#: PNGs are written at this scale; curves are sampled for it (half a pixel of the PNG).
+#: PNGs are written at this scale; curves are sampled for it.
 _PNG_SCALE = 2.0
+#: Chord tolerance of the figures, in PNG pixels: a tenth of the app's half pixel, so that the
+#: polylines show no corners in print or in the SVG enlarged tenfold (each chord of a curve of
+#: radius R pixels turns by sqrt(8 tol / R): 1.5 degrees at R = 600, about one rest length).
+FIGURE_TOLERANCE_PX = 0.05
 _BLACK = "#000000"
 _GREY = "#555555"
 _FONT = "DejaVu Serif, Liberation Serif, Times New Roman, serif"
@@ -62,7 +66,7 @@ def _tube(
 ) -> list[Item]:
     lab = rr.Frame.lab()
     px_per_x = _PNG_SCALE * _PLOT_AREA[0] / (x_range[1] - x_range[0])
-    lines = sample_worldlines(scene, lab, np.array([0.0, 1.0]), t_range, px_per_x)
+    lines = sample_worldlines(scene, lab, np.array([0.0, 1.0]), t_range, px_per_x, FIGURE_TOLERANCE_PX)
     items: list[Item] = []
     for r in range(scene.n_rods):
         left, right = lines[r]
@@ -117,7 +121,7 @@ def figure2() -> PaperFigure:
     t_range = (0.0, 2.2)
     y_range = (0.75, 1.02)
     px_per_length = _PNG_SCALE * _PLOT_AREA[1] / (y_range[1] - y_range[0])
-    curve = sample_lengths(scene, rr.Frame.lab(), t_range, px_per_length)[0]
+    curve = sample_lengths(scene, rr.Frame.lab(), t_range, px_per_length, FIGURE_TOLERANCE_PX)[0]
     items: list[Item] = [Polyline(curve.t, curve.x, Style(_BLACK, 2.0))]
     for n in ("T_B", "T_F"):
         t = scene.events[n][0]

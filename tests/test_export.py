@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -9,6 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 from PIL import Image
+
+from app.draw import Polyline
+from app.figures import paper_figures
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -92,6 +96,11 @@ def test_figures_regenerate_the_paper(tmp_path: Path) -> None:
         assert label in fig1
     fig3 = (tmp_path / "fig3.svg").read_text().replace("\u200b", "")
     assert fig3.count(">T<") + fig3.count(">T'<") >= 4
+    # every sampled vertex reaches the SVG: plotly's line simplification would drop the ones it
+    # judges collinear and leave visible corners on the hyperbolas
+    sampled = max(it.x.size for it in paper_figures()[2].chart.items if isinstance(it, Polyline))
+    drawn = max(path.count("L") + 1 for path in re.findall(r'd="(M[^"]+)"', fig3))
+    assert drawn == sampled > 30
 
 
 @pytest.mark.parametrize(
