@@ -24,6 +24,10 @@ _FONTS = (
 _LANE_Z = (LAB_Z, FRAME_Z)
 
 
+#: Blank margin left and right, as a fraction of the lanes' x range.
+_MARGIN = 0.02
+
+
 @lru_cache(maxsize=8)
 def _font(size: int) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
     for path in _FONTS:
@@ -37,7 +41,9 @@ class LaneRaster:
 
     def __init__(self, drawn: Drawn, width: int) -> None:
         u = drawn.geometry.unit
-        self.x0, self.x1 = drawn.x_range[0] / u, drawn.x_range[1] / u
+        x0, x1 = drawn.x_range[0] / u, drawn.x_range[1] / u
+        margin = _MARGIN * (x1 - x0)  # lane titles start at the ruler's left end: keep them off the edge
+        self.x0, self.x1 = x0 - margin, x1 + margin
         self.z0, self.z1 = FRAME_Z - 0.45, LAB_Z + 0.6
         self.width = width
         self.scale = width / (self.x1 - self.x0)
