@@ -159,13 +159,13 @@ def serve(host: str = "127.0.0.1", port: int = 8080) -> int:
     def _terminate(signum: int, _frame: object) -> None:
         done.set()
 
+    # Both installed explicitly: a process started in the background by a non-interactive
+    # shell inherits SIGINT as *ignored*, and Python then raises no KeyboardInterrupt.
+    signal.signal(signal.SIGINT, _terminate)
     signal.signal(signal.SIGTERM, _terminate)
     with running(host, port) as app:
         print(f"rigidrel: serving on {app.url}  (Ctrl-C to stop)", flush=True)
-        try:
-            while not done.wait(0.5):
-                pass
-        except KeyboardInterrupt:
+        while not done.wait(0.5):
             pass
         print("rigidrel: shutting down", flush=True)
     return 0

@@ -26,10 +26,17 @@ def free_port() -> int:
         return int(s.getsockname()[1])
 
 
-def start(*args: str) -> tuple[subprocess.Popen[str], str, int]:
+def start(*args: str, sigint_ignored: bool = False) -> tuple[subprocess.Popen[str], str, int]:
     env = {**os.environ, "PYTHONUNBUFFERED": "1"}
     proc = subprocess.Popen(
-        [sys.executable, *args], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env
+        [sys.executable, *args],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        env=env,
+        # as a background job of a non-interactive shell (CI, nohup ... &) starts it
+        preexec_fn=(lambda: signal.signal(signal.SIGINT, signal.SIG_IGN)) if sigint_ignored else None,
     )
     assert proc.stdout is not None
     deadline = time.monotonic() + 60
@@ -47,9 +54,9 @@ def start(*args: str) -> tuple[subprocess.Popen[str], str, int]:
 
 
 @contextlib.contextmanager
-def serving(*args: str) -> Iterator[tuple[subprocess.Popen[str], str, int]]:
+def serving(*args: str, sigint_ignored: bool = False) -> Iterator[tuple[subprocess.Popen[str], str, int]]:
     """``start`` whose process is killed on the way out, whatever the test did with it."""
-    proc, url, port = start(*args)
+    proc, url, port = start(*args, sigint_ignored=sigint_ignored)
     try:
         yield proc, url, port
     finally:
@@ -79,6 +86,14 @@ def test_serve_prints_its_url_and_stops_cleanly(sig: int) -> None:
     assert proc.returncode == 0, out
     assert "shutting down" in out
     assert "Traceback" not in out
+
+
+def test_ctrl_c_stops_the_server_even_when_started_with_sigint_ignored() -> None:
+    """A shell's background job inherits SIGINT ignored; Ctrl-C (SIGINT) must still stop the server."""
+    with serving("-m", "app.cli", "serve", "--port", str(free_port()), sigint_ignored=True) as (proc, _, _):
+        out = stop(proc, signal.SIGINT)
+    assert proc.returncode == 0, out
+    assert "shutting down" in out
 
 
 def test_busy_port_moves_on_and_says_where() -> None:
