@@ -12,6 +12,7 @@ import math
 import threading
 import time
 from collections.abc import Iterator
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -172,7 +173,11 @@ def test_hostile_choices_and_unknown_messages(harness: Harness) -> None:
     assert session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
     assert session.scene_dd.value in session.scene_dd.options
     assert session.frame_dd.value in session.frame_dd.options
-    assert not any(p.name == "pwned.txt" for p in __import__("pathlib").Path(".").resolve().parent.rglob("pwned.txt"))
+    # where "../../pwned.txt" could land relative to the server's working directory (not a walk of
+    # the whole parent tree: other processes create and delete files there while it runs)
+    cwd = Path.cwd().resolve()
+    assert not any((d / "pwned.txt").exists() for d in (cwd, cwd.parent, cwd.parent.parent))
+    assert not list(cwd.rglob("pwned.txt"))
     # the server still serves this client and others
     _, other = harness.connect()
     assert other.drawn is not None
