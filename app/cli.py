@@ -14,6 +14,8 @@ from typing import NoReturn
 
 import rigidrel_core as rr
 
+from .settings import choose_frame
+
 EXIT_USAGE = 2
 
 
@@ -67,8 +69,10 @@ def add_scene_arguments(parser: argparse.ArgumentParser, frame_default: str | No
         )
     parser.add_argument(
         "--frame",
-        default="lab",
-        help="frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'",
+        default=frame_default,
+        help="frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after' (default: "
+        + ("the lab" if frame_default == "lab" else "the app's: the rod's rest frame after, or the barycentric frame")
+        + ")",
     )
 
 
@@ -77,25 +81,10 @@ def scene_from_args(prog: str, args: argparse.Namespace) -> tuple[rr.Scene, rr.F
     params = {k: v for k, v in vars(args).items() if k in names}
     try:
         scene = rr.build_scene(args.scene, **params)
-        frame = resolve_frame(scene, args.frame)
+        frame = choose_frame(scene, args.frame)
     except ValueError as exc:
         fail(prog, str(exc))
     return scene, frame
-
-
-def resolve_frame(scene: rr.Scene, text: str | None) -> rr.Frame:
-    if text is None:
-        from .settings import default_frame
-
-        return scene.frames[default_frame(scene)]
-    if text in scene.frames:
-        return scene.frames[text]
-    try:
-        beta = float(text)
-    except ValueError:
-        presets = ", ".join(repr(k) for k in scene.frames)
-        raise rr.ParameterError("frame", f"a velocity in (-1, 1) or one of {presets}", text) from None
-    return rr.Frame.from_velocity(beta)
 
 
 def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:

@@ -32,7 +32,7 @@ from .draw import (
     event_label,
     rgba,
 )
-from .sampling import sample_lengths, sample_worldlines
+from .sampling import ADAPTIVE, Sampler
 
 #: Material points drawn in the diagrams (fractions of the rest length).
 DIAGRAM_FRACTIONS = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
@@ -48,6 +48,14 @@ class View:
     """Axis names of this frame: "" for the lab (t, x), "'" for the chosen frame (t', x')."""
     prime: str
     other_prime: str
+
+    @staticmethod
+    def alone(frame: rr.Frame) -> View:
+        """A diagram of ``frame`` compared with the lab (or with nothing, if it is the lab)."""
+        lab = rr.Frame.lab()
+        if frame.key() == lab.key():
+            return View(frame, frame, frame.name, "", "")
+        return View(frame, lab, frame.name, "'", "")
 
 
 def frame_title(frame: rr.Frame) -> str:
@@ -69,6 +77,37 @@ def window_x_range(scene: rr.Scene, frames: tuple[rr.Frame, ...], t_range: tuple
     return lo, hi
 
 
+def equal_scale_ranges(
+    x: tuple[float, float], t: tuple[float, float], area: tuple[float, float]
+) -> tuple[tuple[float, float], tuple[float, float]]:
+    """Axis ranges holding ``x`` and ``t`` (padded) with one unit as long on both axes of a plot
+    area of ``area`` pixels (width, height): light at 45 degrees."""
+    xc, tc = 0.5 * (x[0] + x[1]), 0.5 * (t[0] + t[1])
+    half_x = 0.55 * (x[1] - x[0]) + 0.05
+    half_t = 0.5 * (t[1] - t[0])
+    ratio = area[0] / area[1]  # pixels wide per pixel high
+    if half_x / half_t > ratio:
+        half_t = half_x / ratio
+    else:
+        half_x = half_t * ratio
+    return (xc - half_x, xc + half_x), (tc - half_t, tc + half_t)
+
+
+def minkowski_in_frame(
+    scene: rr.Scene,
+    frame: rr.Frame,
+    area_px: tuple[float, float],
+    overlay: rr.Scene | None = None,
+    density: float = 1.0,
+) -> Chart:
+    """The diagram of one frame on its own (notebooks, exports): the frame's event window at equal
+    scales in a plot area of ``area_px`` CSS pixels, compared with the lab; curves sampled to half
+    a pixel at ``density`` device pixels per CSS pixel."""
+    window = scene.time_window(frame)
+    x_range, t_range = equal_scale_ranges(window_x_range(scene, (frame,), window), window, area_px)
+    return minkowski_static(scene, View.alone(frame), t_range, x_range, density * area_px[0], overlay)
+
+
 def minkowski_static(
     scene: rr.Scene,
     view: View,
@@ -76,6 +115,7 @@ def minkowski_static(
     x_range: tuple[float, float],
     panel_px: float,
     overlay: rr.Scene | None = None,
+    sampler: Sampler = ADAPTIVE,
 ) -> Chart:
     """Everything in a Minkowski diagram that does not move with playback."""
     frame = view.frame
@@ -111,7 +151,7 @@ def minkowski_static(
         tt = np.array([t0, t1])
         items.append(Polyline(scene.wall_x(tt, frame), tt, Style(WALL_COLOR, 5.0, name="wall")))
     # world tubes and worldlines
-    lines = sample_worldlines(scene, frame, DIAGRAM_FRACTIONS, t_range, px_per_x)
+    lines = sampler.worldlines(scene, frame, DIAGRAM_FRACTIONS, t_range, px_per_x)
     for r, rod in enumerate(scene.rods):
         color = ROD_COLORS[r % len(ROD_COLORS)]
         left, right = lines[r][0], lines[r][-1]
@@ -128,7 +168,7 @@ def minkowski_static(
         items.append(Polyline(left.x, left.t, Style(color, 2.5, name=rod.name, group=rod.name)))
         items.append(Polyline(right.x, right.t, Style(color, 2.5, group=rod.name)))
     if overlay is not None:  # Fig. 1's dashed curve: the impulsive start to the same V
-        left, right = sample_worldlines(overlay, frame, np.array([0.0, 1.0]), t_range, px_per_x)[0]
+        left, right = sampler.worldlines(overlay, frame, np.array([0.0, 1.0]), t_range, px_per_x)[0]
         items.append(Polyline(left.x, left.t, Style(INK, 1.5, "dash", group="overlay")))
         items.append(
             Polyline(right.x, right.t, Style(INK, 1.5, "dash", name="impulsive (Fig. 1 dashed)", group="overlay"))
@@ -174,7 +214,12 @@ def minkowski_now(view: View, now: float, span: float, ends: FloatArray) -> tupl
 
 
 def length_static(
-    scene: rr.Scene, lab: rr.Frame, chosen: rr.Frame, t_range: tuple[float, float], panel_px: tuple[float, float]
+    scene: rr.Scene,
+    lab: rr.Frame,
+    chosen: rr.Frame,
+    t_range: tuple[float, float],
+    panel_px: tuple[float, float],
+    sampler: Sampler = ADAPTIVE,
 ) -> Chart:
     """Equal-time length of each rod against time, in the lab and in the chosen frame (Fig. 2).
 
@@ -189,7 +234,7 @@ def length_static(
     top = max(max(r.motion.length for r in scene.rods), *(float(scene.lengths(probe, f).max()) for f, _, _ in frames))
     px_per_length = panel_px[1] / (1.12 * top)
     for frame, prime, dash in frames:
-        curves = sample_lengths(scene, frame, t_range, px_per_length)
+        curves = sampler.lengths(scene, frame, t_range, px_per_length)
         for r, rod in enumerate(scene.rods):
             color = ROD_COLORS[r % len(ROD_COLORS)]
             name = f"{rod.name}, {frame_title(frame)} (t{prime})"
@@ -220,15 +265,12 @@ def _event_rod(scene: rr.Scene, name: str) -> int:
     return 0
 
 
-def length_now(now: float, y_top: float, ends: tuple[FloatArray, ...]) -> tuple[Item, ...]:
+def length_now(now: float, y_top: float, lengths: FloatArray) -> tuple[Item, ...]:
     """The current time on the length plot, and each rod's length there in each frame.
 
-    ``ends``: per frame, the rods' end positions at ``now`` (from the core), shape ``(n_rods, 2)``.
+    ``lengths``: the rods' equal-time lengths at ``now`` (from the core), any shape.
     """
-    items: list[Item] = [
-        Segments(np.array([now]), np.array([0.0]), np.array([now]), np.array([y_top]), Style(INK, 1.2))
-    ]
-    for e in ends:
-        length = e[:, 1] - e[:, 0]
-        items.append(Points(np.full(length.size, now), length, Style(INK), size=6))
-    return tuple(items)
+    return (
+        Segments(np.array([now]), np.array([0.0]), np.array([now]), np.array([y_top]), Style(INK, 1.2)),
+        Points(np.full(lengths.size, now), lengths.ravel(), Style(INK), size=6),
+    )

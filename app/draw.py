@@ -18,6 +18,7 @@ import numpy.typing as npt
 
 FloatArray = npt.NDArray[np.float64]
 Dash = Literal["solid", "dash", "dot", "dashdot"]
+Anchor = Literal["left", "right", "center"]
 
 # palette (colour-blind safe: blue / orange / purple, Okabe-Ito)
 ROD_COLORS = ("#0072B2", "#E8710A")
@@ -95,7 +96,7 @@ class Label:
     text: str
     """May use ``<sub>``/``<b>`` (plotly) and is rendered as plain text in 3-D."""
     style: Style = Style()
-    anchor: Literal["left", "right", "center"] = "left"
+    anchor: Anchor = "left"
     size: float = 13.0
 
 
@@ -240,6 +241,11 @@ def dumps(obj: Any) -> str:
     return json.dumps(obj, default=_encode, separators=(",", ":"), allow_nan=False)
 
 
+def jsonable(obj: Any) -> Any:
+    """``obj`` with its numpy arrays as plotly typed-array dicts: plain JSON values, as plotly.js reads them."""
+    return json.loads(dumps(obj))
+
+
 def decode_array(value: Any) -> FloatArray:
     """Inverse of the typed-array encoding (for tests and exports)."""
     if isinstance(value, dict) and "bdata" in value:
@@ -249,15 +255,10 @@ def decode_array(value: Any) -> FloatArray:
 
 def chart_to_plotly(chart: Chart, dynamic: Sequence[Item] | None = None) -> dict[str, Any]:
     """A plotly figure dict: static items, then the dynamic ones (drawn on top)."""
-    data: list[dict[str, Any]] = []
-    for item in (*chart.items, *(chart.dynamic if dynamic is None else dynamic)):
-        data.extend(item_to_traces(item))
+    items = (*chart.items, *(chart.dynamic if dynamic is None else dynamic))
     layout = chart_layout(chart)
-    dyn_labels = [
-        label_to_annotation(i) for i in (chart.dynamic if dynamic is None else dynamic) if isinstance(i, Label)
-    ]
-    layout["annotations"] = [*layout["annotations"], *dyn_labels]
-    return {"data": data, "layout": layout}
+    layout["annotations"] = [label_to_annotation(i) for i in items if isinstance(i, Label)]
+    return {"data": [t for i in items for t in item_to_traces(i)], "layout": layout}
 
 
 class SplicedFigure:
@@ -308,6 +309,3 @@ class JsonFigure:
 
     def to_json(self) -> str:
         return self._text
-
-    def to_dict(self) -> dict[str, Any]:
-        return json.loads(self._text)

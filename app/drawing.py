@@ -9,12 +9,24 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 import rigidrel_core as rr
 
 from . import camera as cam
-from .diagrams import View, frame_title, length_static, minkowski_static, window_x_range
-from .draw import SplicedFigure
-from .lanes import LaneGeometry, LaneState, lane_geometry, lane_state
+from .diagrams import (
+    View,
+    equal_scale_ranges,
+    frame_title,
+    length_now,
+    length_static,
+    minkowski_now,
+    minkowski_static,
+    window_x_range,
+)
+from .draw import Label, Segments, SplicedFigure
+from .lanes import LaneGeometry, LaneState, lane_geometry, lane_state, lane_static
+from .sampling import ADAPTIVE, Sampler
 from .settings import Resolved
 
 #: Lane heights (z, in lane units): the lab on top, the chosen frame below.
@@ -35,6 +47,7 @@ LENGTH_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * LENGTH_ASPECT - 40 - 
 #: Pixel width the diagrams are sampled for (chord error < half a pixel at this width).
 PANEL_PX = float(PLOT_PANEL_PX)
 PLOT_CONFIG = {"displayModeBar": False, "responsive": True}
+_LAB = rr.Frame.lab()
 
 
 @dataclass(frozen=True)
@@ -56,11 +69,37 @@ class Drawn:
     span: float
     length_top: float
 
+    @property
+    def lane_x_range(self) -> tuple[float, float]:
+        """``x_range`` in lane units (the camera and the raster frames fit this)."""
+        return self.x_range[0] / self.geometry.unit, self.x_range[1] / self.geometry.unit
 
-def build_drawing(resolved: Resolved) -> Drawn:
-    """Everything that depends only on the scene and frame (not on playback time)."""
+    def lane_statics(self) -> list[tuple[Segments, tuple[Label, ...]]]:
+        """Each lane's ruler and origin mark (lab, chosen frame): drawn once per scene."""
+        return [lane_static(self.geometry, r, self.resolved.scene.origin_event) for r in self.lane_ranges]
+
+    def plot_figures(self, now: float, states: list[LaneState]) -> tuple[str, str, str]:
+        """The three diagrams' JSON at playback time ``now`` (lab, chosen frame, lengths).
+
+        ``states`` are :func:`lane_states` at ``now``: their ends mark the rods on the diagrams.
+        The length plot's markers are the core's equal-time lengths in both frames.
+        """
+        r = self.resolved
+        lengths = [r.scene.lengths(now, f) for f in (_LAB, r.frame)]
+        return (
+            self.lab_chart.with_dynamic(minkowski_now(self.lab_view, now, self.span, states[0].ends)),
+            self.frame_chart.with_dynamic(minkowski_now(self.frame_view, now, self.span, states[1].ends)),
+            self.length_chart.with_dynamic(length_now(now, self.length_top, np.stack(lengths))),
+        )
+
+
+def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
+    """Everything that depends only on the scene and frame (not on playback time).
+
+    ``sampler`` samples the diagrams' curves (the app's adaptive one unless a benchmark swaps it).
+    """
     scene, frame = resolved.scene, resolved.frame
-    lab = rr.Frame.lab()
+    lab = _LAB
     a0, a1 = scene.time_window(lab)
     b0, b1 = scene.time_window(frame)
     window = _round_outward(min(a0, b0), max(a1, b1))
@@ -76,11 +115,11 @@ def build_drawing(resolved: Resolved) -> Drawn:
     lab_view = View(lab, frame, "lab", "", "'")
     frame_view = View(frame, lab, frame.name, "'", "")
     span = 4.0 * max(abs(window[0]), abs(window[1]), abs(x_range[0]), abs(x_range[1]))
-    lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window)
-    fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window)
-    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, PLOT_AREA_PX[0], resolved.overlay)
-    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, PLOT_AREA_PX[0], resolved.overlay)
-    length_chart = length_static(scene, lab, frame, window, LENGTH_AREA_PX)
+    lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window, PLOT_AREA_PX)
+    fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window, PLOT_AREA_PX)
+    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, PLOT_AREA_PX[0], resolved.overlay, sampler)
+    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, PLOT_AREA_PX[0], resolved.overlay, sampler)
+    length_chart = length_static(scene, lab, frame, window, LENGTH_AREA_PX, sampler)
     return Drawn(
         resolved=resolved,
         window=window,
@@ -103,24 +142,9 @@ def _round_outward(t0: float, t1: float) -> tuple[float, float]:
     return (math.floor(t0 / step) * step, math.ceil(t1 / step) * step)
 
 
-def equal_scale_ranges(
-    x: tuple[float, float], t: tuple[float, float], area: tuple[float, float] = PLOT_AREA_PX
-) -> tuple[tuple[float, float], tuple[float, float]]:
-    """Axis ranges holding ``x`` and ``t`` (padded) with one unit as long on both axes."""
-    xc, tc = 0.5 * (x[0] + x[1]), 0.5 * (t[0] + t[1])
-    half_x = 0.55 * (x[1] - x[0]) + 0.05
-    half_t = 0.5 * (t[1] - t[0])
-    ratio = area[0] / area[1]  # pixels wide per pixel high
-    if half_x / half_t > ratio:
-        half_t = half_x / ratio
-    else:
-        half_x = half_t * ratio
-    return (xc - half_x, xc + half_x), (tc - half_t, tc + half_t)
-
-
-def camera_pose(x0: float, x1: float, aspect: float) -> cam.CameraPose:
+def camera_pose(lane_x_range: tuple[float, float], aspect: float) -> cam.CameraPose:
     """Both lanes (rods, clocks, rulers, titles) in view, looking straight at them."""
-    return cam.fit_lanes((x0, x1), (FRAME_Z - 0.35, LAB_Z + 0.5), aspect)
+    return cam.fit_lanes(lane_x_range, (FRAME_Z - 0.35, LAB_Z + 0.5), aspect)
 
 
 def nice_step(span: float) -> float:
@@ -140,9 +164,6 @@ def lane_states(d: Drawn, now: float, labels: bool = True) -> list[LaneState]:
             r.scene, r.frame, now, d.geometry, f"{frame_title(r.frame)} frame:   t' = {now:+.3f}", frame_x, labels
         ),
     ]
-
-
-_LAB = rr.Frame.lab()
 
 
 def readout_markdown(resolved: Resolved) -> str:

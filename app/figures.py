@@ -16,9 +16,8 @@ import numpy as np
 import rigidrel_core as rr
 from rigidrel_core import examples
 
-from .diagrams import window_x_range
-from .draw import Area, Chart, Item, Label, Points, Polyline, Style, chart_to_plotly, event_label
-from .drawing import equal_scale_ranges
+from .diagrams import equal_scale_ranges, window_x_range
+from .draw import Anchor, Area, Chart, Dash, Item, Label, Points, Polyline, Style, chart_to_plotly, event_label
 from .sampling import sample_lengths, sample_worldlines
 
 #: Export size of every figure (CSS pixels; PNGs are written at twice this).
@@ -60,7 +59,7 @@ def _tube(
     scene: rr.Scene,
     t_range: tuple[float, float],
     x_range: tuple[float, float],
-    dash: str = "solid",
+    dash: Dash = "solid",
     shade: bool = True,
     colors: tuple[str, ...] = (_BLACK, _GREY),
 ) -> list[Item]:
@@ -80,18 +79,18 @@ def _tube(
             )
         color = colors[r % len(colors)]
         for w in (left, right):
-            items.append(Polyline(w.x, w.t, Style(color, 2.0, dash)))  # type: ignore[arg-type]
+            items.append(Polyline(w.x, w.t, Style(color, 2.0, dash)))
     return items
 
 
-def _events(scene: rr.Scene, names: tuple[str, ...], side: dict[str, str] | None = None) -> list[Item]:
+def _events(scene: rr.Scene, names: tuple[str, ...], side: dict[str, Anchor] | None = None) -> list[Item]:
     ev = scene.events
     items: list[Item] = [
         Points(np.array([ev[n][1] for n in names]), np.array([ev[n][0] for n in names]), Style(_BLACK), size=7)
     ]
     for n in names:
         t, x = ev[n]
-        items.append(Label(x, t, event_label(n), Style(_BLACK), anchor=(side or {}).get(n, "left"), size=15))  # type: ignore[arg-type]
+        items.append(Label(x, t, event_label(n), Style(_BLACK), anchor=(side or {}).get(n, "left"), size=15))
     return items
 
 
@@ -128,8 +127,8 @@ def figure2() -> PaperFigure:
         length = float(scene.lengths(np.array([t]))[0, 0])
         items.append(Points(np.array([t]), np.array([length]), Style(_BLACK), size=7))
         items.append(Label(t, length + 0.008, event_label(n), Style(_BLACK), anchor="left", size=15))
-    gamma = 1.25
-    items.append(Label(2.15, 1.0 / gamma - 0.012, "L<sub>0</sub>/γ", Style(_GREY), anchor="right", size=13))
+    contracted = float(scene.lengths(np.array([t_range[1]]))[0, 0])  # L0/γ once both ends coast
+    items.append(Label(2.15, contracted - 0.012, "L<sub>0</sub>/γ", Style(_GREY), anchor="right", size=13))
     items.append(Label(0.05, 0.99, "L<sub>0</sub>", Style(_GREY), anchor="left", size=13))
     return PaperFigure(
         "fig2", CAPTIONS["fig2"], Chart(tuple(items), "t / L<sub>0</sub>", "L / L<sub>0</sub>", t_range, y_range)
@@ -139,7 +138,7 @@ def figure2() -> PaperFigure:
 def _collision(scene: rr.Scene, name: str) -> PaperFigure:
     t_range = (-1.0, 1.3) if name == "fig3" else (-1.0, 1.4)
     x_range, t_range = _ranges(scene, t_range)
-    side = {"T_1": "right", "T_1'": "right", "T_2": "left", "T_2'": "left"}
+    side: dict[str, Anchor] = {"T_1": "right", "T_1'": "right", "T_2": "left", "T_2'": "left"}
     items = [
         *_tube(scene, t_range, x_range),
         *_events(scene, ("T_1", "T_1'", "T_2", "T_2'"), side),

@@ -20,42 +20,26 @@ import plotly.graph_objects as go
 
 import rigidrel_core as rr
 
-from .diagrams import View, minkowski_static, window_x_range
-from .draw import chart_to_plotly, dumps
-from .drawing import Drawn, build_drawing, equal_scale_ranges
-from .settings import Resolved
+from .diagrams import minkowski_in_frame
+from .draw import chart_to_plotly, jsonable
+from .drawing import build_drawing
+from .settings import Resolved, choose_frame
 
-
-def _frame(scene: rr.Scene, frame: str | float | rr.Frame) -> rr.Frame:
-    if isinstance(frame, rr.Frame):
-        return frame
-    if isinstance(frame, str):
-        if frame not in scene.frames:
-            raise rr.ParameterError("frame", f"one of {', '.join(scene.frames)} or a velocity in (-1, 1)", frame)
-        return scene.frames[frame]
-    return rr.Frame.from_velocity(frame)
+FrameLike = rr.Frame | str | float
 
 
 def diagram(
-    scene: rr.Scene, frame: str | float | rr.Frame = "lab", size: tuple[int, int] = (640, 560), density: float = 2.0
+    scene: rr.Scene, frame: FrameLike = "lab", size: tuple[int, int] = (640, 560), density: float = 2.0
 ) -> go.Figure:
     """The scene's Minkowski diagram in ``frame``, exact, as an interactive plotly figure.
 
+    ``frame``: a preset name of the scene, a velocity in (-1, 1) or a :class:`~rigidrel_core.Frame`.
     Curves are sampled to half a pixel at ``density`` device pixels per CSS pixel (2 covers
     high-density screens and 2x PNG exports).
     """
-    import json
-
-    f = _frame(scene, frame)
-    lab = rr.Frame.lab()
-    window = scene.time_window(f)
     area = (size[0] - 100.0, size[1] - 180.0)
-    x_range, t_range = equal_scale_ranges(window_x_range(scene, (f,), window), window, area)
-    other = lab if f.key() != lab.key() else f
-    chart = minkowski_static(
-        scene, View(f, other, f.name, "'" if f.name != "lab" else "", ""), t_range, x_range, area[0]
-    )
-    fig = json.loads(dumps(chart_to_plotly(chart)))
+    chart = minkowski_in_frame(scene, choose_frame(scene, frame), area, density=density)
+    fig = jsonable(chart_to_plotly(chart))
     fig["layout"].update({"width": size[0], "height": size[1]})
     fig["layout"]["legend"].update({"y": -0.13})
     return go.Figure(fig)
@@ -79,11 +63,9 @@ class Recording:
         )
 
 
-def recording(
-    scene: rr.Scene, frame: str | float | rr.Frame = "lab", seconds: float = 10.0, fps: float = 30.0
-) -> Recording:
+def recording(scene: rr.Scene, frame: FrameLike = "lab", seconds: float = 10.0, fps: float = 30.0) -> Recording:
     """Both lanes (the lab and ``frame``) playing through the scene's window, as offline HTML."""
     from .export.recording import record_lanes_html
 
-    drawn: Drawn = build_drawing(Resolved(scene, _frame(scene, frame), None))
+    drawn = build_drawing(Resolved(scene, choose_frame(scene, frame), None))
     return Recording(record_lanes_html(drawn, seconds, fps))

@@ -132,3 +132,36 @@ def sample_lengths(
     switches = scene.switch_times(frame)  # (rods, 2 ends, 2)
     knots = [_knots(switches[r].ravel(), t_range) for r in range(scene.n_rods)]
     return refine(lambda t: scene.lengths(t, frame), knots, tol_px / px_per_length)
+
+
+@dataclass(frozen=True)
+class Sampler:
+    """How the diagrams sample their curves: adaptively to ``tol_px`` (the app, the exports), or,
+    with ``fixed_n``, at that many equally spaced times (what ``rigidrel bench`` compares with)."""
+
+    tol_px: float = TOLERANCE_PX
+    fixed_n: int | None = None
+
+    def worldlines(
+        self, scene: rr.Scene, frame: rr.Frame, fractions: FloatArray, t_range: tuple[float, float], px_per_x: float
+    ) -> list[list[Sampled]]:
+        """``[rod][fraction]`` worldlines over ``t_range`` of the frame."""
+        if self.fixed_n is None:
+            return sample_worldlines(scene, frame, fractions, t_range, px_per_x, self.tol_px)
+        t = np.linspace(t_range[0], t_range[1], self.fixed_n)
+        x = scene.material_positions(fractions, t, frame)
+        return [[Sampled(t, x[r, k]) for k in range(fractions.size)] for r in range(scene.n_rods)]
+
+    def lengths(
+        self, scene: rr.Scene, frame: rr.Frame, t_range: tuple[float, float], px_per_length: float
+    ) -> list[Sampled]:
+        """Each rod's equal-time length against frame time over ``t_range``."""
+        if self.fixed_n is None:
+            return sample_lengths(scene, frame, t_range, px_per_length, self.tol_px)
+        t = np.linspace(t_range[0], t_range[1], self.fixed_n)
+        lengths = scene.lengths(t, frame)
+        return [Sampled(t, lengths[r]) for r in range(scene.n_rods)]
+
+
+#: The app's sampler: chord error below half a pixel.
+ADAPTIVE = Sampler()

@@ -10,7 +10,6 @@ import sys
 import threading
 import time
 import warnings
-from collections.abc import Iterator
 from importlib import metadata
 from typing import Any
 
@@ -143,15 +142,6 @@ class App:
         self.stop()
 
 
-@contextlib.contextmanager
-def running(host: str = "127.0.0.1", port: int = 8080) -> Iterator[App]:
-    app = App(host, port)
-    try:
-        yield app
-    finally:
-        app.stop()
-
-
 def serve(host: str = "127.0.0.1", port: int = 8080) -> int:
     """Run until Ctrl-C or SIGTERM; print the URL the server really got."""
     done = threading.Event()
@@ -163,7 +153,7 @@ def serve(host: str = "127.0.0.1", port: int = 8080) -> int:
     # shell inherits SIGINT as *ignored*, and Python then raises no KeyboardInterrupt.
     signal.signal(signal.SIGINT, _terminate)
     signal.signal(signal.SIGTERM, _terminate)
-    with running(host, port) as app:
+    with App(host, port) as app:
         print(f"rigidrel: serving on {app.url}  (Ctrl-C to stop)", flush=True)
         while not done.wait(0.5):
             pass

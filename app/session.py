@@ -17,7 +17,6 @@ import viser
 
 from rigidrel_core import SceneKind
 
-from .diagrams import length_now, minkowski_now
 from .draw import JsonFigure
 from .drawing import (
     CONTROL_PX,
@@ -35,7 +34,6 @@ from .drawing import (
     nice_step,
     readout_markdown,
 )
-from .lanes import lane_static
 from .settings import (
     CUSTOM_FRAME,
     PRESETS,
@@ -45,7 +43,6 @@ from .settings import (
     Settings,
     frame_choices,
     resolve,
-    with_value,
 )
 from .viser_scene import LaneRenderer
 
@@ -65,7 +62,13 @@ class SliderSpec:
     step: float
     hint: str
     marks: tuple[tuple[float, str], ...] | None = None
+    scenes: frozenset[SceneKind] = frozenset(SceneKind)
+    """The scenes the slider applies to (hidden for the others)."""
 
+
+_ACCELERATIONS = frozenset({SceneKind.CONSTANT_ACCELERATION, SceneKind.DECELERATION})
+_COLLISIONS = frozenset({SceneKind.WALL_COLLISION, SceneKind.ROD_COLLISION})
+_ROD_COLLISION = frozenset({SceneKind.ROD_COLLISION})
 
 SLIDERS = {
     spec.field: spec
@@ -79,9 +82,12 @@ SLIDERS = {
             0.01,
             "Front-end proper acceleration times rest length; the back end gets a'_F/(1 - a'_F L0). "
             "1 is the impulsive limit.",
+            scenes=_ACCELERATIONS,
         ),
-        SliderSpec("eps", "ε (restitution)", 0.0, 1.0, 0.01, "0: the rods stick (crash), 1: elastic"),
-        SliderSpec("v2", "V2", -0.99, 0.99, 0.01, "Velocity of rod 2 (must be below V1)"),
+        SliderSpec(
+            "eps", "ε (restitution)", 0.0, 1.0, 0.01, "0: the rods stick (crash), 1: elastic", scenes=_COLLISIONS
+        ),
+        SliderSpec("v2", "V2", -0.99, 0.99, 0.01, "Velocity of rod 2 (must be below V1)", scenes=_ROD_COLLISION),
         SliderSpec(
             "log_mass_ratio",
             "log10 M2/M1",
@@ -90,8 +96,9 @@ SLIDERS = {
             0.01,
             "Mass ratio M2/M1 on a log scale",
             ((-2.0, "0.01"), (-1.0, "0.1"), (0.0, "1"), (1.0, "10"), (2.0, "100")),
+            scenes=_ROD_COLLISION,
         ),
-        SliderSpec("length_ratio", "L2/L1", 0.1, 5.0, 0.05, "Rest length of rod 2 in rod 1's"),
+        SliderSpec("length_ratio", "L2/L1", 0.1, 5.0, 0.05, "Rest length of rod 2 in rod 1's", scenes=_ROD_COLLISION),
         SliderSpec(
             "beta", "β (custom)", -0.99, 0.99, 0.01, "Velocity of the custom frame; moving it selects the custom frame"
         ),
@@ -111,10 +118,10 @@ class Session:
         self.speed = 1.0
         self.now = 0.0
         self._last_plot = 0.0
-        self._last_slider = 0.0
         self._notice = ""
         self.closed = False
-        self._slider_field: dict[str, str] = {}
+        self.sliders: dict[str, viser.GuiSliderHandle[float]] = {}
+        """One slider per field of :class:`Settings` it holds (:data:`SLIDERS`)."""
         resolved = resolve(self.settings)
         assert isinstance(resolved, Resolved)
         self.drawn: Drawn | None = None
@@ -136,12 +143,9 @@ class Session:
                 hint="Reproduce the paper's Figs. 1, 3 and 4 exactly",
             )
             self.scene_dd = gui.add_dropdown("Scene", list(SCENE_LABELS.values()), initial_value=SCENE_LABELS[s.scene])
-            self.v_slider = self._setting_slider(SLIDERS["v"])
-            self.a_slider = self._setting_slider(SLIDERS["a_front_length"])
-            self.eps_slider = self._setting_slider(SLIDERS["eps"])
-            self.v2_slider = self._setting_slider(SLIDERS["v2"])
-            self.m_slider = self._setting_slider(SLIDERS["log_mass_ratio"])
-            self.l_slider = self._setting_slider(SLIDERS["length_ratio"])
+            for field in SLIDERS:
+                if field != "beta":
+                    self._setting_slider(SLIDERS[field])
             self.overlay_cb = gui.add_checkbox(
                 "Fig. 1 dashed",
                 s.overlay_impulsive,
@@ -155,7 +159,7 @@ class Session:
                 initial_value=s.frame,
                 hint="The lower lane and the second diagram are drawn in this frame",
             )
-            self.beta_slider = self._setting_slider(SLIDERS["beta"])
+            self._setting_slider(SLIDERS["beta"])
         with gui.add_folder("Playback"):
             self.play_btn = gui.add_button("Play", icon=viser.Icon.PLAYER_PLAY)
             self.time_slider = gui.add_slider(
@@ -190,14 +194,13 @@ class Session:
             # the docked panels change the canvas' shape after connect: refit once it is known
             if abs(camera.aspect - self._aspect) > 0.02 and self.fit_cb.value and self.drawn is not None:
                 self._aspect = camera.aspect
-                d = self.drawn
-                self.fit_camera(d.x_range[0] / d.geometry.unit, d.x_range[1] / d.geometry.unit)
+                self.fit_camera(self.drawn.lane_x_range)
 
         self._wire()
 
-    def _setting_slider(self, spec: SliderSpec) -> viser.GuiSliderHandle[float]:
-        """A slider for one field of :class:`Settings`; remembered so a refused value can be undone."""
-        handle = self.client.gui.add_slider(
+    def _setting_slider(self, spec: SliderSpec) -> None:
+        """A slider for one field of :class:`Settings` (in :attr:`sliders`)."""
+        self.sliders[spec.field] = self.client.gui.add_slider(
             spec.label,
             min=spec.lo,
             max=spec.hi,
@@ -206,8 +209,6 @@ class Session:
             marks=spec.marks,
             hint=spec.hint,
         )
-        self._slider_field[handle._impl.uuid] = spec.field
-        return handle
 
     def _wire(self) -> None:
         """Every control's callback. Values are checked here, on the server: a client that
@@ -226,12 +227,9 @@ class Session:
         def setting(handle: Any, field: str) -> None:
             on_user(handle, lambda v: self.change(field, v))
 
-        setting(self.v_slider, "v")
-        setting(self.a_slider, "a_front_length")
-        setting(self.eps_slider, "eps")
-        setting(self.v2_slider, "v2")
-        setting(self.m_slider, "log_mass_ratio")
-        setting(self.l_slider, "length_ratio")
+        for field, handle in self.sliders.items():
+            if field != "beta":
+                setting(handle, field)
         setting(self.overlay_cb, "overlay_impulsive")
         setting(self.frame_dd, "frame")
 
@@ -239,7 +237,7 @@ class Session:
             with self.lock:
                 self._try(replace(self.settings, beta=beta, frame=CUSTOM_FRAME))
 
-        on_user(self.beta_slider, custom_frame)
+        on_user(self.sliders["beta"], custom_frame)
 
         def scene(label: str) -> None:
             self.change("scene", next(k for k, name in SCENE_LABELS.items() if name == label))
@@ -309,7 +307,7 @@ class Session:
 
     def _restore(self, handle: Any) -> None:
         """Put a control back to what the session holds (after a refused value)."""
-        field = self._slider_field.get(handle._impl.uuid)
+        field = next((f for f, h in self.sliders.items() if h is handle), None)
         if field is not None:
             handle.value = float(getattr(self.settings, field))
         elif handle is self.frame_dd:
@@ -350,7 +348,7 @@ class Session:
     def change(self, field: str, value: object) -> None:
         """A control moved: try the new settings; on failure keep the scene and explain."""
         with self.lock:
-            self._try(with_value(self.settings, field, value))
+            self._try(replace(self.settings, **{field: value}))
 
     def _try(self, new: Settings, refit: bool | None = None) -> None:
         """Apply ``new`` if it makes a scene; else show why. The camera refits if ``refit``,
@@ -374,23 +372,11 @@ class Session:
         """Show the controls that apply to the scene; mirror settings changed by presets."""
         s = self.settings
         kind = s.scene
-        collision = kind is SceneKind.ROD_COLLISION
-        self.v_slider.label = "V1" if collision else "V"
-        self.a_slider.visible = kind in (SceneKind.CONSTANT_ACCELERATION, SceneKind.DECELERATION)
-        self.eps_slider.visible = kind in (SceneKind.WALL_COLLISION, SceneKind.ROD_COLLISION)
-        self.v2_slider.visible = collision
-        self.m_slider.visible = collision
-        self.l_slider.visible = collision
+        self.sliders["v"].label = "V1" if kind is SceneKind.ROD_COLLISION else "V"
         self.overlay_cb.visible = kind is SceneKind.CONSTANT_ACCELERATION
-        for handle, value in (
-            (self.v_slider, s.v),
-            (self.a_slider, s.a_front_length),
-            (self.eps_slider, s.eps),
-            (self.v2_slider, s.v2),
-            (self.m_slider, s.log_mass_ratio),
-            (self.l_slider, s.length_ratio),
-            (self.beta_slider, s.beta),
-        ):
+        for field, handle in self.sliders.items():
+            handle.visible = kind in SLIDERS[field].scenes
+            value = getattr(s, field)
             if handle.value != value:
                 handle.value = value
         if self.overlay_cb.value != s.overlay_impulsive:
@@ -416,15 +402,14 @@ class Session:
         self.time_slider.min, self.time_slider.max = d.window
         self.time_slider.step = nice_step(d.window[1] - d.window[0])
         self.now = min(max(self.now, d.window[0]), d.window[1])
-        x0, x1 = d.x_range[0] / d.geometry.unit, d.x_range[1] / d.geometry.unit
-        self.renderer.set_static([lane_static(d.geometry, r, resolved.scene.origin_event) for r in d.lane_ranges])
+        self.renderer.set_static(d.lane_statics())
         if refit:
-            self.fit_camera(x0, x1)
+            self.fit_camera(d.lane_x_range)
         self.readout.content = readout_markdown(resolved)
         self.draw_now(force_plots=True)
 
-    def fit_camera(self, x0: float, x1: float) -> None:
-        pose = camera_pose(x0, x1, self.client.camera.aspect)
+    def fit_camera(self, lane_x_range: tuple[float, float]) -> None:
+        pose = camera_pose(lane_x_range, self.client.camera.aspect)
         c = self.client.camera
         c.up_direction = pose.up
         c.fov = pose.fov
@@ -443,20 +428,9 @@ class Session:
             self.renderer.update(states, d.geometry.clock_radius, labels=slow)
             if slow:
                 self._last_plot = wall
-                self.lab_plot.figure = cast(
-                    go.Figure,
-                    JsonFigure(d.lab_chart.with_dynamic(minkowski_now(d.lab_view, now, d.span, states[0].ends))),
-                )
-                self.frame_plot.figure = cast(
-                    go.Figure,
-                    JsonFigure(d.frame_chart.with_dynamic(minkowski_now(d.frame_view, now, d.span, states[1].ends))),
-                )
-                self.length_plot.figure = cast(
-                    go.Figure,
-                    JsonFigure(
-                        d.length_chart.with_dynamic(length_now(now, d.length_top, (states[0].ends, states[1].ends)))
-                    ),
-                )
+                figures = d.plot_figures(now, states)
+                for plot, figure in zip((self.lab_plot, self.frame_plot, self.length_plot), figures, strict=True):
+                    plot.figure = cast(go.Figure, JsonFigure(figure))
                 self.time_slider.value = round(now, 6)
 
     def tick(self, dt: float) -> None:

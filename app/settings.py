@@ -7,7 +7,7 @@ the scene: invalid combinations come back as a message, never as an exception.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from enum import StrEnum
 
 import rigidrel_core as rr
@@ -91,6 +91,24 @@ def default_frame(scene: rr.Scene) -> str:
     return "barycentric" if "barycentric" in scene.frames else "rod after"
 
 
+def choose_frame(scene: rr.Scene, frame: rr.Frame | str | float | None) -> rr.Frame:
+    """The frame a user named: ``None`` for :func:`default_frame`, a :class:`~rigidrel_core.Frame`,
+    one of the scene's preset names, or a velocity in (-1, 1) (a number or its text)."""
+    if frame is None:
+        return scene.frames[default_frame(scene)]
+    if isinstance(frame, rr.Frame):
+        return frame
+    if isinstance(frame, str):
+        if frame in scene.frames:
+            return scene.frames[frame]
+        try:
+            frame = float(frame)
+        except ValueError:
+            presets = ", ".join(repr(k) for k in scene.frames)
+            raise rr.ParameterError("frame", f"a velocity in (-1, 1) or one of {presets}", frame) from None
+    return rr.Frame.from_velocity(frame)
+
+
 def frame_choices(scene: rr.Scene) -> tuple[str, ...]:
     return (*scene.frames.keys(), CUSTOM_FRAME)
 
@@ -119,7 +137,3 @@ def _explain(s: Settings, exc: ValueError) -> str:
             "Lower V2 or raise V1; the last valid scene stays on screen."
         )
     return f"{exc}. The last valid scene stays on screen."
-
-
-def with_value(s: Settings, field: str, value: object) -> Settings:
-    return replace(s, **{field: value})

@@ -25,7 +25,7 @@ event, the origin):
     \quad\text{(hyperbola)},
 
 with ``a`` the inertial tangent's lab intercept and ``X'_h`` the hyperbola's ``t' = 0``
-crossing, each formed without cancellation (see :meth:`RigidMotion.plan`). Nothing
+crossing, each formed without cancellation (see :func:`plan_motions`). Nothing
 subtracts nearly equal numbers: the hyperbola's rise is a product over a sum of square
 roots, and every rapidity difference comes from :func:`relative_rapidity` (double-double
 velocities). Near the origin an ultra-relativistic rod keeps its length L/γ to full
@@ -82,10 +82,6 @@ class RigidMotion:
     """Lab x of the left end's vertex: ``horizon_x + sign * radius_left``, stored exactly."""
     velocity_initial: ExactVelocity
     velocity_final: ExactVelocity
-
-    def plan(self, frame: Frame, fractions: FloatArray) -> MotionPlan:
-        """Per-frame constants for the material points ``fractions`` (see :func:`plan_motions`)."""
-        return plan_motions((self,), frame, fractions)
 
 
 def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatArray) -> MotionPlan:

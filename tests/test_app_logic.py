@@ -10,9 +10,9 @@ import pytest
 
 import rigidrel_core as rr
 from app import camera as cam
-from app.diagrams import View, length_static, minkowski_now, minkowski_static
+from app.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from app.draw import Chart, Label, Points, Polyline, SplicedFigure, Style, decode_array, event_label
-from app.drawing import build_drawing, camera_pose, equal_scale_ranges
+from app.drawing import build_drawing, camera_pose, lane_states
 from app.lanes import TICK_FRACTIONS, lane_geometry, lane_state
 from app.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
 from app.settings import CUSTOM_FRAME, PRESETS, Preset, Resolved, Settings, resolve
@@ -165,7 +165,7 @@ def test_wall_lane_has_the_wall_moving_in_a_boosted_frame() -> None:
 
 
 def test_camera_projection_and_fit() -> None:
-    pose = camera_pose(-1.0, 2.0, aspect=0.8)
+    pose = camera_pose((-1.0, 2.0), aspect=0.8)
     w, h = 800, 1000
     centre = cam.project(np.array([pose.look_at]), pose, w, h)[0]
     assert np.allclose(centre, (w / 2, h / 2))
@@ -193,3 +193,19 @@ def test_every_scene_builds_a_drawing(settings: Settings) -> None:
                 assert np.all(np.isfinite(decode_array(trace[axis])) | np.isnan(decode_array(trace[axis])))
     assert d.window[0] < 0.0 < d.window[1] or d.window[0] < d.window[1]
     assert math.isfinite(d.x_range[0]) and d.x_range[0] < d.x_range[1]
+
+
+def test_playback_markers_come_from_the_core() -> None:
+    r = resolve(PRESETS[Preset.FIG3])
+    assert isinstance(r, Resolved)
+    d = build_drawing(r)
+    now = 0.4
+    states = lane_states(d, now)
+    lab_json, frame_json, length_json = d.plot_figures(now, states)
+    # the rods' ends on each diagram, and their equal-time lengths on the length plot
+    for text, state in ((lab_json, states[0]), (frame_json, states[1])):
+        ends = json.loads(text)["data"][-1]
+        np.testing.assert_array_equal(decode_array(ends["x"]), state.ends.ravel())
+    lengths = json.loads(length_json)["data"][-1]
+    expected = np.concatenate([r.scene.lengths(now), r.scene.lengths(now, r.frame)])
+    np.testing.assert_array_equal(decode_array(lengths["y"]), expected)

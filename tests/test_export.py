@@ -64,6 +64,8 @@ def test_diagram_images(exported: Path) -> None:
     svg = (exported / "rod-collision-diagram.svg").read_text()
     assert svg.startswith("<svg") and svg.count("<path") > 10
     assert "Minkowski diagram" in svg
+    # no --frame: the app's default frame (a collision's barycentric frame), not the lab twice
+    assert "barycentric" in svg
 
 
 def test_gif_and_mp4_animate(exported: Path) -> None:

@@ -10,6 +10,7 @@ from plotly.subplots import make_subplots
 
 from app.sampling import TOLERANCE_PX
 
+from .methods.mpmath_slices import ROUNDING_LEVEL
 from .runner import RegimeRow, ThroughputPoint
 from .sampling_study import SceneStudy
 from .scenes import Regime
@@ -26,8 +27,6 @@ SERIES_STYLE: dict[str, tuple[str, str]] = {
 }
 #: Where a series writes its first and last setting beside its markers (apart from the others).
 LABEL_POSITION = {"solve_ivp RK45": "middle left", "solve_ivp DOP853": "middle right", "spacetimelib": "top center"}
-#: Errors below this are float64 rounding (a few ulp): shaded in the speed-accuracy panels.
-ROUNDING_LEVEL = 1e-15
 #: Errors are drawn between these (a failed method at the top).
 ERROR_FLOOR = 1e-17
 ERROR_FAILED = 1e6

@@ -33,6 +33,7 @@ from app.sampling import TOLERANCE_PX
 from .charts import sampling_figure, speed_accuracy_figure, stability_figure, throughput_figure
 from .config import FULL, QUICK, BenchConfig
 from .methods import MethodName
+from .methods.mpmath_slices import ROUNDING_LEVEL
 from .output import ChromiumUnavailable, ImageWriter, plain, write_html, write_json
 from .runner import CaseResult, RegimeRow, ThroughputPoint, regime_rows, run_case, throughput, warm_up
 from .sampling_study import STUDY_SCENES, SceneStudy, run_study
@@ -99,10 +100,9 @@ def _environment() -> dict[str, Any]:
     }
 
 
-#: Errors within this factor of each other count as equal ...
+#: Errors within this factor of each other count as equal (and so do all errors at float64's
+#: rounding level, :data:`~app.bench.methods.mpmath_slices.ROUNDING_LEVEL`).
 EQUAL_ERROR_FACTOR = 10.0
-#: ... and so do all errors at float64's rounding level (a few ulp).
-ROUNDING_LEVEL = 1e-15
 
 
 def dominance(rows: Sequence[RegimeRow]) -> dict[str, list[str]]:

@@ -1,7 +1,8 @@
 """Files of a bench run: the JSON table, and the charts as HTML and PNG (kaleido + the system Chromium).
 
 The HTML files load plotly.js from its CDN (``include_plotlyjs="cdn"``): each is then a
-few hundred kB instead of 4.7 MB. The PNGs are the offline copies.
+few hundred kB instead of 4.7 MB. The PNGs are the offline copies, drawn by the same system
+Chromium as the exports' (:mod:`app.export.images`); nothing is downloaded.
 """
 
 from __future__ import annotations
@@ -11,7 +12,6 @@ import enum
 import json
 import math
 import numbers
-import os
 import threading
 import time
 import warnings
@@ -21,19 +21,10 @@ from typing import Any
 import plotly.graph_objects as go
 import plotly.io as pio
 
-#: Debian's Chromium; other installs are looked up the way kaleido does. Nothing is ever downloaded.
-CHROMIUM = "/usr/bin/chromium"
+from app.export.images import start_kaleido, stop_kaleido
+
 #: Deadline for the browser's first figure (it starts in about 3 s on an idle machine).
 STARTUP_SECONDS = 90.0
-
-
-def find_chromium() -> str | None:
-    """``/usr/bin/chromium`` if it is there, else the Chromium or Chrome choreographer (kaleido) would find."""
-    if os.access(CHROMIUM, os.X_OK):
-        return CHROMIUM
-    from choreographer.browsers.chromium import Chromium
-
-    return Chromium.find_browser(skip_local=False)
 
 
 def plain(obj: Any) -> Any:
@@ -78,13 +69,7 @@ class ImageWriter:
     def __enter__(self) -> ImageWriter:
         warnings.filterwarnings("ignore", message="The kopts argument is ignored if using a server")
         try:
-            import kaleido
-
-            browser = find_chromium()
-            if browser is None:
-                self.error = _why(FileNotFoundError("no Chromium or Chrome executable found"))
-                return self
-            kaleido.start_sync_server(path=browser, mathjax=False, n=1, timeout=120, silence_warnings=True)
+            start_kaleido(timeout=120.0)
             self._started = True
         except Exception as exc:  # kaleido raises its own error types; any failure means no PNGs
             self.error = _why(exc)
@@ -98,16 +83,14 @@ class ImageWriter:
         worker.start()
         worker.join(STARTUP_SECONDS)
         if worker.is_alive():
-            self.error = _why(TimeoutError(f"{browser} did not render a figure within {STARTUP_SECONDS:g} s"))
+            self.error = _why(TimeoutError(f"Chromium did not render a figure within {STARTUP_SECONDS:g} s"))
         elif first:
             self.baseline_seconds = first[0]
         return self
 
     def __exit__(self, *exc: object) -> None:
         if self._started and self.error is None:
-            import kaleido
-
-            kaleido.stop_sync_server(silence_warnings=True)
+            stop_kaleido()
 
     def write_png(self, fig: go.Figure | dict[str, Any], path: Path, width: int, height: int) -> None:
         """Render ``fig`` to ``path``; raises :class:`ChromiumUnavailable` with the reason."""
@@ -138,7 +121,4 @@ class ImageWriter:
 def _why(exc: BaseException) -> str:
     text = str(exc).strip().splitlines()
     first = text[0] if text else type(exc).__name__
-    return (
-        f"PNG charts need Chromium or Chrome (looked for {CHROMIUM} and on PATH; nothing is downloaded): "
-        f"{type(exc).__name__}: {first}"
-    )
+    return f"PNG charts need Chromium (nothing is downloaded): {type(exc).__name__}: {first}"

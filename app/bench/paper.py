@@ -38,6 +38,13 @@ def textbook_gamma(v: float) -> float:
     return 1.0 / math.sqrt(1.0 - v * v)
 
 
+def inertial_slice(x0: float, t0: float, v: float, beta: float, gamma: float, t_frame: FloatArray) -> FloatArray:
+    """``x'`` at frame times ``t_frame`` of the lab line ``x = x0 + v (t - t0)``, as printed: the lab time
+    ``t = (t'/gamma + beta (x0 - v t0)) / (1 - beta v)`` of each slice, then ``x' = gamma (x - beta t)``."""
+    t = (t_frame / gamma + beta * (x0 - v * t0)) / (1.0 - beta * v)
+    return gamma * ((x0 + v * (t - t0)) - beta * t)
+
+
 def textbook_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> tuple[float, float]:
     """Sec. 6 as printed: ``u = (M1 g1 V1 + M2 g2 V2)/(M1 g1 + M2 g2)``, ``bar V = (V - u)/(1 - u V)``,
     ``bar g' bar V' = -eps bar g bar V`` (Eq. (epsilon)), ``V' = (u + bar V')/(1 + u bar V')`` (Eq. (vp))."""

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .methods import FloatArray, MethodName, MethodSetting, core, ivp, polyline, textbook
+from .methods import FloatArray, MethodName, MethodSetting, core, ivp, mpmath_slices, polyline, textbook
 from .methods.mpmath_slices import ReferenceSlices, reference_slices, relative_errors
 from .scenes import CASES, BenchCase, BenchScene, Regime, sample_times
 
@@ -42,6 +42,10 @@ class Timing:
     max_repeats: int = 25
     min_seconds: float = 0.05
     max_seconds: float = 1.0
+
+
+#: One call, no repeats (mpmath, and the untimed stability maps).
+ONCE = Timing(1, 1, 0.0, 0.0)
 
 
 @dataclass(frozen=True)
@@ -237,19 +241,15 @@ def throughput(
     frame, plus a marginal cost per sample). A method stops growing once one call takes longer
     than ``max_call_seconds``; mpmath is timed once per count."""
     out: list[ThroughputPoint] = []
-    mpmath = MethodSetting(MethodName.MPMATH, MPMATH_SERIES, MPMATH_SETTING, _mpmath_positions)
+    mpmath = MethodSetting(MethodName.MPMATH, MPMATH_SERIES, MPMATH_SETTING, mpmath_slices.positions)
     for ms in (*settings, mpmath):
-        once = Timing(1, 1, 0.0, 0.0) if ms.method is MethodName.MPMATH else timing
+        how = ONCE if ms.method is MethodName.MPMATH else timing
         for n in counts:
             t = sample_times(case, n)
-            _, failure, seconds, _ = timed(functools.partial(ms.evaluate, case.scene, case.frame_velocity, t), once)
+            _, failure, seconds, _ = timed(functools.partial(ms.evaluate, case.scene, case.frame_velocity, t), how)
             if failure is not None:
                 break
             out.append(ThroughputPoint(ms.method, ms.series, ms.setting, int(t.size), seconds / t.size))
             if seconds > max_call_seconds:
                 break
     return out
-
-
-def _mpmath_positions(scene: BenchScene, frame_velocity: float, t: FloatArray) -> FloatArray:
-    return reference_slices(scene, frame_velocity, t).hi

@@ -8,7 +8,7 @@ alternative is a fixed number ``N`` of equally spaced times per curve.
 
 For a few of the app's scenes this module rebuilds the whole drawing
 (:func:`app.drawing.build_drawing`, what every slider change costs on the server) once with
-the app's samplers and once with fixed-``N`` samplers swapped in, and records
+the app's sampler and once with a fixed-``N`` :class:`~app.sampling.Sampler` passed in, and records
 
 * points used: all samples of all curves of the drawing;
 * max deviation: the largest horizontal (worldlines) or vertical (lengths) distance, in
@@ -20,21 +20,18 @@ the app's samplers and once with fixed-``N`` samplers swapped in, and records
 
 from __future__ import annotations
 
-import contextlib
 import json
 import time
-from collections.abc import Callable, Iterator, Sequence
-from dataclasses import dataclass, replace
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
-from unittest import mock
 
 import numpy as np
 import numpy.typing as npt
 
 import rigidrel_core as rr
-from app import diagrams
 from app.drawing import LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX, Drawn, build_drawing
-from app.sampling import TOLERANCE_PX, Sampled, sample_lengths, sample_worldlines
+from app.sampling import ADAPTIVE, TOLERANCE_PX, Sampled, Sampler
 from app.settings import PRESETS, Preset, Resolved, Settings, resolve
 from rigidrel_core import SceneKind
 
@@ -102,72 +99,32 @@ class SceneStudy:
         return self.fixed[-1]
 
 
-def _fixed_times(t_range: tuple[float, float], n: int) -> FloatArray:
-    return np.linspace(t_range[0], t_range[1], n)
+@dataclass(frozen=True)
+class _RecordingSampler(Sampler):
+    """A sampler that also keeps every curve it draws, with the exact curve to compare it with."""
 
+    curves: list[_Curve] = field(default_factory=list)
 
-def _fixed_worldlines(n: int) -> Callable[..., list[list[Sampled]]]:
-    def sampler(
-        scene: rr.Scene,
-        frame: rr.Frame,
-        fractions: FloatArray,
-        t_range: tuple[float, float],
-        px_per_x: float,
-        tol_px: float = TOLERANCE_PX,
+    def worldlines(
+        self, scene: rr.Scene, frame: rr.Frame, fractions: FloatArray, t_range: tuple[float, float], px_per_x: float
     ) -> list[list[Sampled]]:
-        t = _fixed_times(t_range, n)
-        x = scene.material_positions(fractions, t, frame)
-        return [[Sampled(t, x[r, k]) for k in range(fractions.size)] for r in range(scene.n_rods)]
-
-    return sampler
-
-
-def _fixed_lengths(n: int) -> Callable[..., list[Sampled]]:
-    def sampler(
-        scene: rr.Scene,
-        frame: rr.Frame,
-        t_range: tuple[float, float],
-        px_per_length: float,
-        tol_px: float = TOLERANCE_PX,
-    ) -> list[Sampled]:
-        t = _fixed_times(t_range, n)
-        lengths = scene.lengths(t, frame)
-        return [Sampled(t, lengths[r]) for r in range(scene.n_rods)]
-
-    return sampler
-
-
-@contextlib.contextmanager
-def _samplers(kind: SamplerKind, n: int, curves: list[_Curve] | None) -> Iterator[None]:
-    """Swap the diagram builders' samplers (fixed N, or the app's own) and record what they draw."""
-    worldlines = sample_worldlines if kind == "adaptive" else _fixed_worldlines(n)
-    lengths = sample_lengths if kind == "adaptive" else _fixed_lengths(n)
-
-    def recorded_worldlines(
-        scene: rr.Scene, frame: rr.Frame, fractions: FloatArray, t_range: tuple[float, float], px_per_x: float
-    ) -> list[list[Sampled]]:
-        out = worldlines(scene, frame, fractions, t_range, px_per_x)
-        if curves is not None:
-            for r, rod in enumerate(out):
-                for k, s in enumerate(rod):
-                    exact = _worldline_exact(scene, frame, float(fractions[k]), r)
-                    curves.append(_Curve(s, exact, px_per_x))
+        out = super().worldlines(scene, frame, fractions, t_range, px_per_x)
+        for r, rod in enumerate(out):
+            for k, s in enumerate(rod):
+                self.curves.append(_Curve(s, _worldline_exact(scene, frame, float(fractions[k]), r), px_per_x))
         return out
 
-    def recorded_lengths(
-        scene: rr.Scene, frame: rr.Frame, t_range: tuple[float, float], px_per_length: float
+    def lengths(
+        self, scene: rr.Scene, frame: rr.Frame, t_range: tuple[float, float], px_per_length: float
     ) -> list[Sampled]:
-        out = lengths(scene, frame, t_range, px_per_length)
-        if curves is not None:
-            for r, s in enumerate(out):
-                curves.append(_Curve(s, _length_exact(scene, frame, r), px_per_length))
+        out = super().lengths(scene, frame, t_range, px_per_length)
+        for r, s in enumerate(out):
+            self.curves.append(_Curve(s, _length_exact(scene, frame, r), px_per_length))
         return out
 
-    with (
-        mock.patch.object(diagrams, "sample_worldlines", recorded_worldlines),
-        mock.patch.object(diagrams, "sample_lengths", recorded_lengths),
-    ):
-        yield
+
+def _sampler(kind: SamplerKind, n: int) -> Sampler:
+    return ADAPTIVE if kind == "adaptive" else Sampler(fixed_n=n)
 
 
 def _worldline_exact(scene: rr.Scene, frame: rr.Frame, fraction: float, rod: int) -> Callable[[FloatArray], FloatArray]:
@@ -195,22 +152,21 @@ def _json_bytes(d: Drawn) -> int:
 
 
 def drawing(resolved: Resolved, kind: SamplerKind, n: int) -> Drawn:
-    """The app's drawing of a scene, with the app's samplers or fixed-N ones."""
-    with _samplers(kind, n, None):
-        return build_drawing(resolved)
+    """The app's drawing of a scene, with the app's sampler or a fixed-N one."""
+    return build_drawing(resolved, _sampler(kind, n))
 
 
 def measure(resolved: Resolved, kind: SamplerKind, n: int, repeats: int) -> SamplingPoint:
     """Points, deviation, best build time and payload of one drawing."""
-    curves: list[_Curve] = []
-    with _samplers(kind, n, curves):
-        drawn = build_drawing(resolved)
+    base = _sampler(kind, n)
+    recorder = _RecordingSampler(base.tol_px, base.fixed_n)
+    drawn = build_drawing(resolved, recorder)
+    curves = recorder.curves
     best = float("inf")
-    with _samplers(kind, n, None):
-        for _ in range(repeats):
-            start = time.perf_counter()
-            build_drawing(resolved)
-            best = min(best, time.perf_counter() - start)
+    for _ in range(repeats):
+        start = time.perf_counter()
+        build_drawing(resolved, base)
+        best = min(best, time.perf_counter() - start)
     return SamplingPoint(
         sampler=kind,
         n_fixed=None if kind == "adaptive" else n,

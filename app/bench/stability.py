@@ -10,15 +10,13 @@ and its max relative error against the 50-digit reference is recorded (no timing
 
 from __future__ import annotations
 
-import warnings
+import functools
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-import numpy as np
-
 from .methods import MethodSetting
 from .methods.mpmath_slices import reference_slices
-from .runner import MPMATH_SERIES, max_error
+from .runner import MPMATH_SERIES, MPMATH_SETTING, ONCE, max_error, timed
 from .scenes import BenchCase, BenchScene, Regime, rod_collision, sample_times
 
 
@@ -67,13 +65,9 @@ def stability_map(
             t = sample_times(case, n_samples)
             ref = reference_slices(case.scene, beta, t)
             for ms in settings:
-                try:
-                    with warnings.catch_warnings(), np.errstate(all="ignore"):
-                        warnings.simplefilter("ignore")
-                        out = ms.evaluate(case.scene, beta, t)
-                except (ValueError, ArithmeticError, RuntimeError) as exc:
-                    out = None
-                    failures[ms.series].append(f"V={v!r}, beta={beta!r}: {type(exc).__name__}: {exc}")
+                out, why, _, _ = timed(functools.partial(ms.evaluate, case.scene, beta, t), ONCE)
+                if why is not None:
+                    failures[ms.series].append(f"V={v!r}, beta={beta!r}: {why}")
                 rows[ms.series].append(max_error(out, ref)[0])
             rows[MPMATH_SERIES].append(max_error(ref.hi, ref)[0])
         for s in series:
@@ -84,7 +78,7 @@ def stability_map(
         frame_velocities=betas,
         samples=n_samples,
         series=series,
-        settings=(*(s.setting for s in settings), "50 digits"),
+        settings=(*(s.setting for s in settings), MPMATH_SETTING),
         errors=errors,
         failures=failures,
     )

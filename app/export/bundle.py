@@ -69,7 +69,7 @@ def export_scene(
 ) -> list[Written]:
     """Write the 3-D HTML, the slider HTML, PNG and SVG of the diagram, a GIF and (with ffmpeg) an MP4."""
     out.mkdir(parents=True, exist_ok=True)
-    stem = f"{scene.kind.value}"
+    stem = scene.kind.value
     drawn = build_drawing(Resolved(scene, frame, None))
     written: list[Written] = []
 
@@ -85,7 +85,7 @@ def export_scene(
             out / f"{stem}-diagram.html",
             lambda p: p.write_text(diagram_html(settings_for(scene, frame)), encoding="utf-8"),
         )
-    fig = print_style_diagram(scene, frame)
+    fig = slide_diagram(scene, frame)
     with image_writer() as writer:
         timed(out / f"{stem}-diagram.png", lambda p: writer.write(fig, p, 760, 640, scale=2.0))
         timed(out / f"{stem}-diagram.svg", lambda p: writer.write(fig, p, 760, 640))
@@ -97,7 +97,7 @@ def export_scene(
     return written
 
 
-def print_style_diagram(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
+def slide_diagram(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
     """The Minkowski diagram in ``frame`` with a title, for slides (PNG/SVG)."""
     fig = diagram(scene, frame, size=(760, 640)).to_dict()
     fig["layout"]["title"] = {"text": f"{scene.kind.value}: Minkowski diagram, {frame_title(frame)} frame", "x": 0.02}

@@ -14,14 +14,14 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import plotly.io as pio
 
 import rigidrel_core as rr
 from rigidrel_core import SceneKind
 
-from ..diagrams import View, frame_title, length_static, minkowski_static, window_x_range
-from ..draw import Chart, Label, dumps, item_to_traces, label_to_annotation
-from ..drawing import equal_scale_ranges
+from ..diagrams import frame_title, length_static, minkowski_in_frame
+from ..draw import Label, item_to_traces, jsonable, label_to_annotation
 from ..settings import CUSTOM_FRAME, SCENE_LABELS, Resolved, Settings, resolve
 
 #: Pixel size of the page's plot areas (the diagram and the length plot side by side).
@@ -31,57 +31,47 @@ LENGTH_PX = (420.0, 300.0)
 
 @dataclass(frozen=True)
 class SliderAxis:
+    """One page slider: which field of :class:`Settings` it sets, to which values."""
+
     name: str
+    field: str
     values: tuple[float, ...]
-    apply: Callable[[Settings, float], Settings]
     fmt: Callable[[float], str]
 
+    def apply(self, s: Settings, value: float) -> Settings:
+        """``s`` with this slider at ``value`` (the frame slider also selects the custom frame)."""
+        extra = {"frame": CUSTOM_FRAME} if self.field == "beta" else {}
+        return replace(s, **{self.field: value}, **extra)
 
-def _with_value(values: np.ndarray, value: float) -> tuple[float, ...]:
-    out = sorted({round(float(v), 4) for v in values} | {round(value, 4)})
-    return tuple(out)
+    def index(self, s: Settings) -> int:
+        """Where the settings' own value sits among the slider's values."""
+        return self.values.index(round(float(getattr(s, self.field)), 4))
+
+
+def _axis(name: str, field: str, values: npt.ArrayLike, s: Settings, fmt: Callable[[float], str]) -> SliderAxis:
+    """A slider over ``values`` and the settings' own value of ``field`` (rounded to 4 digits)."""
+    own = round(float(getattr(s, field)), 4)
+    steps = {round(v, 4) for v in np.asarray(values, dtype=np.float64).ravel().tolist()}
+    return SliderAxis(name, field, tuple(sorted(steps | {own})), fmt)
 
 
 def slider_axes(s: Settings) -> tuple[SliderAxis, SliderAxis]:
     """What the two sliders vary for this scene, around the settings' own values."""
     if s.scene is SceneKind.ROD_COLLISION:
-        lo = max(0.05, s.v2 + 0.05)
-        a = SliderAxis(
-            "V1", _with_value(np.linspace(lo, 0.95, 9), s.v), lambda st, v: replace(st, v=v), "{:.2f}".format
-        )
+        a = _axis("V1", "v", np.linspace(max(0.05, s.v2 + 0.05), 0.95, 9), s, "{:.2f}".format)
         ratios = np.log10([0.25, 0.5, 1.0, 2.0, 4.0])
-        b = SliderAxis(
-            "M2/M1",
-            _with_value(ratios, s.log_mass_ratio),
-            lambda st, v: replace(st, log_mass_ratio=v),
-            lambda v: f"{10**v:.3g}",
-        )
-        return a, b
-    a = SliderAxis("V", _with_value(np.linspace(0.1, 0.9, 9), s.v), lambda st, v: replace(st, v=v), "{:.2f}".format)
+        return a, _axis("M2/M1", "log_mass_ratio", ratios, s, lambda v: f"{10**v:.3g}")
+    a = _axis("V", "v", np.linspace(0.1, 0.9, 9), s, "{:.2f}".format)
     if s.scene is SceneKind.WALL_COLLISION:
-        b = SliderAxis(
-            "ε", _with_value(np.linspace(0.0, 1.0, 5), s.eps), lambda st, v: replace(st, eps=v), "{:.2f}".format
-        )
-    else:
-        b = SliderAxis(
-            "frame β",
-            _with_value(np.array([-0.8, -0.5, 0.0, 0.5, 0.8]), s.beta),
-            lambda st, v: replace(st, frame=CUSTOM_FRAME, beta=v),
-            "{:+.2f}".format,
-        )
-    return a, b
+        return a, _axis("ε", "eps", np.linspace(0.0, 1.0, 5), s, "{:.2f}".format)
+    return a, _axis("frame β", "beta", (-0.8, -0.5, 0.0, 0.5, 0.8), s, "{:+.2f}".format)
 
 
 def _panels(r: Resolved) -> tuple[list[dict[str, Any]], list[dict[str, Any]], dict[str, Any]]:
     """Traces, annotations and axis ranges of the diagram (in the resolved frame) and the length plot."""
     scene, frame = r.scene, r.frame
-    lab = rr.Frame.lab()
-    window = scene.time_window(frame)
-    x_range, t_range = equal_scale_ranges(window_x_range(scene, (frame,), window), window, DIAGRAM_PX)
-    other = lab if frame.key() != lab.key() else frame
-    view = View(frame, other, frame.name, "'" if frame.name != "lab" else "", "")
-    diagram: Chart = minkowski_static(scene, view, t_range, x_range, DIAGRAM_PX[0], r.overlay)
-    lengths: Chart = length_static(scene, lab, frame, window, LENGTH_PX)
+    diagram = minkowski_in_frame(scene, frame, DIAGRAM_PX, r.overlay)
+    lengths = length_static(scene, rr.Frame.lab(), frame, scene.time_window(frame), LENGTH_PX)
     traces: list[dict[str, Any]] = []
     annotations: list[dict[str, Any]] = []
     for chart, xa, ya in ((diagram, "x", "y"), (lengths, "x2", "y2")):
@@ -116,7 +106,7 @@ def diagram_figure(settings: Settings) -> dict[str, Any]:
     if not built:
         raise rr.ParameterError("parameters", "such that at least one slider combination is a valid scene", settings)
     # start where the settings are (both sliders' value lists contain them)
-    start = f"{a.values.index(round(settings.v, 4))}_{b.values.index(_b_value(settings, b))}"
+    start = f"{a.index(settings)}_{b.index(settings)}"
     if start not in built:
         start = next(iter(built))
     empty = {"type": "scatter", "x": [], "y": [], "mode": "lines", "showlegend": False, "hoverinfo": "skip"}
@@ -200,14 +190,6 @@ def diagram_figure(settings: Settings) -> dict[str, Any]:
     return {"data": first["data"], "layout": layout, "frames": frames}
 
 
-def _b_value(s: Settings, b: SliderAxis) -> float:
-    probe = b.apply(s, 0.123456)
-    for name in ("beta", "eps", "log_mass_ratio"):
-        if getattr(probe, name) == 0.123456:
-            return round(float(getattr(s, name)), 4)
-    return 0.0
-
-
 _SCRIPT = """
 var gd = document.getElementById('{plot_id}');
 var NA = gd.layout.meta.slider_a_count;
@@ -244,7 +226,7 @@ def diagram_html(settings: Settings) -> str:
     fig = diagram_figure(settings)
     return str(
         pio.to_html(
-            dumps_free(fig),
+            jsonable(fig),
             include_plotlyjs=True,
             full_html=True,
             post_script=_SCRIPT,
@@ -253,10 +235,3 @@ def diagram_html(settings: Settings) -> str:
             validate=False,
         )
     )
-
-
-def dumps_free(fig: dict[str, Any]) -> dict[str, Any]:
-    """The figure with numpy arrays as plotly typed-array dicts (what ``pio.to_html`` serialises)."""
-    import json
-
-    return json.loads(dumps(fig))

@@ -46,12 +46,23 @@ class ImageWriter:
         return path
 
 
-@contextmanager
-def image_writer() -> Iterator[ImageWriter]:
+def start_kaleido(timeout: float = 90.0) -> None:
+    """Start kaleido's one browser (the system Chromium) for the figures that follow (about 3 s)."""
     import kaleido
 
-    kaleido.start_sync_server(path=chromium_path(), mathjax=False, n=1, silence_warnings=True)
+    kaleido.start_sync_server(path=chromium_path(), mathjax=False, n=1, timeout=timeout, silence_warnings=True)
+
+
+def stop_kaleido() -> None:
+    import kaleido
+
+    kaleido.stop_sync_server(silence_warnings=True)
+
+
+@contextmanager
+def image_writer() -> Iterator[ImageWriter]:
+    start_kaleido()
     try:
         yield ImageWriter()
     finally:
-        kaleido.stop_sync_server(silence_warnings=True)
+        stop_kaleido()

@@ -15,7 +15,7 @@ from PIL import Image, ImageDraw, ImageFont
 
 from ..draw import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, plain_text, rgb
 from ..drawing import FRAME_Z, LAB_Z, Drawn, lane_states
-from ..lanes import LaneState, lane_static
+from ..lanes import LaneState
 
 _FONTS = (
     "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
@@ -40,8 +40,7 @@ class LaneRaster:
     """Maps lane coordinates (x, z) to pixels with one scale for both axes (true proportions)."""
 
     def __init__(self, drawn: Drawn, width: int) -> None:
-        u = drawn.geometry.unit
-        x0, x1 = drawn.x_range[0] / u, drawn.x_range[1] / u
+        x0, x1 = drawn.lane_x_range
         margin = _MARGIN * (x1 - x0)  # lane titles start at the ruler's left end: keep them off the edge
         self.x0, self.x1 = x0 - margin, x1 + margin
         self.z0, self.z1 = FRAME_Z - 0.45, LAB_Z + 0.6
@@ -49,7 +48,7 @@ class LaneRaster:
         self.scale = width / (self.x1 - self.x0)
         self.height = round((self.z1 - self.z0) * self.scale) // 2 * 2  # even, for video encoders
         self.drawn = drawn
-        self._static = [lane_static(drawn.geometry, r, drawn.resolved.scene.origin_event) for r in drawn.lane_ranges]
+        self._static = drawn.lane_statics()
 
     def px(self, x: np.ndarray | float, z: np.ndarray | float) -> tuple[np.ndarray, np.ndarray]:
         return (np.asarray(x) - self.x0) * self.scale, (self.z1 - np.asarray(z)) * self.scale

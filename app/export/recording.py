@@ -16,7 +16,6 @@ import numpy as np
 import viser
 
 from ..drawing import FRAME_Z, LAB_Z, PLOT_HZ, Drawn, camera_pose, lane_states
-from ..lanes import lane_static
 from ..viser_scene import LaneRenderer
 
 
@@ -42,11 +41,8 @@ def record_lanes_html(drawn: Drawn, seconds: float = 10.0, fps: float = 30.0, as
     """HTML of both lanes playing through the scene's window in ``seconds`` at ``fps`` frames per second."""
     with quiet_server() as server:
         renderer = LaneRenderer(server.scene, (LAB_Z, FRAME_Z))
-        renderer.set_static(
-            [lane_static(drawn.geometry, r, drawn.resolved.scene.origin_event) for r in drawn.lane_ranges]
-        )
-        u = drawn.geometry.unit
-        pose = camera_pose(drawn.x_range[0] / u, drawn.x_range[1] / u, aspect)
+        renderer.set_static(drawn.lane_statics())
+        pose = camera_pose(drawn.lane_x_range, aspect)
         server.initial_camera.position = pose.position
         server.initial_camera.look_at = pose.look_at
         server.initial_camera.up = pose.up

@@ -31,7 +31,7 @@ from typing import Any, Literal
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from ..paper import PaperEnd, paper_ends, textbook_gamma
+from ..paper import PaperEnd, inertial_slice, paper_ends, textbook_gamma
 from ..scenes import BenchScene
 from . import FloatArray
 
@@ -102,19 +102,14 @@ def integrate(end: PaperEnd, method: IvpMethod, rtol: float, length: float) -> I
     return IntegratedEnd(end, t_stop, x_stop, sol.sol, np.asarray(sol.t, dtype=np.float64))
 
 
-def _inertial(x0: float, t0: float, v: float, beta: float, gamma: float, t_frame: FloatArray) -> FloatArray:
-    t = (t_frame / gamma + beta * (x0 - v * t0)) / (1.0 - beta * v)
-    return gamma * ((x0 + v * (t - t0)) - beta * t)
-
-
 def end_positions(track: IntegratedEnd, beta: float, t_frame: FloatArray) -> FloatArray:
     """Steps 2-3 of the module docstring for one integrated end."""
     end = track.end
     gamma = textbook_gamma(beta)
     out = np.where(
         t_frame <= gamma * (end.t_start - beta * end.x_start),
-        _inertial(end.x_start, end.t_start, end.v_before, beta, gamma, t_frame),
-        _inertial(track.x_stop, track.t_stop, end.v_after, beta, gamma, t_frame),
+        inertial_slice(end.x_start, end.t_start, end.v_before, beta, gamma, t_frame),
+        inertial_slice(track.x_stop, track.t_stop, end.v_after, beta, gamma, t_frame),
     )
     if track.solution is None:
         return out

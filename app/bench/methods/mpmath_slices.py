@@ -19,6 +19,8 @@ from . import FloatArray
 
 #: The ends of a rod, as material fractions of its rest length.
 ENDS = (0.0, 1.0)
+#: Relative errors below this are float64 rounding (a few ulp): they count as equal.
+ROUNDING_LEVEL = 1e-15
 
 
 @dataclass(frozen=True)

@@ -16,22 +16,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..paper import PaperEnd, paper_ends, textbook_gamma
+from ..paper import PaperEnd, inertial_slice, paper_ends, textbook_gamma
 from ..scenes import BenchScene
 from . import FloatArray
-
-
-def _inertial(x0: float, t0: float, v: float, beta: float, gamma: float, t_frame: FloatArray) -> FloatArray:
-    t = (t_frame / gamma + beta * (x0 - v * t0)) / (1.0 - beta * v)
-    x = x0 + v * (t - t0)
-    return gamma * (x - beta * t)
 
 
 def end_positions(end: PaperEnd, beta: float, t_frame: FloatArray) -> FloatArray:
     """``x'`` of one end at frame times ``t_frame`` (steps 1-3 of the module docstring)."""
     gamma = textbook_gamma(beta)
-    before = _inertial(end.x_start, end.t_start, end.v_before, beta, gamma, t_frame)
-    after = _inertial(end.x_stop, end.t_stop, end.v_after, beta, gamma, t_frame)
+    before = inertial_slice(end.x_start, end.t_start, end.v_before, beta, gamma, t_frame)
+    after = inertial_slice(end.x_stop, end.t_stop, end.v_after, beta, gamma, t_frame)
     frame_start = gamma * (end.t_start - beta * end.x_start)
     frame_stop = gamma * (end.t_stop - beta * end.x_stop)
     if end.form == "kick":
