@@ -93,8 +93,8 @@ class Frame:
 
     @property
     def beta(self) -> float:
-        """The frame's velocity rounded to float64."""
-        return self.velocity.hi
+        """The frame's velocity rounded to float64, ``|beta| < 1`` (see :attr:`ExactVelocity.value`)."""
+        return self.velocity.value
 
     @property
     def rapidity(self) -> float:

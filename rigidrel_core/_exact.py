@@ -20,6 +20,9 @@ from decimal import Decimal, localcontext
 
 #: Working precision (decimal digits) of the scalar scene construction.
 DECIMAL_DIGITS = 60
+#: The largest float64 below 1 (``1 - 2**-53``): a speed closer to light than float64 can show
+#: is reported as this, so that every float velocity the core returns has ``|v| < 1``.
+BELOW_ONE = math.nextafter(1.0, 0.0)
 
 
 @dataclass(frozen=True, slots=True)
@@ -52,8 +55,10 @@ class ExactVelocity:
 
     @property
     def value(self) -> float:
-        """The velocity rounded to float64."""
-        return self.hi
+        """The velocity rounded to float64, except that a speed within half an ulp of light
+        (``gap < 5.6e-17``, which would round to 1) is rounded toward zero, to :data:`BELOW_ONE`:
+        ``|value| < 1`` always, one ulp from the exact speed at most. ``gap`` keeps the exact distance."""
+        return math.copysign(min(abs(self.hi), BELOW_ONE), self.hi)
 
     def as_decimal(self) -> Decimal:
         """``hi + lo`` as an exact decimal (the gap is not used)."""

@@ -47,7 +47,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ._boost import Frame
-from ._exact import ExactVelocity, relative_rapidity
+from ._exact import BELOW_ONE, ExactVelocity, relative_rapidity
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -290,7 +290,9 @@ class MotionPlan:
         q = np.hypot(self.column("radius"), sc)
         during = self.column("sign") * np.divide(sc, q, out=np.zeros_like(sc), where=q > 0.0)
         v = np.where(s < self.column("s_start"), self.column("w_start"), during)
-        return np.where(s >= self.column("s_stop"), self.column("w_stop"), v)
+        v = np.where(s >= self.column("s_stop"), self.column("w_stop"), v)
+        # tanh and s/hypot(rho, s) round to exactly +-1 within half an ulp of light speed
+        return np.clip(v, -BELOW_ONE, BELOW_ONE)
 
     def proper_times(self, t: FloatArray) -> FloatArray:
         """Proper time of every row at frame times ``t``, zero where the point starts changing velocity.

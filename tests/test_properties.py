@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
@@ -203,3 +204,20 @@ def test_heavy_rod_approaches_the_wall() -> None:
     # rod 2 of s hits a nearly immovable rod 1 from the right: mirror image of the wall scene
     assert math.isclose(s.final_velocities[1], wall.final_velocities[0], rel_tol=1e-8)
     assert math.isclose(s.heat, wall.heat, rel_tol=1e-6)
+
+
+def test_speeds_closer_to_light_than_float64_shows_stay_below_one() -> None:
+    """Within half an ulp of light speed (1 - |v| < 5.6e-17) tanh rounds to exactly 1; the core reports
+    the largest float below 1 instead (one ulp off at most) and keeps the exact gap."""
+    # hypothesis's find: rod 1 recoils at 1 - 1.1e-10, seen from beta = 0.999999 (rapidity -19)
+    s = rr.rod_collision(v1=0.0, v2=-0.999999999, m1=1.0, m2=3.0, l1=1.0, l2=1.0, eps=1.0)
+    t = np.linspace(*s.time_window(0.999999), 257)
+    v = s.velocities(t, 0.999999, np.linspace(0, 1, 5))
+    assert np.all(np.abs(v) < 1.0) and v.min() == -math.nextafter(1.0, 0.0)
+    # a light rod hit by a heavy one at 1 - 1e-12 leaves at 1 - 2.9e-24
+    heavy = rr.rod_collision(v1=1 - 1e-12, v2=0.0, m1=1e6, m2=1.0, l1=1.0, l2=1.0, eps=1.0)
+    assert heavy.final_velocities[1] == math.nextafter(1.0, 0.0)
+    assert heavy.rods[1].motion.velocity_final.gap == pytest.approx(2.914e-24, rel=1e-3)
+    beta = heavy.frames["rod 2 after"].beta
+    assert beta < 1.0
+    assert np.all(np.isfinite(heavy.positions([0.0, 1.0], beta)))  # a reported velocity is a valid frame
