@@ -43,6 +43,12 @@ class _OneLine(logging.Filter):
         return True
 
 
+_ONE_LINE = _OneLine()
+#: Where the websockets library logs a failed connection ("connection handler failed" comes from
+#: ``websockets.server``, e.g. when viser meets a message type it does not know).
+_WEBSOCKET_LOGGERS = ("websockets", "websockets.server")
+
+
 class App:
     """A running server. ``with App(...) as app:`` starts it; leaving the block stops it.
 
@@ -61,7 +67,8 @@ class App:
         self.version = version or app_version()
         self.errors = 0
         """Exceptions met while ticking sessions or handling client messages (each logged in one line)."""
-        logging.getLogger("websockets").addFilter(_OneLine())
+        for name in _WEBSOCKET_LOGGERS:  # a logger's filters see only its own records, not its children's
+            logging.getLogger(name).addFilter(_ONE_LINE)
         # a tick can race a tab's disconnect; viser then warns that a message will never be
         # delivered, which is exactly right and not worth a warning
         warnings.filterwarnings("ignore", message=r"Queued a \w+ on a closed connection")
