@@ -21,9 +21,8 @@ from pathlib import Path
 
 from app.server import App
 from app.settings import PRESETS, Preset
-from tests.viser_client import SWARM_WARMUP, client_swarm, swarm_result
+from tests.viser_client import SWARM_WARMUP, client_swarm, swarm_result, wait_until
 
-ROOT = Path(__file__).resolve().parents[1]
 TARGET_FPS = 25.0
 
 
@@ -35,21 +34,24 @@ def rss_mb() -> float:
 
 
 def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
+    """``clients`` tabs playing Fig. 3 for ``seconds`` (after a warm-up) with the server animating at ``fps``.
+
+    Per client: delivered rod frames per second (minimum, median), bytes per second (median);
+    for the server: errors, resident-memory growth and CPU per client over the measured window.
+    """
     with App(port=0, animation_hz=fps) as app, client_swarm(app.url, clients, seconds) as child:
-        end = time.monotonic() + 60.0
-        while len(app.sessions) < clients:
-            if time.monotonic() > end or child.poll() is not None:
-                raise RuntimeError(f"only {len(app.sessions)} of {clients} clients connected")
-            time.sleep(0.05)
+        wait_until(lambda: len(app.sessions) >= clients or child.poll() is not None, timeout=60.0)
+        if len(app.sessions) < clients:
+            raise RuntimeError(f"only {len(app.sessions)} of {clients} clients connected")
         for session in list(app.sessions.values()):
             with session.lock:
                 session._try(PRESETS[Preset.FIG3], refit=True)
                 session.set_playing(True)
-        # memory at the start and at the end of the measured window, both with every client connected
+        # memory and CPU over the measured window, with every client connected at both ends
         time.sleep(SWARM_WARMUP - 0.5)
-        mem0 = rss_mb()
+        mem0, cpu0, wall0 = rss_mb(), time.process_time(), time.perf_counter()
         time.sleep(max(0.0, seconds - 1.0))
-        mem1 = rss_mb()  # a second before the clients' window closes: all still connected
+        mem1, cpu1, wall1 = rss_mb(), time.process_time(), time.perf_counter()  # a second before the window closes
         stats = swarm_result(child, seconds)
         server_errors = app.errors
     fps_each = [s["lane_frames"] / seconds for s in stats]
@@ -59,6 +61,8 @@ def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
         "median_fps": statistics.median(fps_each),
         "errors": float(sum(len(s["errors"]) for s in stats) + server_errors),
         "memory_growth_mb": mem1 - mem0,
+        "cpu_percent_per_client": 100.0 * (cpu1 - cpu0) / (wall1 - wall0) / clients,
+        "kbytes_per_second_per_client": statistics.median(s["bytes"] for s in stats) / seconds / 1e3,
         "seconds": seconds,
     }
 

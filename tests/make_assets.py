@@ -19,7 +19,8 @@ from app.export.recording import playback_times
 from app.figures import write_figures
 from app.server import App
 from app.settings import PRESETS, Preset, Resolved
-from tests.browser.conftest import CHROMIUM, CHROMIUM_ARGS, VIEWPORT
+from tests.browser.conftest import CHROMIUM, VIEWPORT, launch_chromium
+from tests.viser_client import wait_until
 
 ASSETS = Path(__file__).resolve().parents[1] / "assets"
 
@@ -30,12 +31,11 @@ def app_screenshot(path: Path) -> None:
     from playwright.sync_api import sync_playwright
 
     with App(port=0) as app, sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+        browser = launch_chromium(p)
         page = browser.new_page(viewport=VIEWPORT)
         page.goto(app.url)
         page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
-        while not app.sessions:
-            time.sleep(0.05)
+        wait_until(lambda: app.sessions, timeout=60)
         session = next(iter(app.sessions.values()))
         with session.lock:
             session._try(replace(PRESETS[Preset.FIG3], frame="barycentric"), refit=True)

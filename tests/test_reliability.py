@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import logging
 import math
 import threading
 import time
@@ -16,42 +17,32 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from hypothesis import HealthCheck, example, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from app.server import App
-from tests.viser_client import LightClient
+from tests.viser_client import ClientLoop, LightClient, wait_until
 
 
 class Harness:
-    """An app and lightweight clients driven from a private event loop in a thread."""
+    """An app and lightweight clients driven from a :class:`ClientLoop`."""
 
     def __init__(self) -> None:
         self.app = App(port=0)
-        self.loop = asyncio.new_event_loop()
-        self.thread = threading.Thread(target=self.loop.run_forever, daemon=True)
-        self.thread.start()
+        self.loop = ClientLoop()
+        self.run = self.loop.run
         self.clients: list[LightClient] = []
-
-    def run(self, coro: Any, timeout: float = 60.0) -> Any:
-        return asyncio.run_coroutine_threadsafe(coro, self.loop).result(timeout)
 
     def connect(self, read: bool = True) -> tuple[LightClient, Any]:
         before = set(self.app.sessions)
         client = LightClient(self.app.url, read=read)
         self.run(client.connect())
-        asyncio.run_coroutine_threadsafe(client.run(3600), self.loop)
+        self.loop.start(client.run(3600))
         self.clients.append(client)
-        end = time.monotonic() + 30
-        while not set(self.app.sessions) - before:
-            assert time.monotonic() < end, "no session for the new client"
-            time.sleep(0.02)
-        session = self.app.sessions[max(set(self.app.sessions) - before)]
+        new = wait_until(lambda: set(self.app.sessions) - before, timeout=30)
+        session = self.app.sessions[max(new)]
         if read:
-            end = time.monotonic() + 30
-            while "V" not in client.gui_uuid:
-                assert time.monotonic() < end, "the client never received its controls"
-                time.sleep(0.02)
+            wait_until(lambda: "V" in client.gui_uuid, timeout=30)  # it received its controls
         return client, session
 
     def close(self) -> None:
@@ -60,16 +51,7 @@ class Harness:
             with contextlib.suppress(Exception):  # tearing down; a stalled client may not close politely
                 self.run(asyncio.wait_for(c.close(), 5.0), timeout=10)
         self.app.stop()
-
-        async def cancel_the_rest() -> None:
-            tasks = [t for t in asyncio.all_tasks() if t is not asyncio.current_task()]
-            for t in tasks:
-                t.cancel()
-            await asyncio.gather(*tasks, return_exceptions=True)
-
-        self.run(cancel_the_rest(), timeout=10)
-        self.loop.call_soon_threadsafe(self.loop.stop)
-        self.thread.join(timeout=5)
+        self.loop.close()
 
 
 @pytest.fixture(scope="module")
@@ -79,16 +61,6 @@ def harness() -> Iterator[Harness]:
         yield h
     finally:
         h.close()
-
-
-def wait_for(predicate: Any, timeout: float = 10.0) -> Any:
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        value = predicate()
-        if value:
-            return value
-        time.sleep(0.02)
-    raise AssertionError(f"timed out waiting for {predicate}")
 
 
 SLIDERS = {
@@ -126,8 +98,7 @@ def as_viser_casts(value: Any) -> float:
 @example(label="V", value="nan")
 def test_hostile_slider_values_are_refused_on_the_server(harness: Harness, label: str, value: Any) -> None:
     lo, hi = SLIDERS[label]
-    if lo <= as_viser_casts(value) <= hi:
-        return  # a legal value once cast ("1", True): not what this test is about
+    assume(not lo <= as_viser_casts(value) <= hi)  # a legal value once cast ("1", True) is not hostile
     if not harness.clients:
         harness.connect()
     client = harness.clients[0]
@@ -140,7 +111,7 @@ def test_hostile_slider_values_are_refused_on_the_server(harness: Harness, label
         client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid[label], "updates": {"value": value}})
     )
     # either viser cannot cast it (a one-line log, counted) or the session refuses it with a notice
-    wait_for(
+    wait_until(
         lambda: harness.app.errors > errors_before or session._notice != notice_before or "refused" in session._notice
     )
     time.sleep(0.05)
@@ -180,15 +151,19 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
         "part_count": 1,
         "size_bytes": 5,
     }
+
+    def dropped() -> list[logging.LogRecord]:
+        return [r for r in caplog.records if r.name.startswith("websockets")]
+
+    # viser closes the session before the websockets library logs the failure: wait for both
     harness.run(client.send_raw(upload))
-    wait_for(lambda: session.closed)
+    wait_until(lambda: session.closed and dropped())
     client2, session2 = harness.connect()
     harness.run(client2.send_raw({"type": "NoSuchMessage", "x": 1}))
-    wait_for(lambda: session2.closed)
+    wait_until(lambda: session2.closed and any("NoSuchMessage" in r.getMessage() for r in dropped()))
     # each dropped connection is one line in the server's log, never a traceback
-    dropped = [r for r in caplog.records if r.name.startswith("websockets")]
-    assert len(dropped) >= 2 and all(r.exc_info is None and "\n" not in r.getMessage() for r in dropped)
-    assert any("KeyError: 'NoSuchMessage'" in r.getMessage() for r in dropped)
+    assert len(dropped()) >= 2 and all(r.exc_info is None and "\n" not in r.getMessage() for r in dropped())
+    assert any("KeyError: 'NoSuchMessage'" in r.getMessage() for r in dropped())
     assert session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
     assert session.scene_dd.value in session.scene_dd.options
     assert session.frame_dd.value in session.frame_dd.options
@@ -214,29 +189,33 @@ def test_a_client_cannot_reach_another_session(harness: Harness) -> None:
     assert session_a.settings.v != 0.31
 
 
-def _fps(client: LightClient, seconds: float) -> float:
+def _fps(clients: list[LightClient], seconds: float) -> list[float]:
+    """Rod frames per second each client received, over one window shared by all of them."""
     t0 = time.monotonic()
-    n0 = client.stats.lane_frames
+    n0 = [c.stats.lane_frames for c in clients]
     time.sleep(seconds)
-    return (client.stats.lane_frames - n0) / (time.monotonic() - t0)
+    span = time.monotonic() - t0
+    return [(c.stats.lane_frames - n) / span for c, n in zip(clients, n0, strict=True)]
 
 
 def test_stalled_clients_do_not_slow_the_others() -> None:
+    """Tabs that stop reading must not hold up the ones that read. Relative to the same readers
+    without them, measured in this process (the absolute rate is the load benchmark's job)."""
     h = Harness()
     try:
         readers = [h.connect() for _ in range(3)]
         for _, s in readers:
             with s.lock:
                 s.set_playing(True)
-        baseline = min(_fps(c, 3.0) for c, _ in readers)
+        time.sleep(1.0)
+        baseline = min(_fps([c for c, _ in readers], 4.0))
         stalled = [h.connect(read=False) for _ in range(3)]
         for _, s in stalled:
             with s.lock:
                 s.set_playing(True)
         time.sleep(1.0)
-        with_stalled = min(_fps(c, 4.0) for c, _ in readers)
-        assert with_stalled >= 30.0, (baseline, with_stalled)
-        assert with_stalled >= 0.8 * baseline
+        with_stalled = min(_fps([c for c, _ in readers], 4.0))
+        assert baseline > 0 and with_stalled >= 0.8 * baseline, (baseline, with_stalled)
         assert h.app.errors == 0
     finally:
         h.close()
@@ -245,7 +224,9 @@ def test_stalled_clients_do_not_slow_the_others() -> None:
 def test_disconnects_and_reconnects_leak_nothing() -> None:
     h = Harness()
     try:
-        keep, _ = h.connect()
+        keep, keep_session = h.connect()
+        with keep_session.lock:
+            keep_session.set_playing(True)
         time.sleep(0.5)
         threads_before = threading.active_count()
         for _ in range(8):
@@ -256,11 +237,13 @@ def test_disconnects_and_reconnects_leak_nothing() -> None:
             c.stop()
             h.run(c.close())
             h.clients.remove(c)
-            wait_for(lambda s=s: s.closed)
-        wait_for(lambda: len(h.app.sessions) == 1)
+            wait_until(lambda s=s: s.closed)
+        wait_until(lambda: len(h.app.sessions) == 1)
         time.sleep(0.5)
         assert threading.active_count() <= threads_before + 2  # the pool's lazily started workers at most
         assert h.app.errors == 0
-        assert _fps(keep, 1.0) >= 0 and keep.stats.errors == []
+        frames = keep.stats.lane_frames
+        wait_until(lambda: keep.stats.lane_frames > frames)  # the tab that stayed still plays
+        assert keep.stats.errors == []
     finally:
         h.close()

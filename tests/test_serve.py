@@ -128,22 +128,16 @@ def test_bad_serve_arguments(args: list[str]) -> None:
 
 def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
     """SIGINT/SIGTERM while tabs are playing and one stopped reading: exit 0, no traceback, in time."""
-    import asyncio
-    import threading
+    from tests.viser_client import ClientLoop, LightClient
 
-    from tests.viser_client import LightClient
-
-    # the clients' event loop runs in its own thread (pytest may already run one here: playwright's)
-    loop = asyncio.new_event_loop()
-    thread = threading.Thread(target=loop.run_forever, daemon=True)
-    thread.start()
+    loop = ClientLoop()  # pytest may already run an event loop in this thread: playwright's
     try:
         for sig in (signal.SIGINT, signal.SIGTERM):
             with serving("-m", "app.cli", "serve", "--port", str(free_port())) as (proc, url, _):
                 clients = [LightClient(url) for _ in range(3)] + [LightClient(url, read=False)]
                 for c in clients:
-                    asyncio.run_coroutine_threadsafe(c.connect(), loop).result(30)
-                readers = [asyncio.run_coroutine_threadsafe(c.run(30), loop) for c in clients]
+                    loop.run(c.connect(), timeout=30)
+                readers = [loop.start(c.run(30)) for c in clients]
                 time.sleep(2.0)
                 t0 = time.monotonic()
                 out = stop(proc, sig)
@@ -153,8 +147,9 @@ def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
                 for r in readers:
                     r.result(30)
             assert proc.returncode == 0, out
-            assert "Traceback" not in out and "Error" not in out.replace("rigidrel: dropped", ""), out
+            # a client dropped by the shutdown is one "rigidrel: dropped ..." line; nothing else may fail
+            others = [line for line in out.splitlines() if not line.startswith("rigidrel: dropped")]
+            assert not any("Traceback" in line or "Error" in line for line in others), out
             assert took < 15.0
     finally:
-        loop.call_soon_threadsafe(loop.stop)
-        thread.join(timeout=5)
+        loop.close()

@@ -2,7 +2,7 @@
 
 Not a browser: it connects, announces a camera (viser counts a client as connected only
 after its first camera message), decodes every window the server sends, counts frames
-and can set GUI values by label, as the browser would. Wire format (viser 1.1): each
+and learns each GUI control's id by its label (to send values, as the browser would). Wire format (viser 1.1): each
 server frame is ``[u64 msgpack size][u64 zstd size][zstd(msgpack)][padding][binary
 buffers]``; client messages are plain msgpack dicts with a ``"type"`` key.
 """
@@ -14,11 +14,12 @@ import contextlib
 import json
 import subprocess
 import sys
+import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Coroutine, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import msgspec
 import viser
@@ -28,6 +29,48 @@ import zstandard
 ROOT = Path(__file__).resolve().parents[1]
 
 _DECOMPRESS = zstandard.ZstdDecompressor()
+T = TypeVar("T")
+
+
+def wait_until(predicate: Callable[[], T | None], timeout: float = 20.0, interval: float = 0.05) -> T:
+    """Poll ``predicate`` until it returns something truthy (returned); AssertionError on timeout."""
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        value = predicate()
+        if value:
+            return value
+        time.sleep(interval)
+    raise AssertionError(f"timed out after {timeout} s waiting for {getattr(predicate, '__name__', predicate)}")
+
+
+class ClientLoop:
+    """An asyncio event loop in a thread of its own, for clients driven from synchronous code
+    (the caller's thread may already run a loop: playwright's). ``close()`` cancels what is left."""
+
+    def __init__(self) -> None:
+        self.loop = asyncio.new_event_loop()
+        self._thread = threading.Thread(target=self.loop.run_forever, name="client-loop", daemon=True)
+        self._thread.start()
+
+    def run(self, coro: Coroutine[Any, Any, T], timeout: float = 60.0) -> T:
+        """Run ``coro`` on the loop and wait for its result."""
+        return asyncio.run_coroutine_threadsafe(coro, self.loop).result(timeout)
+
+    def start(self, coro: Coroutine[Any, Any, T]) -> Any:
+        """Run ``coro`` on the loop in the background; returns its concurrent future."""
+        return asyncio.run_coroutine_threadsafe(coro, self.loop)
+
+    def close(self) -> None:
+        async def cancel_the_rest() -> None:
+            tasks = [t for t in asyncio.all_tasks() if t is not asyncio.current_task()]
+            for t in tasks:
+                t.cancel()
+            await asyncio.gather(*tasks, return_exceptions=True)
+
+        with contextlib.suppress(Exception):  # tearing down: a task may already be gone
+            self.run(cancel_the_rest(), timeout=10)
+        self.loop.call_soon_threadsafe(self.loop.stop)
+        self._thread.join(timeout=5)
 
 
 def decode_frame(data: bytes) -> list[dict[str, Any]]:
@@ -58,7 +101,6 @@ def camera_message(width: int = 960, height: int = 720) -> bytes:
 @dataclass
 class Stats:
     frames: int = 0
-    messages: int = 0
     bytes: int = 0
     lane_frames: int = 0
     """Frames that moved the rods (a batched-mesh position update)."""
@@ -85,13 +127,6 @@ class LightClient:
             open_timeout=30,
         )
         await self._ws.send(camera_message())
-
-    async def set_gui(self, label: str, value: Any) -> None:
-        """As if the user moved the control labelled ``label``."""
-        uuid = self.gui_uuid[label]
-        await self._ws.send(
-            msgspec.msgpack.encode({"type": "GuiUpdateMessage", "uuid": uuid, "updates": {"value": value}})
-        )
 
     async def send_raw(self, message: dict[str, Any]) -> None:
         await self._ws.send(msgspec.msgpack.encode(message))
@@ -122,10 +157,8 @@ class LightClient:
         s = self.stats
         s.frames += 1
         s.bytes += len(data)
-        messages = decode_frame(data)
-        s.messages += len(messages)
         moved = False
-        for m in messages:
+        for m in decode_frame(data):
             kind = m.get("type", "")
             if kind.startswith("Gui") and "props" in m and isinstance(m["props"], dict) and "label" in m["props"]:
                 self.gui_uuid[str(m["props"]["label"])] = str(m["uuid"])

@@ -13,23 +13,18 @@
 from __future__ import annotations
 
 import argparse
-import asyncio
 import io
 import json
 import math
-import os
 import statistics
 import time
-from pathlib import Path
 
 import numpy as np
 
 import rigidrel_core as rr
-from app.server import App
-from app.settings import Settings
-from tests.viser_client import LightClient, client_swarm, swarm_result
-
-ROOT = Path(__file__).resolve().parents[2]
+from app.server import ANIMATION_HZ, App
+from tests import load
+from tests.viser_client import ClientLoop, LightClient, wait_until
 
 SLIDER_SWEEPS: dict[rr.SceneKind, list[tuple[str, object]]] = {
     rr.SceneKind.CONSTANT_ACCELERATION: [("v", v) for v in np.linspace(0.1, 0.95, 12)]
@@ -45,31 +40,14 @@ SLIDER_SWEEPS: dict[rr.SceneKind, list[tuple[str, object]]] = {
 }
 
 
-async def _connect(url: str, n: int) -> list[LightClient]:
-    clients = [LightClient(url) for _ in range(n)]
-    await asyncio.gather(*(c.connect() for c in clients))
-    return clients
-
-
-def _wait_sessions(app: App, n: int, timeout: float = 60.0) -> None:
-    end = time.monotonic() + timeout
-    while len(app.sessions) < n:
-        if time.monotonic() > end:
-            raise TimeoutError(f"{len(app.sessions)} of {n} sessions")
-        time.sleep(0.05)
-
-
 def bench_rebuild() -> dict[str, float]:
     out: dict[str, float] = {}
+    loop = ClientLoop()
     with App(port=0) as app:
-        loop = asyncio.new_event_loop()
-        clients = loop.run_until_complete(_connect(app.url, 1))
-        reader = loop.create_task(clients[0].run(3600))
-        import threading
-
-        thread = threading.Thread(target=loop.run_until_complete, args=(reader,), daemon=True)
-        thread.start()
-        _wait_sessions(app, 1)
+        client = LightClient(app.url)
+        loop.run(client.connect())
+        loop.start(client.run(3600))
+        wait_until(lambda: app.sessions, timeout=60)
         session = next(iter(app.sessions.values()))
         for kind, sweep in SLIDER_SWEEPS.items():
             session.change("scene", kind)
@@ -80,32 +58,23 @@ def bench_rebuild() -> dict[str, float]:
                 times.append(time.perf_counter() - t0)
             out[f"rebuild_median_ms[{kind.value}]"] = 1e3 * statistics.median(times)
             out[f"rebuild_max_ms[{kind.value}]"] = 1e3 * max(times)
-        clients[0].stop()
-        thread.join(timeout=5)
-        loop.run_until_complete(clients[0].close())
+        client.stop()
+        loop.run(client.close())
+    loop.close()
     return out
 
 
 def bench_animation(n_clients: int, seconds: float) -> dict[str, float]:
-    with App(port=0) as app, client_swarm(app.url, n_clients, seconds) as child:
-        _wait_sessions(app, n_clients)
-        for s in list(app.sessions.values()):
-            with s.lock:
-                s._try(Settings(rr.SceneKind.ROD_COLLISION), refit=True)
-                s.set_playing(True)
-        time.sleep(2.0)
-        cpu0, wall0 = time.process_time(), time.perf_counter()
-        stats = swarm_result(child, seconds)
-        cpu1, wall1 = time.process_time(), time.perf_counter()
-    fps = [s["lane_frames"] / seconds for s in stats]
-    span = wall1 - wall0
+    """The load benchmark's run (tests/load.py) at the app's own animation rate."""
+    r = load.run(n_clients, seconds, ANIMATION_HZ)
+    n = n_clients
     return {
-        f"animation_clients[{n_clients}]": float(n_clients),
-        f"animation_fps_min[{n_clients}]": min(fps),
-        f"animation_fps_median[{n_clients}]": statistics.median(fps),
-        f"server_cpu_percent_per_client[{n_clients}]": 100.0 * (cpu1 - cpu0) / span / n_clients,
-        f"kbytes_per_second_per_client[{n_clients}]": statistics.median(s["bytes"] for s in stats) / seconds / 1e3,
-        f"client_errors[{n_clients}]": float(sum(len(s["errors"]) for s in stats)),
+        f"animation_clients[{n}]": r["clients"],
+        f"animation_fps_min[{n}]": r["min_fps"],
+        f"animation_fps_median[{n}]": r["median_fps"],
+        f"server_cpu_percent_per_client[{n}]": r["cpu_percent_per_client"],
+        f"kbytes_per_second_per_client[{n}]": r["kbytes_per_second_per_client"],
+        f"errors[{n}]": r["errors"],
     }
 
 
@@ -113,11 +82,11 @@ def bench_first_frame(repeats: int = 3) -> dict[str, float]:
     from PIL import Image
     from playwright.sync_api import sync_playwright
 
-    from tests.browser.conftest import CHROMIUM, CHROMIUM_ARGS, VIEWPORT
+    from tests.browser.conftest import VIEWPORT, launch_chromium
 
     times = []
     with App(port=0) as app, sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+        browser = launch_chromium(p)
         for _ in range(repeats):
             page = browser.new_page(viewport=VIEWPORT)
             t0 = time.perf_counter()
@@ -147,7 +116,6 @@ def main() -> None:
     parser.add_argument("--no-browser", action="store_true")
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
-    os.environ.setdefault("PYTHONPATH", str(ROOT))
     figures: dict[str, float] = {}
     figures.update(bench_rebuild())
     for n in args.clients:

@@ -26,7 +26,8 @@ from app.server import App
 from app.session import Session
 from app.settings import CUSTOM_FRAME, Settings
 from app.viser_scene import ROD_DEPTH
-from tests.browser.conftest import VIEWPORT, wait_until
+from tests.browser.conftest import VIEWPORT
+from tests.viser_client import wait_until
 
 #: Detected rod edges must lie this close to the core's positions projected through the camera.
 PIXEL_TOLERANCE = 3.0
@@ -106,6 +107,26 @@ class AppPage:
         png = self.page.locator("canvas[data-engine]").screenshot()
         return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
 
+    def canvas_after(self, before: np.ndarray, timeout: float = 30.0) -> np.ndarray:
+        """The canvas once it shows a change from ``before`` and has stopped changing (the
+        server's update has arrived and been drawn), instead of a fixed sleep."""
+        shots = [self.canvas()]
+
+        def settled() -> bool:
+            shots.append(self.canvas())
+            a, b = shots[-2], shots[-1]
+            if not a.shape == b.shape == before.shape:
+                return False
+            return _changed_fraction(b, before) > 1e-3 and _changed_fraction(a, b) < 1e-4
+
+        wait_until(settled, timeout=timeout, interval=0.25)
+        return shots[-1]
+
+
+def _changed_fraction(a: np.ndarray, b: np.ndarray) -> float:
+    """Share of pixels that differ visibly between two canvases of one size."""
+    return float((np.abs(a - b).sum(axis=-1) > 30).mean())
+
 
 @pytest.fixture
 def tab(browser: Any, app_server: App) -> Any:
@@ -161,13 +182,15 @@ def test_page_loads_and_renders(tab: AppPage, shots: Path) -> None:
     wait_until(lambda: len(tab.diagrams()) == 2 and all(p["traces"] for p in tab.diagrams()))
     assert tab.lengths_plot()["traces"]
     tab.open_tab("Minkowski")
-    time.sleep(1.0)
-    img = tab.canvas()
+
+    def drawn() -> tuple[int, int] | None:
+        # not blank: the rods' blue and the ink of ticks and clocks are on the canvas
+        img = tab.canvas()
+        blue, dark = int((img[..., 2] - img[..., 0] > 60).sum()), int((img.sum(axis=-1) < 200).sum())
+        return (blue, dark) if blue > 2000 and dark > 300 else None
+
+    wait_until(drawn, timeout=30)
     tab.page.screenshot(path=str(shots / "loaded.png"))
-    # not blank: the rods' blue and the ink of ticks and clocks are on the canvas
-    blue = (img[..., 2] - img[..., 0] > 60).sum()
-    dark = (img.sum(axis=-1) < 200).sum()
-    assert blue > 2000 and dark > 300, (blue, dark)
     assert tab.errors == []
     assert tab.external == []
 
@@ -182,13 +205,13 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
         rr.SceneKind.ROD_COLLISION, v=0.6, v2=0.0, log_mass_ratio=math.log10(2.0), eps=1.0, frame=CUSTOM_FRAME, beta=0.8
     )
     now = 0.4
+    default_scene = tab.canvas()
     show(tab, settings, now)
     scene = tab.session.drawn.resolved.scene  # type: ignore[union-attr]
     frame = tab.session.drawn.resolved.frame  # type: ignore[union-attr]
     unit = lane_geometry(scene).unit
-    time.sleep(1.5)
+    img = tab.canvas_after(default_scene)
     pose = current_pose(tab)
-    img = tab.canvas()
     h, w = img.shape[:2]
     tab.page.screenshot(path=str(shots / "collision_beta_0.8_t_0.4.png"))
     lanes = {LAB_Z: rr.Frame.lab(), FRAME_Z: frame}
@@ -229,16 +252,15 @@ def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
 
 
 def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) -> None:
+    default_scene = tab.canvas()
     show(tab, Settings(rr.SceneKind.ROD_COLLISION, frame="lab"), 0.2)
-    time.sleep(1.5)
+    img0 = tab.canvas_after(default_scene)
     pose = current_pose(tab)
-    img0 = tab.canvas()
     with tab.session.lock:
         tab.session.fit_cb.value = False  # keep the camera: compare pixels
     tab.choose("Frame", "rod 2 after")
     wait_until(lambda: tab.session.drawn.resolved.frame.name == "rod 2 after")  # type: ignore[union-attr]
-    time.sleep(1.5)
-    img1 = tab.canvas()
+    img1 = tab.canvas_after(img0)
     tab.page.screenshot(path=str(shots / "frame_rod2_after.png"))
     h, w = img0.shape[:2]
     top = int(cam.project(np.array([[0.0, 0.0, 0.5 * (LAB_Z + FRAME_Z)]]), pose, w, h)[0, 1])
@@ -298,8 +320,7 @@ def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
 
 def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, shots: Path) -> None:
     tab.choose("Scene", "Rod-rod collision")
-    wait_until(lambda: tab.session.settings.scene is rr.SceneKind.ROD_COLLISION)
-    time.sleep(0.3)
+    wait_until(lambda: tab.session.drawn.resolved.scene.kind is rr.SceneKind.ROD_COLLISION)  # type: ignore[union-attr]
     scene_before = tab.session.drawn.resolved.scene  # type: ignore[union-attr]
     tab.type_into_slider("V2", 0.9)  # faster than V1 = 0.6: the rods never meet
     tab.page.wait_for_selector("text=rod 1 never catches rod 2", timeout=20_000)
@@ -317,12 +338,13 @@ def test_playback_moves_the_rods_and_the_now_lines(tab: AppPage) -> None:
     tab.page.click("button:has-text('Play')")
     wait_until(lambda: tab.session.playing)
     t0 = tab.session.now
-    time.sleep(1.0)
-    assert tab.session.now > t0
-    names = wait_until(lambda: [n for n in tab.diagrams()[0]["names"] if n.startswith("now: t =")])
-    time.sleep(0.6)
-    names2 = [n for n in tab.diagrams()[0]["names"] if n.startswith("now: t =")]
-    assert names != names2  # the diagram's now line follows playback
+    wait_until(lambda: tab.session.now > t0)
+
+    def now_lines() -> list[str]:
+        return [n for n in tab.diagrams()[0]["names"] if n.startswith("now: t =")]
+
+    names = wait_until(now_lines)
+    wait_until(lambda: now_lines() not in ([], names))  # the diagram's now line follows playback
     tab.page.click("button:has-text('Pause')")
     wait_until(lambda: not tab.session.playing)
     assert json.dumps(tab.errors) == "[]"
@@ -331,13 +353,12 @@ def test_playback_moves_the_rods_and_the_now_lines(tab: AppPage) -> None:
 def test_share_button_is_hidden(tab: AppPage) -> None:
     """viser's share button needs the internet: hidden. Hover every header icon: no "Share" tooltip."""
     icons = tab.page.locator("button.mantine-ActionIcon-root")
-    assert icons.count() > 0
-    for k in range(icons.count()):
-        icon = icons.nth(k)
-        if icon.is_visible():
-            icon.hover()
-            tab.page.wait_for_timeout(150)
-            assert tab.page.locator("text=/^Share/").count() == 0
+    visible = [icons.nth(k) for k in range(icons.count()) if icons.nth(k).is_visible()]
+    assert visible, "no header icon to hover"
+    for icon in visible:
+        icon.hover()
+        tab.page.wait_for_timeout(400)
+        assert tab.page.locator("text=/^Share/").count() == 0
 
 
 def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:
@@ -346,7 +367,10 @@ def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:
     page = AppPage(browser, old)
     new = None
     try:
-        time.sleep(2.0)  # the tab has recorded the version it runs
+        # the tab has recorded the version it runs (viser prefixes the keys it writes)
+        recorded = """() => Object.keys(localStorage).some(
+            k => k.endsWith('rigidrel_version') && localStorage.getItem(k) === '0.0.1-old')"""
+        wait_until(lambda: page.page.evaluate(recorded))
         old.stop()
         new = App(port=port, version="9.9.9-new")
         assert new.server.get_port() == port

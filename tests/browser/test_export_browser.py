@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import io
-import time
 from pathlib import Path
 from typing import Any
 
@@ -16,6 +15,7 @@ from app.drawing import build_drawing
 from app.export.diagram_html import diagram_html
 from app.export.recording import record_lanes_html
 from app.settings import Resolved, Settings
+from tests.viser_client import wait_until
 
 ALLOWED = ("file://", "data:", "blob:", "about:")
 
@@ -65,19 +65,27 @@ def test_3d_recording_plays_offline(browser: Any, exported: dict[str, Path], sho
     page = OfflinePage(browser, exported["lanes"])
     try:
         page.page.wait_for_selector("canvas[data-engine]", timeout=60_000)
-        time.sleep(2.0)
+
+        def rods(img: np.ndarray) -> np.ndarray:
+            return ((img[..., 2] - img[..., 0]) > 80) | ((img[..., 0] - img[..., 2]) > 120)
+
+        # the rods are drawn, and where they are differs between two moments of playback
+        def drawn() -> bool:
+            return rods(page.png("canvas[data-engine]")).mean() > 0.005
+
+        wait_until(drawn, timeout=60)
         a = page.png("canvas[data-engine]")
         page.page.screenshot(path=str(shots / "playing_a.png"))
-        time.sleep(1.5)
-        b = page.png("canvas[data-engine]")
+
+        def moved_on() -> bool:
+            b = page.png("canvas[data-engine]")
+            moved = np.abs(a - b).sum(axis=-1) > 60
+            return bool(moved[rods(a) | rods(b)].mean() > 0.02)
+
+        wait_until(moved_on, timeout=30, interval=0.25)
         page.page.screenshot(path=str(shots / "playing_b.png"))
         assert page.requests == []
         assert page.errors == []
-        # the rods are drawn, and where they are differs between the two moments
-        rod = ((a[..., 2] - a[..., 0]) > 80) | ((a[..., 0] - a[..., 2]) > 120)
-        assert rod.mean() > 0.005
-        moved = np.abs(a - b).sum(axis=-1) > 60
-        assert moved[rod | (((b[..., 2] - b[..., 0]) > 80) | ((b[..., 0] - b[..., 2]) > 120))].mean() > 0.02
     finally:
         page.close()
 
@@ -86,10 +94,10 @@ def test_diagram_page_responds_to_its_slider_offline(browser: Any, exported: dic
     page = OfflinePage(browser, exported["diagram"])
     try:
         page.page.wait_for_selector(".js-plotly-plot", timeout=60_000)
-        time.sleep(1.0)
         title = "() => document.querySelector('.js-plotly-plot').layout.title.text"
         traces = "() => Array.from(document.querySelector('.js-plotly-plot')._fullData[5].x)"
-        before_title, before = page.page.evaluate(title), page.page.evaluate(traces)
+        before_title = wait_until(lambda: page.page.evaluate(title))
+        before = page.page.evaluate(traces)
         assert "β = 0.2308" in before_title  # case I's barycentric frame: V1 = 0.6, M2/M1 = 2
         # as a user: click the first step of the mass-ratio slider
         group = page.page.locator("g.slider-group").nth(1)
@@ -97,15 +105,14 @@ def test_diagram_page_responds_to_its_slider_offline(browser: Any, exported: dic
         rail = group.locator("rect.slider-rail-touch-rect").bounding_box()
         assert label is not None and rail is not None
         page.page.mouse.click(label["x"] + label["width"] / 2, rail["y"] + rail["height"] / 2)
-        time.sleep(1.0)
-        after_title, after = page.page.evaluate(title), page.page.evaluate(traces)
+        after_title = wait_until(lambda: (t := page.page.evaluate(title)) != before_title and t)
+        after = page.page.evaluate(traces)
         page.page.screenshot(path=str(shots / "mass_ratio_0.25.png"))
         assert "β = 0.5)" in after_title  # M2/M1 = 1/4: u = 0.75/1.5
         assert after != before
         # the play button sweeps V1
         page.page.click("text=▶ V1")
-        time.sleep(1.5)
-        assert page.page.evaluate(title) != after_title
+        wait_until(lambda: page.page.evaluate(title) != after_title)
         assert page.requests == [] and page.errors == []
     finally:
         page.close()
