@@ -63,9 +63,10 @@ def frame_title(frame: rr.Frame) -> str:
 
 
 def _to_view(view: View, events_other: FloatArray) -> FloatArray:
-    """Events of the other frame ``(..., 2)`` into this view's frame, via the core's boosts."""
-    lab = view.other.as_boost().inverse().apply(events_other)
-    return view.frame.as_boost().apply(lab)
+    """Events of the other frame ``(..., 2)`` into this view's frame: one boost by the core's
+    exact relative rapidity (no round trip through the lab)."""
+    psi = rr.relative_rapidity(view.frame.velocity, view.other.velocity)
+    return rr.Boost.from_rapidity(psi).apply(events_other)
 
 
 def window_x_range(scene: rr.Scene, frames: tuple[rr.Frame, ...], t_range: tuple[float, float]) -> tuple[float, float]:

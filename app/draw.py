@@ -10,7 +10,7 @@ from __future__ import annotations
 import base64
 import json
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Literal
 
 import numpy as np
@@ -115,8 +115,6 @@ class Chart:
     title: str = ""
     equal_aspect: bool = False
     """Minkowski diagrams: one unit of x as long as one unit of t (light at 45 degrees)."""
-    dynamic: tuple[Item, ...] = field(default=())
-    """Items that change with playback time (the 'now' lines and markers)."""
 
 
 def event_label(name: str) -> str:
@@ -253,20 +251,17 @@ def decode_array(value: Any) -> FloatArray:
     return np.asarray(value, dtype=np.float64)
 
 
-def chart_to_plotly(chart: Chart, dynamic: Sequence[Item] | None = None) -> dict[str, Any]:
-    """A plotly figure dict: static items, then the dynamic ones (drawn on top)."""
-    items = (*chart.items, *(chart.dynamic if dynamic is None else dynamic))
-    layout = chart_layout(chart)
-    layout["annotations"] = [label_to_annotation(i) for i in items if isinstance(i, Label)]
-    return {"data": [t for i in items for t in item_to_traces(i)], "layout": layout}
+def chart_to_plotly(chart: Chart) -> dict[str, Any]:
+    """A plotly figure dict of the chart's items."""
+    return {"data": [t for i in chart.items for t in item_to_traces(i)], "layout": chart_layout(chart)}
 
 
 class SplicedFigure:
-    """A figure whose static part is serialised once; ``with_dynamic`` adds the rest.
+    """A figure whose static part is serialised once; ``with_dynamic`` adds the moving items.
 
-    viser's plotly handle re-sends the whole figure JSON on every assignment and calls
-    ``figure.to_json()``; this object provides that string in microseconds, so the
-    diagrams follow playback at 10 Hz without rebuilding plotly objects.
+    viser's plotly handle re-sends the whole figure JSON on every assignment (it calls
+    ``figure.to_json()``: the app hands it a :class:`JsonFigure` of ``with_dynamic``'s
+    string), so the diagrams follow playback at 10 Hz without rebuilding plotly objects.
     """
 
     def __init__(self, chart: Chart, config: dict[str, Any] | None = None) -> None:
@@ -298,6 +293,7 @@ class SplicedFigure:
         return self._assemble(traces, anns)
 
     def to_json(self) -> str:
+        """The static figure alone."""
         return self._json
 
 

@@ -32,6 +32,7 @@ from .settings import Resolved
 #: Lane heights (z, in lane units): the lab on top, the chosen frame below.
 LAB_Z = 0.55
 FRAME_Z = -0.55
+LANE_Z = (LAB_Z, FRAME_Z)
 #: The window plays in this many seconds at speed 1.
 PLAY_SECONDS = 8.0
 #: Diagrams follow playback at this rate (the 3-D lanes at the animation rate).
@@ -44,8 +45,6 @@ LENGTH_ASPECT = 0.75
 #: The plot area inside a Minkowski diagram (pixels): the panel minus plotly's margins.
 PLOT_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * PLOT_ASPECT - 40 - 114)
 LENGTH_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * LENGTH_ASPECT - 40 - 114)
-#: Pixel width the diagrams are sampled for (chord error < half a pixel at this width).
-PANEL_PX = float(PLOT_PANEL_PX)
 PLOT_CONFIG = {"displayModeBar": False, "responsive": True}
 _LAB = rr.Frame.lab()
 
@@ -57,22 +56,26 @@ class Drawn:
     resolved: Resolved
     window: tuple[float, float]
     geometry: LaneGeometry
-    x_range: tuple[float, float]
-    """Both lanes together (the camera fits this)."""
     lane_ranges: tuple[tuple[float, float], tuple[float, float]]
     """Each lane's own x extent (lab, chosen frame): rulers and titles depend only on their frame."""
     lab_chart: SplicedFigure
     frame_chart: SplicedFigure
     length_chart: SplicedFigure
-    lab_view: View
-    frame_view: View
-    span: float
-    length_top: float
+
+    @property
+    def x_range(self) -> tuple[float, float]:
+        """Both lanes together (the camera fits this)."""
+        return min(r[0] for r in self.lane_ranges), max(r[1] for r in self.lane_ranges)
 
     @property
     def lane_x_range(self) -> tuple[float, float]:
         """``x_range`` in lane units (the camera and the raster frames fit this)."""
         return self.x_range[0] / self.geometry.unit, self.x_range[1] / self.geometry.unit
+
+    @property
+    def span(self) -> float:
+        """A half-length beyond anything on screen: the diagrams' 'now' lines run this far."""
+        return 4.0 * max(abs(v) for v in (*self.window, *self.x_range))
 
     def lane_statics(self) -> list[tuple[Segments, tuple[Label, ...]]]:
         """Each lane's ruler and origin mark (lab, chosen frame): drawn once per scene."""
@@ -85,12 +88,19 @@ class Drawn:
         The length plot's markers are the core's equal-time lengths in both frames.
         """
         r = self.resolved
+        lab_view, frame_view = _views(r.frame)
         lengths = [r.scene.lengths(now, f) for f in (_LAB, r.frame)]
+        length_top = self.length_chart.chart.y_range[1]
         return (
-            self.lab_chart.with_dynamic(minkowski_now(self.lab_view, now, self.span, states[0].ends)),
-            self.frame_chart.with_dynamic(minkowski_now(self.frame_view, now, self.span, states[1].ends)),
-            self.length_chart.with_dynamic(length_now(now, self.length_top, np.stack(lengths))),
+            self.lab_chart.with_dynamic(minkowski_now(lab_view, now, self.span, states[0].ends)),
+            self.frame_chart.with_dynamic(minkowski_now(frame_view, now, self.span, states[1].ends)),
+            self.length_chart.with_dynamic(length_now(now, length_top, np.stack(lengths))),
         )
+
+
+def _views(frame: rr.Frame) -> tuple[View, View]:
+    """The lab diagram (compared with ``frame``) and the chosen frame's (compared with the lab)."""
+    return View(_LAB, frame, "lab", "", "'"), View(frame, _LAB, frame.name, "'", "")
 
 
 def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
@@ -103,18 +113,14 @@ def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
     a0, a1 = scene.time_window(lab)
     b0, b1 = scene.time_window(frame)
     window = _round_outward(min(a0, b0), max(a1, b1))
-    unit = max(r.motion.length for r in scene.rods)
+    geometry = lane_geometry(scene)
 
     def lane_range(f: rr.Frame) -> tuple[float, float]:
         lo, hi = window_x_range(scene, (f,), _round_outward(*scene.time_window(f)))
-        pad = 0.08 * (hi - lo) + 0.1 * unit
+        pad = 0.08 * (hi - lo) + 0.1 * geometry.unit
         return (lo - pad, hi + pad)
 
-    lane_ranges = (lane_range(lab), lane_range(frame))
-    x_range = (min(r[0] for r in lane_ranges), max(r[1] for r in lane_ranges))
-    lab_view = View(lab, frame, "lab", "", "'")
-    frame_view = View(frame, lab, frame.name, "'", "")
-    span = 4.0 * max(abs(window[0]), abs(window[1]), abs(x_range[0]), abs(x_range[1]))
+    lab_view, frame_view = _views(frame)
     lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window, PLOT_AREA_PX)
     fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window, PLOT_AREA_PX)
     lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, PLOT_AREA_PX[0], resolved.overlay, sampler)
@@ -123,16 +129,11 @@ def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
     return Drawn(
         resolved=resolved,
         window=window,
-        geometry=lane_geometry(scene),
-        x_range=x_range,
-        lane_ranges=lane_ranges,
+        geometry=geometry,
+        lane_ranges=(lane_range(lab), lane_range(frame)),
         lab_chart=SplicedFigure(lab_chart, PLOT_CONFIG),
         frame_chart=SplicedFigure(frame_chart, PLOT_CONFIG),
         length_chart=SplicedFigure(length_chart, PLOT_CONFIG),
-        lab_view=lab_view,
-        frame_view=frame_view,
-        span=span,
-        length_top=length_chart.y_range[1],
     )
 
 

@@ -20,8 +20,7 @@ from rigidrel_core import SceneKind
 from .draw import JsonFigure
 from .drawing import (
     CONTROL_PX,
-    FRAME_Z,
-    LAB_Z,
+    LANE_Z,
     LENGTH_ASPECT,
     PLAY_SECONDS,
     PLOT_ASPECT,
@@ -41,14 +40,11 @@ from .settings import (
     Preset,
     Resolved,
     Settings,
+    frame_choice,
     frame_choices,
     resolve,
 )
 from .viser_scene import LaneRenderer
-
-
-def _log_ratio_label(value: float) -> str:
-    return f"M2/M1 = {10.0**value:.3g}"
 
 
 @dataclass(frozen=True)
@@ -114,8 +110,8 @@ class Session:
         self.lock = threading.RLock()
         self.settings = Settings()
         self.playing = False
-        self.loop = True
         self.speed = 1.0
+        """Playback speed (kept here: a refused value is put back from it)."""
         self.now = 0.0
         self._last_plot = 0.0
         self._notice = ""
@@ -127,7 +123,7 @@ class Session:
         self.drawn: Drawn | None = None
         with client.atomic():
             self._build_gui()
-            self.renderer = LaneRenderer(client.scene, (LAB_Z, FRAME_Z))
+            self.renderer = LaneRenderer(client.scene, LANE_Z)
             self._sync_controls()
             self._apply(resolved, refit=True)
 
@@ -270,30 +266,22 @@ class Session:
         def speed(value: float) -> None:
             self.speed = value
 
-        def loop(value: bool) -> None:
-            self.loop = value
-
         on_user(self.speed_slider, speed)
-        on_user(self.loop_cb, loop)
-        on_user(self.fit_cb, lambda _: None)
+        # "Loop" and "Auto-fit view" are read where they apply; viser makes any value sent to a
+        # checkbox a bool, so there is nothing to check
 
     def _checked(self, handle: Any) -> Any:
-        """The control's new value if it is one the control can hold; else None, a notice, and the old value back."""
+        """The control's new value if it is one the control can hold; else None, a notice, and the old value back.
+
+        viser has already cast the value to the control's type (``float(...)`` for a slider), so
+        what is left to check is the range, and that a dropdown's choice is one of its options."""
         value = handle.value
         if isinstance(handle, viser.GuiSliderHandle):
-            ok = (
-                isinstance(value, (int, float))
-                and not isinstance(value, bool)
-                and math.isfinite(value)
-                and handle.min - 1e-12 <= value <= handle.max + 1e-12
-            )
+            ok = math.isfinite(value) and handle.min - 1e-12 <= value <= handle.max + 1e-12
             allowed = f"a number in [{handle.min:g}, {handle.max:g}]"
         elif isinstance(handle, viser.GuiDropdownHandle):
             ok = value in handle.options
             allowed = "one of the listed choices"
-        elif isinstance(handle, viser.GuiCheckboxHandle):
-            ok = isinstance(value, bool)
-            allowed = "true or false"
         else:
             return value
         if ok:
@@ -311,18 +299,15 @@ class Session:
         if field is not None:
             handle.value = float(getattr(self.settings, field))
         elif handle is self.frame_dd:
-            name = self.drawn.resolved.frame.name if self.drawn else "lab"
-            handle.value = name if name in handle.options else handle.options[0]
+            assert self.drawn is not None  # a session draws its first scene before it has callbacks
+            handle.value = frame_choice(self.drawn.resolved.scene, self.drawn.resolved.frame)
         else:
             handle.value = {
-                id(self.overlay_cb): self.settings.overlay_impulsive,
                 id(self.scene_dd): SCENE_LABELS[self.settings.scene],
                 id(self.preset): Preset.NONE.value,
                 id(self.time_slider): round(self.now, 6),
                 id(self.speed_slider): self.speed,
-                id(self.loop_cb): self.loop,
-                id(self.fit_cb): self.fit_cb.value,
-            }.get(id(handle), handle.value)
+            }[id(handle)]
 
     def greet(self, version: str) -> None:
         """Tell a tab that was last used with another version that it now runs this one.
@@ -396,7 +381,7 @@ class Session:
         choices = frame_choices(resolved.scene)
         if tuple(self.frame_dd.options) != choices:
             self.frame_dd.options = choices
-        name = resolved.frame.name if resolved.frame.name in choices else CUSTOM_FRAME
+        name = frame_choice(resolved.scene, resolved.frame)
         if self.frame_dd.value != name:
             self.frame_dd.value = name
         self.time_slider.min, self.time_slider.max = d.window
@@ -442,7 +427,7 @@ class Session:
             t0, t1 = d.window
             self.now += dt * self.speed * (t1 - t0) / PLAY_SECONDS
             if self.now > t1:
-                if self.loop:
+                if self.loop_cb.value:
                     self.now = t0 + (self.now - t1) % (t1 - t0)
                 else:
                     self.now = t1

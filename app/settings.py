@@ -69,21 +69,49 @@ class Resolved:
     overlay: rr.Scene | None
 
 
+def scene_parameters(s: Settings) -> dict[str, float]:
+    """The core's parameters for the scene the settings describe (rod 1: rest length 1, mass 1)."""
+    kind = s.scene
+    if kind is SceneKind.ROD_COLLISION:
+        m2, l2 = 10.0**s.log_mass_ratio, s.length_ratio
+        return {"v1": s.v, "v2": s.v2, "m1": 1.0, "m2": m2, "l1": 1.0, "l2": l2, "eps": s.eps}
+    if kind in (SceneKind.CONSTANT_ACCELERATION, SceneKind.DECELERATION):
+        return {"v": s.v, "length": 1.0, "a_front": s.a_front_length}
+    if kind is SceneKind.WALL_COLLISION:
+        return {"v": s.v, "length": 1.0, "eps": s.eps}
+    if kind is SceneKind.IMPULSIVE_START:
+        return {"v": s.v, "length": 1.0}
+    raise rr.ParameterError("scene", "one of the scenes in the dropdown", s.scene)
+
+
 def build_scene(s: Settings) -> rr.Scene:
     """The scene the settings describe (raises ValueError naming the offending parameter)."""
-    if s.scene is SceneKind.CONSTANT_ACCELERATION:
-        return rr.constant_acceleration(v=s.v, length=1.0, a_front=s.a_front_length)
-    if s.scene is SceneKind.DECELERATION:
-        return rr.deceleration(v=s.v, length=1.0, a_front=s.a_front_length)
-    if s.scene is SceneKind.IMPULSIVE_START:
-        return rr.impulsive_start(v=s.v, length=1.0)
-    if s.scene is SceneKind.WALL_COLLISION:
-        return rr.wall_collision(v=s.v, length=1.0, eps=s.eps)
-    if s.scene is SceneKind.ROD_COLLISION:
-        return rr.rod_collision(
-            v1=s.v, v2=s.v2, m1=1.0, m2=10.0**s.log_mass_ratio, l1=1.0, l2=s.length_ratio, eps=s.eps
+    return rr.build_scene(s.scene, **scene_parameters(s))
+
+
+def settings_for(scene: rr.Scene, frame: rr.Frame) -> Settings:
+    """The inverse of :func:`scene_parameters`: the settings that show ``scene`` in ``frame``,
+    in units of rod 1's rest length and mass. Only for the scenes in :data:`SCENE_LABELS`."""
+    p = scene.parameters
+    kind = scene.kind
+    common = {"frame": frame_choice(scene, frame), "beta": frame.beta}
+    if kind is SceneKind.ROD_COLLISION:
+        return Settings(
+            kind,
+            v=p["v1"],
+            v2=p["v2"],
+            log_mass_ratio=math.log10(p["m2"] / p["m1"]),
+            eps=p["eps"],
+            length_ratio=p["l2"] / p["l1"],
+            **common,
         )
-    raise rr.ParameterError("scene", "one of the scenes in the dropdown", s.scene)
+    if kind in (SceneKind.CONSTANT_ACCELERATION, SceneKind.DECELERATION):
+        return Settings(kind, v=p["v"], a_front_length=p["a_front"] * p["length"], **common)
+    if kind is SceneKind.WALL_COLLISION:
+        return Settings(kind, v=p["v"], eps=p["eps"], **common)
+    if kind is SceneKind.IMPULSIVE_START:
+        return Settings(kind, v=p["v"], **common)
+    raise rr.ParameterError("scene", "one of the app's scenes (velocity-change has no slider page)", kind.value)
 
 
 def default_frame(scene: rr.Scene) -> str:
@@ -111,6 +139,11 @@ def choose_frame(scene: rr.Scene, frame: rr.Frame | str | float | None) -> rr.Fr
 
 def frame_choices(scene: rr.Scene) -> tuple[str, ...]:
     return (*scene.frames.keys(), CUSTOM_FRAME)
+
+
+def frame_choice(scene: rr.Scene, frame: rr.Frame) -> str:
+    """The Frame dropdown's entry for ``frame``: its preset name, or the custom (β slider) entry."""
+    return frame.name if frame.name in scene.frames else CUSTOM_FRAME
 
 
 def resolve(s: Settings) -> Resolved | str:

@@ -13,7 +13,7 @@ from typing import Literal
 import numpy as np
 import viser
 
-from .draw import FRAME_COLOR, INK, FloatArray, Label, Segments, plain_text, rgb
+from .draw import FRAME_COLOR, INK, Label, Segments, plain_text, rgb
 from .lanes import Box, LaneState, segments_array
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
@@ -79,6 +79,41 @@ def linear_rgb(color: str) -> tuple[int, int, int]:
     return lin(r), lin(g), lin(b)
 
 
+class _LabelPool:
+    """Label nodes under one name prefix, grown when needed and never re-added: changing a
+    label costs ~60 us, creating one ~500 us. Unused nodes are hidden."""
+
+    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
+        self._scene = scene
+        self._prefix = prefix
+        self._handles: list[viser.LabelHandle] = []
+        self._shown: list[tuple[str, tuple[float, float, float], float, str] | None] = []
+
+    def show(self, placed: Sequence[tuple[Label, float]]) -> None:
+        """Show ``(label, lane z)`` pairs; assign only what changed (each assignment is a message)."""
+        for k, (lab, z) in enumerate(placed):
+            text, position = plain_text(lab.text), (lab.x, _LABEL_Y, lab.y + z)
+            scale, anchor = lab.size / 13.0, _ANCHOR[lab.anchor]
+            state = (text, position, scale, anchor)
+            if k == len(self._handles):
+                name = f"{self._prefix}/{k}"
+                h = self._scene.add_label(name, text, position=position, anchor=anchor, font_screen_scale=scale)
+                self._handles.append(h)
+                self._shown.append(state)
+            elif state != self._shown[k]:
+                h = self._handles[k]
+                h.text = text
+                h.position = position
+                h.font_screen_scale = scale
+                h.anchor = anchor
+                h.visible = True
+                self._shown[k] = state
+        for k in range(len(placed), len(self._handles)):
+            if self._shown[k] is not None:
+                self._handles[k].visible = False
+                self._shown[k] = None
+
+
 class LaneRenderer:
     """Draws :class:`LaneState` s of several lanes (stacked in z) into one client's scene."""
 
@@ -96,12 +131,11 @@ class LaneRenderer:
         scene.add_light_directional("/lanes/front_light", intensity=FRONT, position=(0.0, -10.0, 4.0))
         self._dynamic: viser.LineSegmentsHandle | None = None
         self._static: viser.LineSegmentsHandle | None = None
-        self._labels: list[viser.LabelHandle] = []
-        self._label_state: dict[int, tuple[str, tuple[float, float, float]]] = {}
+        self._labels = _LabelPool(scene, "/lanes/label")
+        self._static_labels = _LabelPool(scene, "/lanes/static_label")
         self._dials: viser.BatchedMeshHandle | None = None
         self._dial_count = -1
         self._dial_radius = 0.0
-        self._static_labels: list[viser.LabelHandle] = []
 
     # ------------------------------------------------------------------ per scene
     def set_static(self, rulers: Sequence[tuple[Segments, Sequence[Label]]]) -> None:
@@ -113,28 +147,8 @@ class LaneRenderer:
             )
         else:
             self._static.points = pts
-        placed = [(lab, z) for (_, labels), z in zip(rulers, self.lane_z, strict=True) for lab in labels]
-        # a pool of label nodes, grown when needed and never re-added: changing a label
-        # is ~60 us, creating one ~500 us
-        while len(self._static_labels) < len(placed):
-            lab, z = placed[len(self._static_labels)]
-            self._static_labels.append(self._label(f"/lanes/static_label/{len(self._static_labels)}", lab, z))
-        for k, h in enumerate(self._static_labels):
-            if k < len(placed):
-                lab, z = placed[k]
-                h.text = plain_text(lab.text)
-                h.position = (lab.x, _LABEL_Y, lab.y + z)
-                h.font_screen_scale = lab.size / 13.0
-                h.anchor = _ANCHOR[lab.anchor]  # type: ignore[assignment]
-            h.visible = k < len(placed)
-
-    def _label(self, name: str, lab: Label, z: float) -> viser.LabelHandle:
-        return self._scene.add_label(
-            name,
-            plain_text(lab.text),
-            position=(lab.x, _LABEL_Y, lab.y + z),
-            anchor=_ANCHOR[lab.anchor],
-            font_screen_scale=lab.size / 13.0,
+        self._static_labels.show(
+            [(lab, z) for (_, labels), z in zip(rulers, self.lane_z, strict=True) for lab in labels]
         )
 
     # ------------------------------------------------------------------ per frame
@@ -154,18 +168,7 @@ class LaneRenderer:
         self._update_dials(states, radius)
         if not labels or not any(st.labels for st in states):
             return
-        placed = [(lab, z) for st, z in zip(states, self.lane_z, strict=True) for lab in st.labels]
-        if len(placed) != len(self._labels):
-            for h in self._labels:
-                h.remove()
-            self._labels = [self._label(f"/lanes/label/{k}", lab, z) for k, (lab, z) in enumerate(placed)]
-            self._label_state = {}
-        for k, (h, (lab, z)) in enumerate(zip(self._labels, placed, strict=True)):
-            text, position = plain_text(lab.text), (lab.x, _LABEL_Y, lab.y + z)
-            if (text, position) != self._label_state.get(k):  # a cheap check before viser's
-                h.text = text
-                h.position = position
-                self._label_state[k] = (text, position)
+        self._labels.show([(lab, z) for st, z in zip(states, self.lane_z, strict=True) for lab in st.labels])
 
     def _update_dials(self, states: Sequence[LaneState], radius: float) -> None:
         """One ring mesh, instanced at every clock: positions only change per frame."""
@@ -234,8 +237,3 @@ class LaneRenderer:
                 self._boxes.batched_colors = colors
         self._box_colors = names
         self._box_positions, self._box_scales = positions, scales
-
-    def box_positions(self) -> FloatArray:
-        """Current box centres (for tests)."""
-        assert self._boxes is not None
-        return np.asarray(self._boxes.batched_positions, dtype=np.float64)

@@ -13,6 +13,7 @@ import math
 import threading
 import time
 from collections.abc import Iterator
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -21,6 +22,7 @@ from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from app.server import App
+from app.settings import CUSTOM_FRAME
 from tests.viser_client import ClientLoop, LightClient, wait_until
 
 
@@ -126,6 +128,8 @@ def test_hostile_slider_values_are_refused_on_the_server(harness: Harness, label
 def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.LogCaptureFixture) -> None:
     _, bystander = harness.connect()
     client, session = harness.connect()
+    with session.lock:  # a custom frame: a refused Frame value must put the dropdown back on it
+        session._try(replace(session.settings, frame=CUSTOM_FRAME, beta=0.3))
     scene_before = session.drawn.resolved.scene  # type: ignore[union-attr]
     for label, value in (
         ("Scene", "Warp drive"),
@@ -139,6 +143,7 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
     harness.run(client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid["V"], "updates": {"nope": 1}}))
     time.sleep(0.5)
     assert not session.closed  # refused values leave the tab connected, with its last valid scene
+    assert session.frame_dd.value == CUSTOM_FRAME and session.drawn.resolved.frame.beta == 0.3  # type: ignore[union-attr]
     # Message types the server does not know (an upload with a path in its name: this app has no
     # upload control; a made-up type) make viser drop that one connection. Each is the last
     # message on its connection: the server may close the socket before another could be sent.

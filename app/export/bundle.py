@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -10,12 +9,11 @@ from pathlib import Path
 from typing import Any
 
 import rigidrel_core as rr
-from rigidrel_core import SceneKind
 
 from ..diagrams import frame_title
 from ..drawing import build_drawing
 from ..notebook import diagram
-from ..settings import CUSTOM_FRAME, Resolved, Settings
+from ..settings import SCENE_LABELS, Resolved, settings_for
 from .diagram_html import diagram_html
 from .images import image_writer
 from .raster import write_gif, write_mp4
@@ -31,31 +29,6 @@ class Written:
     @property
     def megabytes(self) -> float:
         return self.path.stat().st_size / 1e6
-
-
-def settings_for(scene: rr.Scene, frame: rr.Frame) -> Settings:
-    """The app's settings (rod 1's rest length and mass as units) for the scene's parameters."""
-    p = dict(scene.parameters)
-    frame_name = frame.name if frame.name in scene.frames else CUSTOM_FRAME
-    common = {"frame": frame_name, "beta": frame.beta}
-    kind = scene.kind
-    if kind is SceneKind.ROD_COLLISION:
-        return Settings(
-            kind,
-            v=p["v1"],
-            v2=p["v2"],
-            log_mass_ratio=math.log10(p["m2"] / p["m1"]),
-            eps=p["eps"],
-            length_ratio=p["l2"] / p["l1"],
-            **common,
-        )
-    if kind in (SceneKind.CONSTANT_ACCELERATION, SceneKind.DECELERATION):
-        return Settings(kind, v=p["v"], a_front_length=p["a_front"] * p["length"], **common)
-    if kind is SceneKind.WALL_COLLISION:
-        return Settings(kind, v=p["v"], eps=p["eps"], **common)
-    if kind is SceneKind.IMPULSIVE_START:
-        return Settings(kind, v=p["v"], **common)
-    raise rr.ParameterError("scene", "one of the app's scenes (velocity-change has no slider page)", kind.value)
 
 
 def export_scene(
@@ -80,7 +53,7 @@ def export_scene(
             written.append(Written(path, time.perf_counter() - t0))
 
     timed(out / f"{stem}-3d.html", lambda p: p.write_text(record_lanes_html(drawn, seconds, fps), encoding="utf-8"))
-    if scene.kind is not SceneKind.VELOCITY_CHANGE:
+    if scene.kind in SCENE_LABELS:  # the scenes the app (and so the slider page) offers
         timed(
             out / f"{stem}-diagram.html",
             lambda p: p.write_text(diagram_html(settings_for(scene, frame)), encoding="utf-8"),

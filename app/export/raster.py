@@ -14,14 +14,13 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 from ..draw import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, plain_text, rgb
-from ..drawing import FRAME_Z, LAB_Z, Drawn, lane_states
+from ..drawing import FRAME_Z, LAB_Z, LANE_Z, Drawn, lane_states
 from ..lanes import LaneState
 
 _FONTS = (
     "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
     "/usr/share/fonts/truetype/liberation/LiberationSans-Regular.ttf",
 )
-_LANE_Z = (LAB_Z, FRAME_Z)
 
 
 #: Blank margin left and right, as a fraction of the lanes' x range.
@@ -56,11 +55,11 @@ class LaneRaster:
     def frame(self, states: Sequence[LaneState]) -> Image.Image:
         img = Image.new("RGB", (self.width, self.height), "white")
         d = ImageDraw.Draw(img)
-        for (ruler, labels), z in zip(self._static, _LANE_Z, strict=True):
+        for (ruler, labels), z in zip(self._static, LANE_Z, strict=True):
             self._segments(d, ruler.x0, ruler.y0 + z, ruler.x1, ruler.y1 + z, FRAME_COLOR, 1)
             for lab in labels:
                 self._text(d, lab.x, lab.y + z, plain_text(lab.text), FRAME_COLOR, lab.size, lab.anchor)
-        for st, z in zip(states, _LANE_Z, strict=True):
+        for st, z in zip(states, LANE_Z, strict=True):
             for b in st.boxes:
                 (u0, u1), (v0, v1) = self.px(
                     np.array([b.x0, b.x1]), np.array([z + b.z + b.height / 2, z + b.z - b.height / 2])

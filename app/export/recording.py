@@ -15,7 +15,7 @@ from collections.abc import Iterator
 import numpy as np
 import viser
 
-from ..drawing import FRAME_Z, LAB_Z, PLOT_HZ, Drawn, camera_pose, lane_states
+from ..drawing import LANE_Z, PLOT_HZ, Drawn, camera_pose, lane_states
 from ..viser_scene import LaneRenderer
 
 
@@ -40,7 +40,7 @@ def playback_times(drawn: Drawn, seconds: float, fps: float) -> np.ndarray:
 def record_lanes_html(drawn: Drawn, seconds: float = 10.0, fps: float = 30.0, aspect: float = 16 / 9) -> str:
     """HTML of both lanes playing through the scene's window in ``seconds`` at ``fps`` frames per second."""
     with quiet_server() as server:
-        renderer = LaneRenderer(server.scene, (LAB_Z, FRAME_Z))
+        renderer = LaneRenderer(server.scene, LANE_Z)
         renderer.set_static(drawn.lane_statics())
         pose = camera_pose(drawn.lane_x_range, aspect)
         server.initial_camera.position = pose.position
