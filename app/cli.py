@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -186,12 +187,18 @@ def _positive(text: str) -> float:
     return value
 
 
-def _out_dir(prog: str, text: str) -> Path:
-    out = Path(text)
+def out_dir(prog: str, text: str) -> Path:
+    """The folder ``--out`` names (``~`` expanded), created if missing; a one-line error and exit
+    status 2 for an empty name or a folder that cannot be created or written to."""
+    if not text.strip():
+        fail(prog, "--out: an empty folder name")
+    out = Path(text).expanduser()
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        fail(prog, f"--out {text!r} cannot be created: {exc.strerror}")
+        fail(prog, f"--out {text!r} cannot be created: {exc.strerror or exc}")
+    if not os.access(out, os.W_OK | os.X_OK):
+        fail(prog, f"--out {text!r} is not a writable folder")
     return out
 
 
@@ -200,7 +207,7 @@ def cmd_export(args: argparse.Namespace) -> int:
 
     prog = "rigidrel export"
     scene, frame = scene_from_args(prog, args)
-    out = _out_dir(prog, args.out)
+    out = out_dir(prog, args.out)
     try:
         written = export_scene(scene, frame, out, seconds=args.seconds, fps=args.fps, gif_fps=args.gif_fps)
     except (RuntimeError, ValueError) as exc:
@@ -214,7 +221,7 @@ def cmd_figures(args: argparse.Namespace) -> int:
     from .figures import write_figures
 
     prog = "rigidrel figures"
-    out = _out_dir(prog, args.out)
+    out = out_dir(prog, args.out)
     try:
         for path in write_figures(out):
             print(path)
@@ -227,7 +234,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
     try:
         from .bench.cli import run_bench
     except ImportError as exc:  # scipy / spacetimelib / mpmath are the [bench] extra
-        fail("rigidrel bench", f"{exc.name or exc} is missing: pip install 'rigidrel[bench]'")
+        fail("rigidrel bench", f"{exc.name or exc} is missing: pip install -e '.[bench]'")
     return run_bench(quick=args.quick, out=args.out)
 
 

@@ -8,6 +8,7 @@ Chromium through kaleido: if it cannot start, this test fails and says why.
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -81,10 +82,20 @@ def test_chart_files_exist_and_pngs_are_not_blank(smoke: tuple[int, Path, dict[s
     assert img.std() > 20.0
 
 
-def _bench(*args: str) -> subprocess.CompletedProcess[str]:
+def _rigidrel(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
+    path = os.pathsep.join(p for p in (str(ROOT), os.environ.get("PYTHONPATH")) if p)
     return subprocess.run(
-        [sys.executable, "-m", "app.cli", "bench", *args], cwd=ROOT, capture_output=True, text=True, timeout=120
+        [sys.executable, "-m", "app.cli", *args],
+        cwd=cwd,
+        env={**os.environ, "PYTHONPATH": path},
+        capture_output=True,
+        text=True,
+        timeout=120,
     )
+
+
+def _bench(*args: str) -> subprocess.CompletedProcess[str]:
+    return _rigidrel("bench", *args)
 
 
 @pytest.mark.parametrize("where", ["file", "under-a-file"])
@@ -104,3 +115,18 @@ def test_missing_out_is_a_usage_error() -> None:
     proc = _bench("--quick")
     assert proc.returncode == 2
     assert "--out" in proc.stderr and "Traceback" not in proc.stderr
+
+
+@pytest.mark.parametrize(
+    "command", [["export", "rod-collision"], ["figures"], ["bench", "--quick"]], ids=lambda c: c[0]
+)
+@pytest.mark.parametrize("name", ["", "  "], ids=["empty", "blank"])
+def test_empty_out_is_one_line_naming_out_and_exit_status_2(tmp_path: Path, command: list[str], name: str) -> None:
+    """``--out ""`` is a usage error, not the current folder (every command shares app.cli's ``out_dir``)."""
+    proc = _rigidrel(*command, "--out", name, cwd=tmp_path)
+    assert proc.returncode == 2, proc.stderr
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1, proc.stderr
+    assert "--out" in lines[0] and "Traceback" not in proc.stderr
+    assert proc.stdout == ""
+    assert list(tmp_path.iterdir()) == [], "nothing is written into the current folder"

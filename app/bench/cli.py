@@ -23,26 +23,26 @@ import platform
 import sys
 import time
 from collections.abc import Sequence
-from pathlib import Path
 from typing import Any
 
 import plotly.graph_objects as go
 
+from app.cli import out_dir
 from app.sampling import TOLERANCE_PX
 
 from .charts import sampling_figure, speed_accuracy_figure, stability_figure, throughput_figure
 from .config import FULL, QUICK, BenchConfig
 from .methods import MethodName
 from .methods.mpmath_slices import ROUNDING_LEVEL
-from .output import ChromiumUnavailable, ImageWriter, plain, write_html, write_json
+from .output import ChartImages, ChromiumUnavailable, plain, write_html, write_json
 from .runner import CaseResult, RegimeRow, ThroughputPoint, regime_rows, run_case, throughput, warm_up
 from .sampling_study import STUDY_SCENES, SceneStudy, run_study
-from .scenes import FIG3, BenchCase, Regime
+from .scenes import FIG3_BETA_HALF, Regime
 from .stability import StabilityMap, stability_map, worst_by_method
 
 PROG = "rigidrel bench"
 #: The case of the cost-per-sample curves: Fig. 3's collision (two rods, four ends) in a frame at beta = 0.5.
-THROUGHPUT_CASE = BenchCase(Regime.ORDINARY, FIG3, 0.5, "custom")
+THROUGHPUT_CASE = FIG3_BETA_HALF
 METRIC = (
     "max over samples and rod ends of |x' - x'_ref| / max(|x'_ref|, L_ref(t')), L_ref the rod's equal-time "
     "length in the frame; x'_ref from mpmath at 50 digits (the paper's lab formulas sliced at each frame time)"
@@ -56,21 +56,6 @@ TIMING = (
 def run_bench(quick: bool, out: str) -> int:
     """``rigidrel bench [--quick] --out DIR``."""
     return run(QUICK if quick else FULL, out)
-
-
-def _folder(out: str) -> Path:
-    from app.cli import fail
-
-    if not out.strip():
-        fail(PROG, "--out: an empty folder name")
-    folder = Path(out).expanduser()
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        fail(PROG, f"--out {out!r}: cannot create the folder ({exc.strerror or exc})")
-    if not os.access(folder, os.W_OK | os.X_OK):
-        fail(PROG, f"--out {out!r}: the folder is not writable")
-    return folder
 
 
 class _Log:
@@ -156,7 +141,7 @@ def _measure_methods(config: BenchConfig, log: _Log) -> tuple[list[CaseResult], 
     cases = config.cases()
     for i, case in enumerate(cases):
         log(f"case {i + 1}/{len(cases)}: {case.regime.value}: {case.label}")
-        results.extend(run_case(case, settings, config.samples, config.timing)[1])
+        results.extend(run_case(case, settings, config.samples, config.timing))
     log(f"cost per sample against samples per call ({THROUGHPUT_CASE.label})")
     speeds = throughput(
         THROUGHPUT_CASE,
@@ -175,37 +160,25 @@ def _figures(
     studies: Sequence[SceneStudy],
     speeds: Sequence[ThroughputPoint],
     render_baseline: float | None,
-) -> dict[str, tuple[go.Figure, int, int]]:
-    """The charts by file name, with their PNG size in pixels."""
+) -> dict[str, go.Figure]:
+    """The charts by file name; each chart's layout width and height are its PNG's size in pixels."""
     return {
-        "speed_accuracy": (
-            speed_accuracy_figure(rows, f"Speed against accuracy ({config.name} run, {config.samples} frame times)"),
-            1500,
-            1020,
+        "speed_accuracy": speed_accuracy_figure(
+            rows, f"Speed against accuracy ({config.name} run, {config.samples} frame times)"
         ),
-        "stability_maps": (
-            stability_figure(maps, f"Stability maps: max error over V and β ({config.map_samples} frame times)"),
-            max(380 * len(maps.series), 900),
-            620,
+        "stability_maps": stability_figure(
+            maps, f"Stability maps: max error over V and β ({config.map_samples} frame times)"
         ),
-        "sampling": (
-            sampling_figure(
-                studies, "Model no more than a panel shows: fixed N against adaptive sampling", render_baseline
-            ),
-            1600,
-            650,
+        "sampling": sampling_figure(
+            studies, "Model no more than a panel shows: fixed N against adaptive sampling", render_baseline
         ),
-        "throughput": (
-            throughput_figure(speeds, f"Cost per sample against samples per call: {THROUGHPUT_CASE.label}"),
-            1100,
-            560,
-        ),
+        "throughput": throughput_figure(speeds, f"Cost per sample against samples per call: {THROUGHPUT_CASE.label}"),
     }
 
 
 def run(config: BenchConfig, out: str) -> int:
     """Measure, chart and write everything for ``config`` into the folder ``out``."""
-    folder = _folder(out)
+    folder = out_dir(PROG, out)
     log = _Log()
     log(f"{config.name} run into {folder}")
     results, speeds = _measure_methods(config, log)
@@ -215,7 +188,7 @@ def run(config: BenchConfig, out: str) -> int:
     maps = stability_map(config.map_settings(), config.map_velocity_digits, config.map_frame_digits, config.map_samples)
     maps_seconds = log.seconds - table_seconds
     png_error: str | None = None
-    with ImageWriter() as images:
+    with ChartImages() as images:
         log("sampling study (fixed N against adaptive)")
         repeats = config.sampling_render_repeats
 
@@ -231,11 +204,11 @@ def run(config: BenchConfig, out: str) -> int:
         log("charts")
         baseline = images.baseline_seconds if repeats > 0 else None
         figures = _figures(config, rows, maps, studies, speeds, baseline)
-        for name, (fig, width, height) in figures.items():
+        for name, fig in figures.items():
             write_html(fig, folder / f"{name}.html")
             if png_error is None:
                 try:
-                    images.write_png(fig, folder / f"{name}.png", width, height)
+                    images.write_png(fig, folder / f"{name}.png")
                 except ChromiumUnavailable as exc:
                     png_error = str(exc)
     data = {

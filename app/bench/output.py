@@ -14,14 +14,12 @@ import math
 import numbers
 import threading
 import time
-import warnings
 from pathlib import Path
 from typing import Any
 
 import plotly.graph_objects as go
-import plotly.io as pio
 
-from app.export.images import start_kaleido, stop_kaleido
+from app.export.images import ImageWriter, start_kaleido, stop_kaleido
 
 #: Deadline for the browser's first figure (it starts in about 3 s on an idle machine).
 STARTUP_SECONDS = 90.0
@@ -57,23 +55,25 @@ class ChromiumUnavailable(RuntimeError):
     """kaleido could not start or use a Chromium."""
 
 
-class ImageWriter:
-    """One kaleido server (one headless Chromium) for every PNG of a run; use as a context manager."""
+class ChartImages:
+    """The run's PNGs through the exports' writer (:class:`app.export.images.ImageWriter`, one kaleido
+    server for the whole run), plus what a bench run needs on top: a deadline for the browser's first
+    figure, the first failure kept rather than raised (the JSON and HTML are written regardless), and
+    render timing. Use as a context manager."""
 
     def __init__(self) -> None:
         self.error: str | None = None
         self.baseline_seconds: float | None = None
         """Best time to render an empty figure (kaleido's fixed cost per image)."""
-        self._started = False
+        self._writer: ImageWriter | None = None
 
-    def __enter__(self) -> ImageWriter:
-        warnings.filterwarnings("ignore", message="The kopts argument is ignored if using a server")
+    def __enter__(self) -> ChartImages:
         try:
             start_kaleido(timeout=120.0)
-            self._started = True
         except Exception as exc:  # kaleido raises its own error types; any failure means no PNGs
             self.error = _why(exc)
             return self
+        self._writer = ImageWriter()
         # Start the browser now (about 3 s) and time an empty figure: kaleido's own cost per image.
         # kaleido's sync server waits forever if its browser died, so the first call gets a deadline.
         first: list[float | None] = []
@@ -89,28 +89,39 @@ class ImageWriter:
         return self
 
     def __exit__(self, *exc: object) -> None:
-        if self._started and self.error is None:
+        # after a failure the browser may hang, and kaleido's stop with it: the process's exit ends it
+        if self._writer is not None and self.error is None:
             stop_kaleido()
 
-    def write_png(self, fig: go.Figure | dict[str, Any], path: Path, width: int, height: int) -> None:
-        """Render ``fig`` to ``path``; raises :class:`ChromiumUnavailable` with the reason."""
-        if self.error is not None:
-            raise ChromiumUnavailable(self.error)
+    def _live(self) -> ImageWriter:
+        if self._writer is None or self.error is not None:
+            raise ChromiumUnavailable(self.error or "kaleido was not started")
+        return self._writer
+
+    def write_png(self, fig: go.Figure, path: Path) -> None:
+        """Render ``fig`` at its layout's width and height to ``path``; raises :class:`ChromiumUnavailable`
+        with the reason."""
+        width, height = fig.layout.width, fig.layout.height
+        if width is None or height is None:
+            raise ValueError(f"{path.name}: a bench chart must set its layout width and height")
+        writer = self._live()
         try:
-            pio.write_image(fig, path, format="png", width=width, height=height, scale=1)
+            writer.write(fig.to_dict(), path, int(width), int(height))
         except Exception as exc:  # ChromeNotFoundError, BrowserFailedError, RuntimeError from plotly
             self.error = _why(exc)
             raise ChromiumUnavailable(self.error) from exc
 
     def render_seconds(self, fig: dict[str, Any], width: int, height: int, repeats: int) -> float | None:
         """Best wall time for Chromium to draw ``fig`` (plotly.js) into a PNG; None without a browser."""
-        if self.error is not None:
+        try:
+            writer = self._live()
+        except ChromiumUnavailable:
             return None
         best = float("inf")
         try:
             for _ in range(repeats):
                 start = time.perf_counter()
-                pio.to_image(fig, format="png", width=width, height=height, scale=1)
+                writer.png(fig, width, height)
                 best = min(best, time.perf_counter() - start)
         except Exception as exc:
             self.error = _why(exc)

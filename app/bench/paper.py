@@ -95,15 +95,6 @@ class PaperEnd:
         d = self.radius
         return self.side * np.sqrt(d * d + t * t)
 
-    def lab_x(self, t: FloatArray) -> FloatArray:
-        """x at lab times ``t``: the three pieces."""
-        before = self.x_start + self.v_before * (t - self.t_start)
-        after = self.x_stop + self.v_after * (t - self.t_stop)
-        if self.form == "kick":
-            return np.where(t <= self.t_start, before, after)
-        during = self.accelerated_x(np.clip(t, self.t_start, self.t_stop))
-        return np.where(t < self.t_start, before, np.where(t > self.t_stop, after, during))
-
 
 def _deriv_end(xi: float, a: float, v: float) -> PaperEnd:
     """Eq. (deriv) from rest at ``xi`` until speed ``v``, reached at ``T = gamma v / a'`` (Eq. (tlt))

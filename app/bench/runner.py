@@ -26,11 +26,10 @@ import numpy as np
 
 from .methods import FloatArray, MethodName, MethodSetting, core, ivp, mpmath_slices, polyline, textbook
 from .methods.mpmath_slices import ReferenceSlices, reference_slices, relative_errors
-from .scenes import CASES, BenchCase, BenchScene, Regime, sample_times
+from .scenes import CASES, BenchCase, Regime, sample_times
 
-#: The mpmath method's chart label and setting.
-MPMATH_SERIES = "mpmath 50 digits"
-MPMATH_SETTING = "50 digits"
+#: The mpmath method (the reference): timed once per case, charted as one series of one setting.
+MPMATH = MethodSetting(MethodName.MPMATH, "mpmath 50 digits", "50 digits", mpmath_slices.positions)
 
 
 @dataclass(frozen=True)
@@ -38,10 +37,10 @@ class Timing:
     """How long to repeat a call: at least ``min_repeats`` and ``min_seconds`` in total, at most
     ``max_repeats`` calls or ``max_seconds``; the best call counts."""
 
-    min_repeats: int = 3
-    max_repeats: int = 25
-    min_seconds: float = 0.05
-    max_seconds: float = 1.0
+    min_repeats: int
+    max_repeats: int
+    min_seconds: float
+    max_seconds: float
 
 
 #: One call, no repeats (mpmath, and the untimed stability maps).
@@ -93,20 +92,12 @@ def method_settings(
     integrators: tuple[tuple[ivp.IvpMethod, Sequence[float]], ...] = (("RK45", rk45_rtols), ("DOP853", dop853_rtols))
     for name, rtols in integrators:
         for rtol in rtols:
-            fn = functools.partial(_ivp, method=name, rtol=rtol)
+            fn = functools.partial(ivp.positions, method=name, rtol=rtol)
             out.append(MethodSetting(MethodName.SOLVE_IVP, f"solve_ivp {name}", f"rtol={rtol:.0e}", fn))
     for n in vertex_counts:
-        fn = functools.partial(_polyline, n_vertices=n)
+        fn = functools.partial(polyline.positions, n_vertices=n)
         out.append(MethodSetting(MethodName.SPACETIMELIB, "spacetimelib", f"N={n}", fn))
     return tuple(out)
-
-
-def _ivp(scene: BenchScene, frame_velocity: float, t: FloatArray, *, method: ivp.IvpMethod, rtol: float) -> FloatArray:
-    return ivp.positions(scene, frame_velocity, t, method, rtol)
-
-
-def _polyline(scene: BenchScene, frame_velocity: float, t: FloatArray, *, n_vertices: int) -> FloatArray:
-    return polyline.positions(scene, frame_velocity, t, n_vertices)
 
 
 def timed(call: Callable[[], FloatArray], timing: Timing) -> tuple[FloatArray | None, str | None, float, int]:
@@ -146,22 +137,18 @@ def max_error(x: FloatArray | None, ref: ReferenceSlices) -> tuple[float | None,
     return err, None
 
 
-def run_case(
-    case: BenchCase, settings: Sequence[MethodSetting], n_samples: int, timing: Timing
-) -> tuple[ReferenceSlices, list[CaseResult]]:
+def run_case(case: BenchCase, settings: Sequence[MethodSetting], n_samples: int, timing: Timing) -> list[CaseResult]:
     """Every method setting on one case; the mpmath reference first (timed once)."""
     t = sample_times(case, n_samples)
     start = time.perf_counter()
     ref = reference_slices(case.scene, case.frame_velocity, t)
     mp_seconds = time.perf_counter() - start
 
-    def result(
-        ms: MethodSetting | None, seconds: float, repeats: int, err: float | None, why: str | None
-    ) -> CaseResult:
+    def result(ms: MethodSetting, seconds: float, repeats: int, err: float | None, why: str | None) -> CaseResult:
         return CaseResult(
-            method=MethodName.MPMATH if ms is None else ms.method,
-            series=MPMATH_SERIES if ms is None else ms.series,
-            setting=MPMATH_SETTING if ms is None else ms.setting,
+            method=ms.method,
+            series=ms.series,
+            setting=ms.setting,
             regime=case.regime,
             case=case.label,
             frame_velocity=case.frame_velocity,
@@ -173,14 +160,14 @@ def run_case(
         )
 
     mp_error, _ = max_error(ref.hi, ref)
-    results = [result(None, mp_seconds, 1, mp_error, None)]
+    results = [result(MPMATH, mp_seconds, 1, mp_error, None)]
     for ms in settings:
         out, failure, seconds, repeats = timed(
             functools.partial(ms.evaluate, case.scene, case.frame_velocity, t), timing
         )
         err, bad = max_error(out, ref)
         results.append(result(ms, seconds, repeats, err, failure or bad))
-    return ref, results
+    return results
 
 
 def warm_up(settings: Sequence[MethodSetting]) -> None:
@@ -241,8 +228,7 @@ def throughput(
     frame, plus a marginal cost per sample). A method stops growing once one call takes longer
     than ``max_call_seconds``; mpmath is timed once per count."""
     out: list[ThroughputPoint] = []
-    mpmath = MethodSetting(MethodName.MPMATH, MPMATH_SERIES, MPMATH_SETTING, mpmath_slices.positions)
-    for ms in (*settings, mpmath):
+    for ms in (*settings, MPMATH):
         how = ONCE if ms.method is MethodName.MPMATH else timing
         for n in counts:
             t = sample_times(case, n)

@@ -147,34 +147,38 @@ def max_deviation_px(curve: _Curve) -> float:
     return float(np.max(np.abs(exact - chord)) * curve.px_per_unit)
 
 
-def _json_bytes(d: Drawn) -> int:
-    return sum(len(c.to_json()) for c in (d.lab_chart, d.frame_chart, d.length_chart))
+#: The figure JSON of each diagram of one drawing, as sent to the browser, with its height / width.
+Sent = tuple[tuple[str, float], ...]
 
 
-def drawing(resolved: Resolved, kind: SamplerKind, n: int) -> Drawn:
-    """The app's drawing of a scene, with the app's sampler or a fixed-N one."""
-    return build_drawing(resolved, _sampler(kind, n))
+def _sent(d: Drawn) -> Sent:
+    return (
+        (d.lab_chart.to_json(), PLOT_ASPECT),
+        (d.frame_chart.to_json(), PLOT_ASPECT),
+        (d.length_chart.to_json(), LENGTH_ASPECT),
+    )
 
 
-def measure(resolved: Resolved, kind: SamplerKind, n: int, repeats: int) -> SamplingPoint:
-    """Points, deviation, best build time and payload of one drawing."""
+def measure(resolved: Resolved, kind: SamplerKind, n: int, repeats: int) -> tuple[SamplingPoint, Sent]:
+    """Points, deviation, best build time and payload of one drawing; and its figures as sent."""
     base = _sampler(kind, n)
     recorder = _RecordingSampler(base.tol_px, base.fixed_n)
-    drawn = build_drawing(resolved, recorder)
+    sent = _sent(build_drawing(resolved, recorder))
     curves = recorder.curves
     best = float("inf")
     for _ in range(repeats):
         start = time.perf_counter()
         build_drawing(resolved, base)
         best = min(best, time.perf_counter() - start)
-    return SamplingPoint(
+    point = SamplingPoint(
         sampler=kind,
         n_fixed=None if kind == "adaptive" else n,
         points=sum(c.sampled.t.size for c in curves),
         max_deviation_px=max(max_deviation_px(c) for c in curves),
         build_seconds=best,
-        json_bytes=_json_bytes(drawn),
+        json_bytes=sum(len(text) for text, _ in sent),
     )
+    return point, sent
 
 
 #: ``render(figure dict, width, height) -> seconds`` (None without a browser): the browser's time
@@ -182,17 +186,12 @@ def measure(resolved: Resolved, kind: SamplerKind, n: int, repeats: int) -> Samp
 Renderer = Callable[[dict[str, Any], int, int], float | None]
 
 
-def _with_render(resolved: Resolved, point: SamplingPoint, render: Renderer) -> SamplingPoint:
+def _with_render(point: SamplingPoint, sent: Sent, render: Renderer) -> SamplingPoint:
     """Add the browser's time to draw all three diagrams of the drawing (each at its panel size)."""
-    drawn = drawing(resolved, point.sampler, point.n_fixed or 0)
     width = int(PLOT_PANEL_PX)
     total = 0.0
-    for chart, aspect in (
-        (drawn.lab_chart, PLOT_ASPECT),
-        (drawn.frame_chart, PLOT_ASPECT),
-        (drawn.length_chart, LENGTH_ASPECT),
-    ):
-        seconds = render(json.loads(chart.to_json()), width, int(width * aspect))
+    for text, aspect in sent:
+        seconds = render(json.loads(text), width, int(width * aspect))
         if seconds is None:
             return point
         total += seconds
@@ -206,18 +205,19 @@ def run_study(
     scenes: Sequence[StudyScene] = STUDY_SCENES,
 ) -> list[SceneStudy]:
     """Adaptive and every fixed N for each scene; with ``render``, also the browser's time to draw
-    the frame diagram for adaptive, fixed N at equal accuracy and the largest fixed N."""
+    all three diagrams for adaptive, fixed N at equal accuracy and the largest fixed N."""
     out = []
     for scene in scenes:
         resolved = resolve(scene.settings)
         if not isinstance(resolved, Resolved):
             raise ValueError(f"study scene {scene.label!r}: {resolved}")
-        adaptive = measure(resolved, "adaptive", 0, repeats)
-        fixed = tuple(measure(resolved, "fixed", n, repeats) for n in fixed_counts)
+        adaptive, adaptive_sent = measure(resolved, "adaptive", 0, repeats)
+        fixed_sent = [measure(resolved, "fixed", n, repeats) for n in fixed_counts]
+        fixed = tuple(p for p, _ in fixed_sent)
         study = SceneStudy(scene.label, scene.short, adaptive, fixed)
         if render is not None:
             equal = study.fixed_at_equal_accuracy(TOLERANCE_PX)
-            fixed = tuple(_with_render(resolved, p, render) if p in (equal, fixed[-1]) else p for p in fixed)
-            study = SceneStudy(scene.label, scene.short, _with_render(resolved, adaptive, render), fixed)
+            fixed = tuple(_with_render(p, sent, render) if p in (equal, fixed[-1]) else p for p, sent in fixed_sent)
+            study = SceneStudy(scene.label, scene.short, _with_render(adaptive, adaptive_sent, render), fixed)
         out.append(study)
     return out

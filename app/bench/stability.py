@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 from .methods import MethodSetting
 from .methods.mpmath_slices import reference_slices
-from .runner import MPMATH_SERIES, MPMATH_SETTING, ONCE, max_error, timed
+from .runner import MPMATH, ONCE, max_error, timed
 from .scenes import BenchCase, BenchScene, Regime, rod_collision, sample_times
 
 
@@ -55,7 +55,7 @@ def stability_map(
     """Errors of ``settings`` (one per method) and of mpmath (rounded to float64) on the grid."""
     velocities = tuple(speed_from_digits(k) for k in velocity_digits)
     betas = frame_velocities(frame_digits)
-    series = (*(s.series for s in settings), MPMATH_SERIES)
+    series = (*(s.series for s in settings), MPMATH.series)
     errors: dict[str, list[list[float | None]]] = {s: [] for s in series}
     failures: dict[str, list[str]] = {s: [] for s in series}
     for beta in betas:
@@ -69,7 +69,7 @@ def stability_map(
                 if why is not None:
                     failures[ms.series].append(f"V={v!r}, beta={beta!r}: {why}")
                 rows[ms.series].append(max_error(out, ref)[0])
-            rows[MPMATH_SERIES].append(max_error(ref.hi, ref)[0])
+            rows[MPMATH.series].append(max_error(ref.hi, ref)[0])
         for s in series:
             errors[s].append(rows[s])
     return StabilityMap(
@@ -78,7 +78,7 @@ def stability_map(
         frame_velocities=betas,
         samples=n_samples,
         series=series,
-        settings=(*(s.setting for s in settings), MPMATH_SETTING),
+        settings=(*(s.setting for s in settings), MPMATH.setting),
         errors=errors,
         failures=failures,
     )

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import rigidrel_core as rr
 from app.export.bundle import export_scene
+from app.settings import choose_frame
 
 
 def main() -> None:
@@ -23,7 +24,7 @@ def main() -> None:
     parser.add_argument("--fps", type=float, default=30.0)
     args = parser.parse_args()
     for scene in (rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0), rr.constant_acceleration(0.6, 1.0, 0.5)):
-        frame = scene.frames["barycentric" if "barycentric" in scene.frames else "rod after"]
+        frame = choose_frame(scene, None)
         with tempfile.TemporaryDirectory() as tmp:
             t0 = time.perf_counter()
             written = export_scene(scene, frame, Path(tmp), seconds=args.seconds, fps=args.fps)
