@@ -96,7 +96,7 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
     Hyperbola: ``x' = X_h + sign t'(t' - 2 t'_C) / (q + q_0)`` with
     ``q = sqrt(rho^2 + (t' - t'_C)^2)``, ``q_0 = sqrt(rho^2 + t'_C^2)`` and ``X_h`` its ``t' = 0``
     crossing ``x'_C + sign q_0``, or, when those two cancel, ``x_V (x_C - sign rho)/(x'_C - sign q_0)``
-    (the product of the quadratic's roots). One broadcast pass over rods x fractions.
+    (the product of the quadratic's roots). One row of plain float arithmetic per rod and fraction.
     """
     sh = frame.sinh_rapidity()
     chm1 = frame.cosh_rapidity_minus_one()
@@ -135,7 +135,7 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
                 a_i, a_f = x_lab - sig * rho * k_i, x_lab - sig * rho * k_f
             s_i, s_f = sig * rho * sinh_i, sig * rho * sinh_f
             rows.append(
-                (
+                (  # in MotionPlan's field order (a NamedTuple with keywords would cost ~1 us a row)
                     sig,
                     rho,
                     t_c,

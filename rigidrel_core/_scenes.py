@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from decimal import Context, Decimal, localcontext
 from enum import StrEnum
 from types import MappingProxyType
-from typing import Literal
+from typing import Literal, TypeVar
 
 import numpy as np
 import numpy.typing as npt
@@ -289,29 +289,34 @@ def _rigid_motion(
     ``[vertex_left, vertex_left + length]``; the end nearest the centre is ``rho_near`` from it."""
     sign: Literal[1, -1] = 1 if (v_final.hi, v_final.lo) > (v_initial.hi, v_initial.lo) else -1
     if rho_near == 0:  # an impulse: single float operations, each correctly rounded, suffice
-        horizon_f = vertex_left if sign == 1 else vertex_left + length
-        r_left_f, r_right_f = (0.0, length) if sign == 1 else (length, 0.0)
-        return RigidMotion(length, sign, horizon_f, r_left_f, r_right_f, vertex_left, v_initial, v_final)
-    with _ctx():
-        L = Decimal(length)
-        near = rho_near
-        far = rho_near + L
-        if sign == 1:
-            horizon = Decimal(vertex_left) - near
-            r_left, r_right = near, far
-        else:
-            horizon = Decimal(vertex_left) + far
-            r_left, r_right = far, near
-        return RigidMotion(
-            length=length,
-            sign=sign,
-            horizon_x=float(horizon),
-            radius_left=float(r_left),
-            radius_right=float(r_right),
-            vertex_left=vertex_left,
-            velocity_initial=v_initial,
-            velocity_final=v_final,
-        )
+        horizon, r_left, r_right = _horizon_and_radii(sign, vertex_left, 0.0, length)
+    else:
+        with _ctx():
+            horizon, r_left, r_right = _horizon_and_radii(
+                sign, Decimal(vertex_left), rho_near, rho_near + Decimal(length)
+            )
+    return RigidMotion(
+        length=length,
+        sign=sign,
+        horizon_x=float(horizon),
+        radius_left=float(r_left),
+        radius_right=float(r_right),
+        vertex_left=vertex_left,
+        velocity_initial=v_initial,
+        velocity_final=v_final,
+    )
+
+
+_Num = TypeVar("_Num", float, Decimal)
+
+
+def _horizon_and_radii(sign: Literal[1, -1], vertex_left: _Num, near: _Num, far: _Num) -> tuple[_Num, _Num, _Num]:
+    """Centre x and the left and right ends' radii of a family at rest on ``[vertex_left, vertex_left
+    + length]``, its ends ``near`` and ``far = near + length`` from the centre: the centre lies behind
+    the rod (on the left when it speeds up to the right, ``sign = 1``)."""
+    if sign == 1:
+        return vertex_left - near, near, far
+    return vertex_left + far, far, near
 
 
 def _check_acceleration(a_front: float, length: float) -> Decimal:
