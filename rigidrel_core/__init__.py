@@ -4,51 +4,79 @@ Units c = 1. A frame of velocity ``beta`` has ``x' = gamma (x - beta t)``,
 ``t' = gamma (t - beta x)``, sharing the lab's origin. Pure numpy (plus the standard
 library's ``decimal`` for the one-off scalar solution of each scene); it never imports
 the app, viser or plotly.
+
+    import rigidrel_core as rr
+    scene = rr.build_scene("rod-collision", m2=2.0)          # Fig. 3, case I
+    frame = scene.frame("barycentric")
+    x = scene.positions([0.0, 0.5], frame)                    # ends of both rods in that frame
+    events_frame = frame @ [[t, x] for t, x in scene.events.values()]
 """
 
-from ._boost import Boost as Boost
-from ._boost import Frame as Frame
 from ._budget import FourMomentumBudget as FourMomentumBudget
+from ._description import EventDescription as EventDescription
+from ._description import Interval as Interval
+from ._description import ObstacleKind as ObstacleKind
+from ._description import OriginEvent as OriginEvent
+from ._description import Overlay as Overlay
+from ._description import Parameter as Parameter
+from ._description import SceneDescription as SceneDescription
+from ._description import ScenePreset as ScenePreset
+from ._description import Slider as Slider
 from ._exact import ExactVelocity as ExactVelocity
-from ._exact import relative_rapidity as relative_rapidity
+from ._frame import LAB as LAB
+from ._frame import Frame as Frame
 from ._motion import RigidMotion as RigidMotion
-from ._registry import SCENE_PARAMETERS as SCENE_PARAMETERS
-from ._registry import ParameterSpec as ParameterSpec
 from ._registry import build_scene as build_scene
-from ._registry import scene_kind as scene_kind
-from ._scenes import CollisionSolution as CollisionSolution
-from ._scenes import Rod as Rod
-from ._scenes import Scene as Scene
-from ._scenes import SceneKind as SceneKind
-from ._scenes import constant_acceleration as constant_acceleration
-from ._scenes import deceleration as deceleration
-from ._scenes import impulsive_start as impulsive_start
-from ._scenes import rod_collision as rod_collision
-from ._scenes import solve_collision as solve_collision
-from ._scenes import velocity_change as velocity_change
-from ._scenes import wall_collision as wall_collision
+from ._registry import default_frame as default_frame
+from ._registry import describe as describe
+from ._registry import register_scene as register_scene
+from ._registry import scene_descriptions as scene_descriptions
+from ._scene import ENDS as ENDS
+from ._scene import EventSpec as EventSpec
+from ._scene import Obstacle as Obstacle
+from ._scene import Rod as Rod
+from ._scene import Scene as Scene
 from ._validate import ParameterError as ParameterError
+from .scenes.acceleration import constant_acceleration as constant_acceleration
+from .scenes.acceleration import deceleration as deceleration
+from .scenes.acceleration import velocity_change as velocity_change
+from .scenes.collision import CollisionSolution as CollisionSolution
+from .scenes.collision import rod_collision as rod_collision
+from .scenes.collision import solve_collision as solve_collision
+from .scenes.impulse import impulsive_start as impulsive_start
+from .scenes.wall import wall_collision as wall_collision
 
 __all__ = [
-    "SCENE_PARAMETERS",
-    "Boost",
+    "ENDS",
+    "LAB",
     "CollisionSolution",
+    "EventDescription",
+    "EventSpec",
     "ExactVelocity",
     "FourMomentumBudget",
     "Frame",
+    "Interval",
+    "Obstacle",
+    "ObstacleKind",
+    "OriginEvent",
+    "Overlay",
+    "Parameter",
     "ParameterError",
-    "ParameterSpec",
     "RigidMotion",
     "Rod",
     "Scene",
-    "SceneKind",
+    "SceneDescription",
+    "ScenePreset",
+    "Slider",
     "build_scene",
     "constant_acceleration",
     "deceleration",
+    "default_frame",
+    "describe",
     "impulsive_start",
-    "relative_rapidity",
+    "register_scene",
     "rod_collision",
-    "scene_kind",
+    "scene_descriptions",
     "solve_collision",
     "velocity_change",
     "wall_collision",

@@ -90,6 +90,10 @@ class ExactVelocity:
             return 0.5 * math.log1p(2.0 * (self.hi + self.lo) / self.one_minus())
         return -0.5 * math.log1p(-2.0 * (self.hi + self.lo) / self.one_plus())
 
+    def negated(self) -> ExactVelocity:
+        """``-v``, exactly."""
+        return ExactVelocity(-self.hi, -self.lo, self.gap)
+
 
 REST = ExactVelocity(0.0, 0.0, 1.0)
 
@@ -112,6 +116,37 @@ def relative_rapidity(v: ExactVelocity, frame: ExactVelocity) -> float:
     if d >= 0.0:
         return 0.5 * math.log1p(2.0 * d / (v.one_minus() * frame.one_plus()))
     return -0.5 * math.log1p(-2.0 * d / (v.one_plus() * frame.one_minus()))
+
+
+def _one_minus_decimal(v: ExactVelocity) -> Decimal:
+    """``1 - v`` as an exact decimal, using the stored gap where it is the accurate part."""
+    return Decimal(v.gap) if v.hi >= 0.5 else 1 - v.as_decimal()
+
+
+def _one_plus_decimal(v: ExactVelocity) -> Decimal:
+    return Decimal(v.gap) if v.hi <= -0.5 else 1 + v.as_decimal()
+
+
+def compose_velocities(a: ExactVelocity, b: ExactVelocity) -> ExactVelocity:
+    """Relativistic velocity addition ``(a + b) / (1 + a b)`` (rapidities add), in 60 digits.
+
+    The gap to light speed comes from the products ``1 - v = (1 - a)(1 - b)/(1 + ab)`` and
+    ``1 + v = (1 + a)(1 + b)/(1 + ab)``, so two velocities within 1e-30 of light compose
+    without cancellation.
+    """
+    with localcontext() as ctx:
+        ctx.prec = DECIMAL_DIGITS
+        da, db = a.as_decimal(), b.as_decimal()
+        denominator = 1 + da * db
+        v = (da + db) / denominator
+        if v >= 0:
+            gap = _one_minus_decimal(a) * _one_minus_decimal(b) / denominator
+        else:
+            gap = _one_plus_decimal(a) * _one_plus_decimal(b) / denominator
+        if gap <= 0:  # both within float64's reach of light: below the represented gap
+            raise ValueError("composed velocity reaches light speed")
+        hi = float(v)
+        return ExactVelocity(hi, float(v - Decimal(hi)), float(gap))
 
 
 def lorentz_factor_decimal(v: Decimal) -> Decimal:

@@ -46,8 +46,8 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
-from ._boost import Frame
 from ._exact import BELOW_ONE, ExactVelocity, relative_rapidity
+from ._frame import Frame
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -98,8 +98,8 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
     crossing ``x'_C + sign q_0``, or, when those two cancel, ``x_V (x_C - sign rho)/(x'_C - sign q_0)``
     (the product of the quadratic's roots). One row of plain float arithmetic per rod and fraction.
     """
-    sh = frame.sinh_rapidity()
-    chm1 = frame.cosh_rapidity_minus_one()
+    sh = frame.proper_velocity
+    chm1 = frame.lorentz_factor_minus_one()
     ch = 1.0 + chm1
     fs = fractions.tolist()
     rows: list[tuple[float, ...]] = []

@@ -75,13 +75,23 @@ def check_open_unit(name: str, value: object) -> float:
     return x
 
 
+def _real_array(name: str, allowed: str, value: npt.ArrayLike) -> npt.NDArray[np.float64]:
+    """``value`` as a float64 array; complex, object or text arrays are refused, never cut to a part."""
+    if isinstance(value, np.ndarray) and value.dtype.kind in "biuf":
+        return value.astype(np.float64, copy=False)
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError):
+        raise ParameterError(name, allowed, value) from None
+    if raw.dtype.kind not in "biuf":
+        raise ParameterError(name, allowed, value)
+    return raw.astype(np.float64, copy=False)
+
+
 def check_times(name: str, t: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Finite real times with ``|t| <= 1e300``; any shape."""
     allowed = f"finite real numbers with |{name}| <= {MAX_ABS_TIME:g}"
-    try:
-        arr = np.asarray(t, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ParameterError(name, allowed, t) from None
+    arr = _real_array(name, allowed, t)
     if arr.size:
         lo = arr.min()
         hi = arr.max()
@@ -95,10 +105,7 @@ def check_times(name: str, t: npt.ArrayLike) -> npt.NDArray[np.float64]:
 def check_fractions(name: str, f: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Material coordinates as fractions of the rest length, each in [0, 1]."""
     allowed = "an array of numbers in [0, 1]"
-    try:
-        arr = np.asarray(f, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ParameterError(name, allowed, f) from None
+    arr = _real_array(name, allowed, f)
     if arr.ndim != 1 or not np.all((arr >= 0.0) & (arr <= 1.0)):
         raise ParameterError(name, allowed, f)
     return arr

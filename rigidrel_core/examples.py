@@ -5,7 +5,10 @@ Lengths in units of the rest length L0 = 1; c = 1.
 
 from __future__ import annotations
 
-from ._scenes import Scene, constant_acceleration, impulsive_start, rod_collision
+from ._scene import Scene
+from .scenes.acceleration import constant_acceleration
+from .scenes.collision import rod_collision
+from .scenes.impulse import impulsive_start
 
 #: The paper's final velocity in Figs. 1-4: V = 0.6, gamma = 1.25.
 PAPER_V = 0.6

@@ -1,8 +1,7 @@
-"""The drawing vocabulary shared by the 3-D lanes (viser) and the diagrams (plotly).
+"""The plotly backend of the drawing vocabulary: charts as plotly figure dicts and JSON.
 
-Pure data: sampled coordinates plus a :class:`Style`. Builders (``diagrams``, ``lanes``)
-produce these; backends (:func:`chart_to_plotly` here, ``viser_scene`` for 3-D) only
-translate them. Nothing here knows any physics.
+No go.Figure objects (no validation cost): traces and layouts are plain dicts, numpy arrays
+are sent as plotly.js typed arrays (base64 float64: exact and compact).
 """
 
 from __future__ import annotations
@@ -10,133 +9,12 @@ from __future__ import annotations
 import base64
 import json
 from collections.abc import Sequence
-from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
-import numpy.typing as npt
 
-FloatArray = npt.NDArray[np.float64]
-Dash = Literal["solid", "dash", "dot", "dashdot"]
-Anchor = Literal["left", "right", "center"]
+from ..view.vocabulary import Area, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style
 
-# palette (colour-blind safe: blue / orange / purple, Okabe-Ito)
-ROD_COLORS = ("#0072B2", "#E8710A")
-FRAME_COLOR = "#7B3FA0"
-LIGHT_COLOR = "#C9A400"
-WALL_COLOR = "#6E6E6E"
-INK = "#222222"
-
-
-def rgb(color: str) -> tuple[int, int, int]:
-    """``"#RRGGBB"`` -> ``(r, g, b)``."""
-    c = color.lstrip("#")
-    return int(c[0:2], 16), int(c[2:4], 16), int(c[4:6], 16)
-
-
-def rgba(color: str, alpha: float) -> str:
-    r, g, b = rgb(color)
-    return f"rgba({r},{g},{b},{alpha:g})"
-
-
-@dataclass(frozen=True)
-class Style:
-    color: str = INK
-    width: float = 2.0
-    dash: Dash = "solid"
-    opacity: float = 1.0
-    name: str | None = None
-    """Legend entry; ``None`` keeps the item out of the legend."""
-    group: str | None = None
-    """Items of one group toggle together in the legend."""
-
-
-@dataclass(frozen=True)
-class Polyline:
-    """A curve through ``(x[i], y[i])``."""
-
-    x: FloatArray
-    y: FloatArray
-    style: Style = Style()
-
-
-@dataclass(frozen=True)
-class Segments:
-    """Separate straight segments ``(x0, y0) -> (x1, y1)``; arrays of shape ``(n,)``."""
-
-    x0: FloatArray
-    y0: FloatArray
-    x1: FloatArray
-    y1: FloatArray
-    style: Style = Style()
-
-
-@dataclass(frozen=True)
-class Area:
-    """A filled polygon (closed automatically)."""
-
-    x: FloatArray
-    y: FloatArray
-    style: Style = Style()
-
-
-@dataclass(frozen=True)
-class Points:
-    x: FloatArray
-    y: FloatArray
-    style: Style = Style()
-    size: float = 8.0
-    symbol: str = "circle"
-
-
-@dataclass(frozen=True)
-class Label:
-    x: float
-    y: float
-    text: str
-    """May use ``<sub>``/``<b>`` (plotly) and is rendered as plain text in 3-D."""
-    style: Style = Style()
-    anchor: Anchor = "left"
-    size: float = 13.0
-
-
-Item = Polyline | Segments | Area | Points | Label
-
-
-@dataclass(frozen=True)
-class Chart:
-    """A 2-D chart: items, axis titles and ranges."""
-
-    items: tuple[Item, ...]
-    x_title: str
-    y_title: str
-    x_range: tuple[float, float]
-    y_range: tuple[float, float]
-    title: str = ""
-    equal_aspect: bool = False
-    """Minkowski diagrams: one unit of x as long as one unit of t (light at 45 degrees)."""
-
-
-def event_label(name: str) -> str:
-    """The paper's notation: ``T_1'`` -> ``T'<sub>1</sub>``, ``-T_F`` -> ``−T<sub>F</sub>``."""
-    sign = "−" if name.startswith("-") else ""
-    core = name.lstrip("-")
-    prime = "'" if core.endswith("'") else ""
-    core = core.rstrip("'")
-    if "_" in core:
-        head, sub = core.split("_", 1)
-        return f"<b>{sign}{head}{prime}<sub>{sub}</sub></b>"
-    return f"<b>{sign}{core}{prime}</b>"
-
-
-def plain_text(text: str) -> str:
-    """Strip the small HTML subset for text drawn in 3-D."""
-    for tag in ("<b>", "</b>", "<sub>", "</sub>"):
-        text = text.replace(tag, "")
-    return text
-
-
-# ------------------------------------------------------------------- plotly backend
 def _plotly_line(style: Style) -> dict[str, Any]:
     """Plotly line attributes. ``simplify`` off: plotly would otherwise drop vertices it judges
     collinear (about a pixel), undoing the sampler's chord tolerance and leaving visible corners."""
@@ -295,13 +173,3 @@ class SplicedFigure:
     def to_json(self) -> str:
         """The static figure alone."""
         return self._json
-
-
-class JsonFigure:
-    """A ready JSON string with the one method viser's plotly handle calls."""
-
-    def __init__(self, text: str) -> None:
-        self._text = text
-
-    def to_json(self) -> str:
-        return self._text

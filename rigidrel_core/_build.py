@@ -1,0 +1,153 @@
+"""What every scene constructor shares: the 60-digit context, the Born-rigid change of one rod,
+the frame presets, the shared parameters and the check that a scene fits in float64."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from contextlib import AbstractContextManager
+from decimal import Context, Decimal, localcontext
+from types import MappingProxyType
+from typing import Literal, TypeVar
+
+from ._description import SPEED, UNIT_CLOSED, Interval, Parameter, Slider
+from ._exact import DECIMAL_DIGITS, ExactVelocity
+from ._frame import LAB, Frame
+from ._motion import RigidMotion
+from ._scene import Scene
+from ._validate import ParameterError
+
+# ---------------------------------------------------------------------- shared parameters
+#: Largest |coordinate| of a lab event or Rindler radius a scene may have; squares of
+#: anything a frame makes of it (times gamma <= 7e7) stay far inside float64.
+MAX_SCENE_COORDINATE = 1e120
+#: Lengths and masses: positive and at most 1e120 (so every product a frame forms stays finite).
+SIZE = Interval(0.0, MAX_SCENE_COORDINATE, hi_closed=True)
+#: Proper accelerations: a Rindler radius 1/a of at most 1e120.
+ACCELERATION = Interval(1.0 / MAX_SCENE_COORDINATE, math.inf)
+V = Parameter(
+    "v",
+    "V",
+    "V",
+    "c",
+    SPEED,
+    0.6,
+    "final speed V (c = 1)",
+    Slider(0.01, 0.99, 0.01),
+)
+LENGTH = Parameter("length", "L0", "L0", "length unit", SIZE, 1.0, "rest length L0", typical=(0.1, 10.0))
+A_FRONT = Parameter(
+    "a_front",
+    "a′_F",
+    "a′_F L0",
+    "1/L0",
+    ACCELERATION,
+    0.5,
+    "front-end proper acceleration a′_F; the back end has a′_B = a′_F/(1 − a′_F L0) (Sec. 3, Eq. (15))",
+    Slider(0.01, 0.99, 0.01),
+    constraint="a_front * length in (0, 1)",
+)
+MASS = Parameter("mass", "M", "M", "mass unit", SIZE, 1.0, "rest mass M", typical=(0.1, 10.0))
+EPS = Parameter(
+    "eps",
+    "ε",
+    "ε (restitution)",
+    "",
+    UNIT_CLOSED,
+    1.0,
+    "coefficient of restitution ε: 0 sticks (crash), 1 is elastic (Sec. 6, Eq. (29))",
+    Slider(0.0, 1.0, 0.01),
+)
+#: Frame presets of a one-rod scene, in menu order.
+SINGLE_ROD_FRAMES = ("lab", "rod before", "rod after")
+
+
+# ---------------------------------------------------------------------- arithmetic
+def decimal_context() -> AbstractContextManager[Context]:
+    """A 60-digit decimal context for the scalar scene solution."""
+    return localcontext(prec=DECIMAL_DIGITS)
+
+
+_Num = TypeVar("_Num", float, Decimal)
+
+
+def horizon_and_radii(sign: Literal[1, -1], vertex_left: _Num, near: _Num, far: _Num) -> tuple[_Num, _Num, _Num]:
+    """Centre x and the left and right ends' radii of a family at rest on ``[vertex_left, vertex_left
+    + length]``, its ends ``near`` and ``far = near + length`` from the centre: the centre lies behind
+    the rod (on the left when it speeds up to the right, ``sign = 1``)."""
+    if sign == 1:
+        return vertex_left - near, near, far
+    return vertex_left + far, far, near
+
+
+def rigid_motion(
+    v_initial: ExactVelocity,
+    v_final: ExactVelocity,
+    length: float,
+    rho_near: Decimal,
+    vertex_left: float,
+) -> RigidMotion:
+    """Born-rigid change ``v_initial -> v_final``; at lab t = 0 the (extended) family is at rest on
+    ``[vertex_left, vertex_left + length]``; the end nearest the centre is ``rho_near`` from it
+    (``rho_near = 0``: the impulsive limit of Sec. 4)."""
+    sign: Literal[1, -1] = 1 if (v_final.hi, v_final.lo) > (v_initial.hi, v_initial.lo) else -1
+    if rho_near == 0:  # an impulse: single float operations, each correctly rounded, suffice
+        horizon, r_left, r_right = horizon_and_radii(sign, vertex_left, 0.0, length)
+    else:
+        with decimal_context():
+            horizon, r_left, r_right = horizon_and_radii(
+                sign, Decimal(vertex_left), rho_near, rho_near + Decimal(length)
+            )
+    return RigidMotion(
+        length=length,
+        sign=sign,
+        horizon_x=float(horizon),
+        radius_left=float(r_left),
+        radius_right=float(r_right),
+        vertex_left=vertex_left,
+        velocity_initial=v_initial,
+        velocity_final=v_final,
+    )
+
+
+#: ``a'_F L0`` of a constant acceleration: 1 would be the impulsive limit (a scene of its own).
+BELOW_HORIZON = Interval(0.0, 1.0)
+
+
+def near_radius(a_front: float, length: float, allowed: Interval = BELOW_HORIZON) -> Decimal:
+    """``a_front * length`` in ``allowed`` (evaluated exactly); returns ``rho_near = (1 - a L)/a``.
+
+    Sec. 3, Eq. (15): ``a'_B = a'_F / (1 - a'_F L0)``, so the near (back) end sits at
+    ``1/a'_B = (1 - a'_F L0)/a'_F`` from the centre; ``a'_F L0 = 1`` is the impulsive limit.
+    """
+    with decimal_context():
+        aL = Decimal(a_front) * Decimal(length)
+        if not (aL > 0 and (aL < 1 or (allowed.hi_closed and aL == 1))):
+            raise ParameterError("a_front * length", f"a finite number {allowed.text()}", float(aL))
+        return (1 - aL) / Decimal(a_front)
+
+
+def single_rod_frames(motion: RigidMotion) -> Mapping[str, Frame]:
+    return MappingProxyType(
+        {
+            "lab": LAB,
+            "rod before": Frame(motion.velocity_initial, "rod before"),
+            "rod after": Frame(motion.velocity_final, "rod after"),
+        }
+    )
+
+
+def checked_scene(scene: Scene) -> Scene:
+    """Reject parameter combinations whose derived numbers leave the representable range."""
+    allowed = f"such that every lab event and Rindler radius lies within {MAX_SCENE_COORDINATE:g} of the origin"
+    for r in scene.rods:
+        m = r.motion
+        nums = [m.horizon_x, m.radius_left, m.radius_right, r.mass_after]
+        for v in (m.velocity_initial, m.velocity_final):
+            if not v.gap > 0.0:
+                below_light = "such that every velocity stays below light speed"
+                raise ParameterError("parameters", below_light, dict(scene.parameters))
+            nums.append(max(m.radius_left, m.radius_right) * v.proper_velocity())
+        if not all(math.isfinite(x) and abs(x) <= MAX_SCENE_COORDINATE for x in nums):
+            raise ParameterError("parameters", allowed, dict(scene.parameters))
+    return scene

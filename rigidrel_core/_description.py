@@ -1,0 +1,236 @@
+"""What a scene is, for everything that is not physics: one frozen description per scene.
+
+A :class:`SceneDescription` names a scene's constructor and says, for the app, the command
+line, the exports, the benchmarks and the tests, what its parameters are (symbol, unit,
+allowed range, slider, default, help), which of the paper's figures it reproduces, which
+frames it offers, what its named events mean and which obstacles it has. Every one of
+those front ends is generated from the description; the constructor validates with the
+very same :class:`Parameter` objects, so the ranges shown are the ranges enforced.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from enum import StrEnum
+from types import MappingProxyType
+from typing import TYPE_CHECKING, Literal
+
+from ._validate import ParameterError
+
+if TYPE_CHECKING:
+    from ._scene import Scene
+
+Scale = Literal["linear", "log"]
+
+
+@dataclass(frozen=True)
+class Interval:
+    """A range of real numbers with open or closed ends (``math.inf`` for none)."""
+
+    lo: float
+    hi: float
+    lo_closed: bool = False
+    hi_closed: bool = False
+
+    def __contains__(self, x: float) -> bool:
+        above = x >= self.lo if self.lo_closed else x > self.lo
+        below = x <= self.hi if self.hi_closed else x < self.hi
+        return above and below
+
+    def text(self) -> str:
+        """``"in (0, 1)"``, ``"in [0, 1]"``, ``"> 0"``."""
+        if math.isinf(self.hi) and self.hi > 0:
+            return f"{'>=' if self.lo_closed else '>'} {self.lo:g}"
+        left = "[" if self.lo_closed else "("
+        right = "]" if self.hi_closed else ")"
+        return f"in {left}{self.lo:g}, {self.hi:g}{right}"
+
+
+#: Speeds (0, 1), velocities (-1, 1), positive numbers, restitution [0, 1].
+SPEED = Interval(0.0, 1.0)
+VELOCITY = Interval(-1.0, 1.0)
+POSITIVE = Interval(0.0, math.inf)
+UNIT_CLOSED = Interval(0.0, 1.0, True, True)
+
+
+@dataclass(frozen=True)
+class Slider:
+    """How the app shows a parameter: a slider from ``lo`` to ``hi``.
+
+    ``scale="log"`` is a slider over ``log10`` of the value (``step`` in decades) whose value
+    is still shown and typed as the number itself (a mass ratio of 2, not 0.30103).
+    """
+
+    lo: float
+    hi: float
+    step: float
+    scale: Scale = "linear"
+
+    def __post_init__(self) -> None:
+        if not (self.lo < self.hi and self.step > 0) or (self.scale == "log" and self.lo <= 0):
+            raise ValueError(f"bad slider {self}")
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One scene parameter.
+
+    ``domain`` is the validator's allowed range (:meth:`check` enforces it); ``slider`` is
+    the app's control (``None``: not on the slider page, it keeps its default there);
+    ``typical`` is the range property tests and benchmarks draw from.
+    """
+
+    name: str
+    """Keyword of the constructor and the command line option (``--name``)."""
+    symbol: str
+    """As the paper writes it: ``"V"``, ``"a′_F"``, ``"M2"``."""
+    label: str
+    """The app's control label (rod 1 sets the units there: ``"M2/M1"``, ``"a′_F L0"``)."""
+    unit: str
+    """``"c"`` for velocities, ``"L0"``-style for lengths, ``"1/L0"`` for accelerations, ``""``."""
+    domain: Interval
+    default: float | None
+    help: str
+    slider: Slider | None = None
+    typical: tuple[float, float] | None = None
+    """Where property tests and benchmarks draw values (default: the slider's range)."""
+    optional: bool = False
+    """``None`` is a value (e.g. no acceleration given: the impulsive limit)."""
+    constraint: str = ""
+    """A condition that involves other parameters, in words (checked by the constructor)."""
+
+    def allowed(self) -> str:
+        text = f"a finite number {self.domain.text()}"
+        return f"{text} ({self.constraint})" if self.constraint else text
+
+    def check(self, value: object) -> float:
+        """``value`` as a float if it lies in :attr:`domain`; else :class:`ParameterError` naming it."""
+        allowed = f"a finite number {self.domain.text()}"
+        if isinstance(value, bool) or not isinstance(value, numbers.Real):
+            raise ParameterError(self.name, allowed, value)
+        x = float(value)
+        if not (math.isfinite(x) and x in self.domain):
+            raise ParameterError(self.name, allowed, value)
+        return x
+
+    def sample_range(self) -> tuple[float, float]:
+        if self.typical is not None:
+            return self.typical
+        if self.slider is not None:
+            return (self.slider.lo, self.slider.hi)
+        raise ValueError(f"parameter {self.name!r} has neither a slider nor a typical range")
+
+
+class OriginEvent(StrEnum):
+    """What happens at the shared origin (t, x) = (0, 0) of every frame."""
+
+    START = "start"
+    """The rod starts accelerating there (its back end)."""
+    KICK = "kick"
+    """The impulse: the back end jumps to its new velocity."""
+    CONTACT = "contact"
+    """Two bodies touch: the rod and the wall, or the two rods."""
+    REST = "rest"
+    """The decelerating rod's back end comes to rest there."""
+    VERTEX = "vertex"
+    """A general velocity change: the origin is where the rod's left end would be at rest if its
+    hyperbola were continued; nothing need happen there."""
+
+
+class ObstacleKind(StrEnum):
+    """Things in a scene that are not rods: they have inertial worldlines and are drawn, not solved."""
+
+    WALL = "wall"
+
+
+@dataclass(frozen=True)
+class EventDescription:
+    """A named event in the paper's notation and what it marks."""
+
+    name: str
+    """``"T_1'"``: as the paper writes it, ``_`` before the subscript, ``'`` for a prime."""
+    meaning: str
+    source: str
+    """Where the paper gives it: ``"Sec. 5, Eq. (24)"``."""
+
+
+@dataclass(frozen=True)
+class Overlay:
+    """A second scene drawn dashed over the first for comparison (Fig. 1's impulsive curve)."""
+
+    label: str
+    build: Callable[[Mapping[str, float | None]], Scene]
+    """The comparison scene, from the first scene's parameters."""
+
+
+@dataclass(frozen=True)
+class ScenePreset:
+    """A paper figure: a scene's parameter values, frame and overlay, exactly as printed."""
+
+    label: str
+    """The app's menu entry, ``"Fig. 3: collision, M2 = 2 M1"``."""
+    values: Mapping[str, float | None]
+    frame: str | None = None
+    """The frame to show it in (``None``: the scene's default frame)."""
+    overlay: bool = False
+
+
+@dataclass(frozen=True)
+class SceneDescription:
+    """Everything the front ends need to know about a scene, beside its constructor."""
+
+    kind: str
+    """The command line's name: ``"wall-collision"``."""
+    title: str
+    """The app's menu entry: ``"Wall crash / bounce"``."""
+    summary: str
+    """One sentence for help texts."""
+    source: str
+    """Where the paper treats it: ``"Sec. 5"``."""
+    constructor: Callable[..., Scene]
+    parameters: tuple[Parameter, ...]
+    frames: tuple[str, ...]
+    """The names of the frame presets every scene of this kind offers, ``"lab"`` first."""
+    default_frame: str
+    """The frame a lecturer compares the lab with first (never one that equals the lab)."""
+    events: tuple[EventDescription, ...]
+    obstacles: tuple[ObstacleKind, ...] = ()
+    presets: tuple[ScenePreset, ...] = ()
+    overlay: Overlay | None = None
+    order: int = 100
+    """Position in the app's menu (teaching order)."""
+    rod_names: tuple[str, ...] = ("rod",)
+    parameter_map: Mapping[str, Parameter] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        names = [p.name for p in self.parameters]
+        if len(set(names)) != len(names):
+            raise ValueError(f"{self.kind}: duplicate parameter names {names}")
+        if self.default_frame not in self.frames or self.frames[:1] != ("lab",) or self.default_frame == "lab":
+            raise ValueError(f"{self.kind}: frames must start with 'lab' and hold a default other than the lab")
+        object.__setattr__(self, "parameter_map", MappingProxyType({p.name: p for p in self.parameters}))
+
+    def parameter(self, name: str) -> Parameter:
+        try:
+            return self.parameter_map[name]
+        except KeyError:
+            allowed = f"one of the parameters of {self.kind}: {', '.join(self.parameter_map)}"
+            raise ParameterError(name, allowed, name) from None
+
+    def defaults(self) -> dict[str, float | None]:
+        return {p.name: p.default for p in self.parameters}
+
+    def build(self, **values: float | None) -> Scene:
+        """The scene with ``values``; missing parameters take their defaults (the paper's)."""
+        for name in values:
+            self.parameter(name)
+        return self.constructor(**{**self.defaults(), **values})
+
+    def event(self, name: str) -> EventDescription:
+        for e in self.events:
+            if e.name == name:
+                return e
+        raise ParameterError("event", f"one of {', '.join(e.name for e in self.events)}", name)

@@ -1,0 +1,273 @@
+"""A solved scene: rods with Born-rigid motions, obstacles, named events and frame presets.
+
+Every sampler takes times of a frame and returns that frame's coordinates, with the
+signature ``(t, frame, *, fractions=...)`` (units c = 1). Nothing here knows which scene it
+is: the constructors in :mod:`rigidrel_core.scenes` fill it in.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Literal
+
+import numpy as np
+import numpy.typing as npt
+
+from ._budget import ExternalSource, FourMomentumBudget
+from ._description import ObstacleKind, OriginEvent
+from ._exact import ExactVelocity, relative_rapidity
+from ._frame import LAB, Frame, check_frame
+from ._motion import MotionPlan, RigidMotion, plan_motions
+from ._validate import ParameterError, check_fractions, check_times
+
+FloatArray = npt.NDArray[np.float64]
+
+#: The two ends of a rod as material coordinates (fractions of the rest length from the left end).
+ENDS = np.array([0.0, 1.0])
+_ENDS = ENDS
+_MAX_CACHED_PLANS = 64
+
+
+@dataclass(frozen=True)
+class Rod:
+    """One rod of a scene: its motion and its rest mass before and after (heat adds mass)."""
+
+    name: str
+    motion: RigidMotion
+    mass_before: float
+    mass_after: float
+
+
+@dataclass(frozen=True)
+class EventSpec:
+    """A named event: where end ``end`` (0 left, 1 right) of rod ``rod`` starts or stops changing velocity."""
+
+    name: str
+    rod: int
+    end: Literal[0, 1]
+    phase: Literal["start", "stop"]
+
+
+@dataclass(frozen=True)
+class Obstacle:
+    """Something a scene's rods meet that is not solved for, on an inertial lab worldline
+    ``x = x0 + v t`` (a wall: ``x0 = 0``, ``v = 0``)."""
+
+    name: str
+    kind: ObstacleKind
+    x0: float
+    velocity: ExactVelocity
+
+    def positions(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+        """x' of the obstacle at times ``t'`` of ``frame``: ``x' = x'_0 + w (t' - t'_0)``, with
+        ``w`` its velocity in the frame and ``(t'_0, x'_0)`` its lab event at t = 0 seen there
+        (``x' = -beta t'`` for a wall at rest at the origin)."""
+        frame = check_frame(frame)
+        tt = check_times("t", t)
+        w = float(np.tanh(relative_rapidity(self.velocity, frame.velocity)))
+        t0, x0 = (frame @ np.array([0.0, self.x0])).tolist()
+        return x0 + w * (tt - t0)
+
+
+@dataclass(frozen=True, eq=False)
+class Scene:
+    """A solved scene (see :func:`rigidrel_core.build_scene` and the constructors).
+
+    All samplers take times of a :class:`Frame` (default: the lab) and return that frame's
+    coordinates; material points are fractions of the rest length from each rod's left end.
+    """
+
+    kind: str
+    """The scene's registry name, e.g. ``"rod-collision"`` (see :func:`rigidrel_core.describe`)."""
+    parameters: Mapping[str, float]
+    """The constructor's arguments, validated (an omitted optional one is left out)."""
+    rods: tuple[Rod, ...]
+    event_specs: tuple[EventSpec, ...]
+    frames: Mapping[str, Frame]
+    """Frame presets by name: the lab, each rod's rest frame before and after, the barycentric frame."""
+    external_source: ExternalSource
+    heat: float
+    """Invariant rest energy created (epsilon < 1), see :class:`FourMomentumBudget`."""
+    origin_event: OriginEvent
+    obstacles: tuple[Obstacle, ...] = ()
+    _plans: dict[tuple[object, ...], MotionPlan] = field(default_factory=dict, repr=False)
+
+    # ------------------------------------------------------------------ summary
+    @property
+    def n_rods(self) -> int:
+        return len(self.rods)
+
+    @property
+    def final_velocities(self) -> tuple[float, ...]:
+        """Lab velocity of each rod after the change (float64)."""
+        return tuple(r.motion.velocity_final.value for r in self.rods)
+
+    @property
+    def initial_velocities(self) -> tuple[float, ...]:
+        return tuple(r.motion.velocity_initial.value for r in self.rods)
+
+    def frame(self, name: str) -> Frame:
+        """The frame preset called ``name``; ``ValueError`` listing the valid names otherwise."""
+        try:
+            return self.frames[name]
+        except (KeyError, TypeError):
+            raise ParameterError("frame", f"one of {', '.join(repr(k) for k in self.frames)}", name) from None
+
+    @functools.cached_property
+    def events(self) -> Mapping[str, tuple[float, float]]:
+        """Named events as lab ``(t, x)``, in the paper's notation."""
+        return self.events_in(LAB)
+
+    def events_in(self, frame: Frame = LAB) -> Mapping[str, tuple[float, float]]:
+        """The named events as ``(t', x')`` of ``frame`` (computed there, not boosted)."""
+        frame = check_frame(frame)
+        out: dict[str, tuple[float, float]] = {}
+        for spec in self.event_specs:
+            start, stop = self._plan(frame, _ENDS, spec.rod).switch_events()
+            e = (start if spec.phase == "start" else stop)[spec.end]
+            out[spec.name] = (float(e[0]), float(e[1]))
+        return MappingProxyType(out)
+
+    def event_rod(self, name: str) -> int:
+        """Which rod the named event belongs to."""
+        for spec in self.event_specs:
+            if spec.name == name:
+                return spec.rod
+        raise ParameterError("event", f"one of {', '.join(s.name for s in self.event_specs)}", name)
+
+    # ----------------------------------------------------------------- sampling
+    def _plan(self, frame: Frame, fractions: FloatArray, rod: int | None = None) -> MotionPlan:
+        key = (frame.key(), fractions.tobytes(), rod)
+        plan = self._plans.get(key)
+        if plan is None:
+            rods = self.rods if rod is None else (self.rods[rod],)
+            plan = plan_motions([r.motion for r in rods], frame, fractions)
+            if len(self._plans) >= _MAX_CACHED_PLANS:
+                self._plans.clear()
+            self._plans[key] = plan
+        return plan
+
+    def positions(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+        """x' of [left end, right end] of each rod at times ``t'`` of ``frame``.
+
+        Shape ``(n_rods, 2, *t.shape)``. Closed form, see :mod:`rigidrel_core._motion`.
+        """
+        frame = check_frame(frame)
+        tt = check_times("t", t)
+        x = self._plan(frame, _ENDS).positions(tt.ravel())
+        return x.reshape((self.n_rods, 2, *tt.shape))
+
+    def material_positions(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike) -> FloatArray:
+        """x' of material points (fractions of the rest length from the left end, in [0, 1]).
+
+        Shape ``(n_rods, len(fractions), *t.shape)``.
+        """
+        frame = check_frame(frame)
+        tt = check_times("t", t)
+        f = check_fractions("fractions", fractions)
+        x = self._plan(frame, f).positions(tt.ravel())
+        return x.reshape((self.n_rods, f.size, *tt.shape))
+
+    def velocities(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = _ENDS) -> FloatArray:
+        """dx'/dt' of material points (default: the ends). Shape ``(n_rods, len(fractions), *t.shape)``."""
+        frame = check_frame(frame)
+        tt = check_times("t", t)
+        f = check_fractions("fractions", fractions)
+        v = self._plan(frame, f).velocities(tt.ravel())
+        return v.reshape((self.n_rods, f.size, *tt.shape))
+
+    def proper_times(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = _ENDS) -> FloatArray:
+        """Clock readings of material points at frame times ``t'``.
+
+        Every clock reads 0 where its point starts changing velocity: the clocks are
+        synchronised in the rod's initial rest frame (the starts are simultaneous there).
+        After the change they are not synchronised in the final rest frame: the point at
+        distance ``rho`` from the centre ages ``rho |theta_f - theta_i|`` during it.
+        """
+        frame = check_frame(frame)
+        tt = check_times("t", t)
+        f = check_fractions("fractions", fractions)
+        tau = self._plan(frame, f).proper_times(tt.ravel())
+        return tau.reshape((self.n_rods, f.size, *tt.shape))
+
+    def snapshot(self, t: float, frame: Frame = LAB, *, fractions: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
+        """Positions of material points and the ends' clock readings at one frame time.
+
+        The per-frame call of an animation: ``(x' of shape (n_rods, len(fractions)),
+        proper times of shape (n_rods, 2) at the ends)``; one plan, two evaluations.
+        ``fractions`` must start at 0 and end at 1.
+        """
+        frame = check_frame(frame)
+        tt = check_times("t", np.array([t], dtype=np.float64))
+        f = check_fractions("fractions", fractions)
+        if f.size < 2 or f[0] != 0.0 or f[-1] != 1.0:
+            raise ParameterError("fractions", "sorted fractions starting at 0 and ending at 1", fractions)
+        plan = self._plan(frame, f)
+        x = plan.positions(tt).reshape(self.n_rods, f.size)
+        tau = plan.proper_times(tt).reshape(self.n_rods, f.size)
+        return x, tau[:, [0, -1]]
+
+    def lengths(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+        """Equal-time length ``x'_right(t') - x'_left(t')`` of each rod in ``frame`` (Fig. 2).
+
+        Shape ``(n_rods, *t.shape)``. Exactly ``L / cosh(theta')`` while both ends coast.
+        """
+        frame = check_frame(frame)
+        tt = check_times("t", t)
+        rest = np.array([r.motion.length for r in self.rods])
+        lengths = self._plan(frame, _ENDS).equal_time_lengths(tt.ravel(), rest)
+        return lengths.reshape((self.n_rods, *tt.shape))
+
+    def switch_times(self, frame: Frame = LAB, *, fractions: npt.ArrayLike = _ENDS) -> FloatArray:
+        """Frame times at which each material point starts and stops changing velocity.
+
+        Shape ``(n_rods, len(fractions), 2)``; between them the point is on its hyperbola,
+        outside on straight lines (so a plot needs 2 samples there).
+        """
+        frame = check_frame(frame)
+        f = check_fractions("fractions", fractions)
+        plan = self._plan(frame, f)
+        return np.stack([plan.t_start, plan.t_stop], axis=-1).reshape((self.n_rods, f.size, 2))
+
+    def time_window(self, frame: Frame = LAB, *, margin: float = 0.35) -> tuple[float, float]:
+        """A frame-time interval that holds every named event and the origin, padded by ``margin``."""
+        frame = check_frame(frame)
+        times = [0.0]
+        for i in range(self.n_rods):
+            start, stop = self._plan(frame, _ENDS, i).switch_events()
+            times.extend(start[:, 0].tolist())
+            times.extend(stop[:, 0].tolist())
+        t0, t1 = min(times), max(times)
+        scale = max(t1 - t0, max(r.motion.length for r in self.rods) / frame.lorentz_factor)
+        return (t0 - margin * scale, t1 + margin * scale)
+
+    # ------------------------------------------------------------------- budget
+    def budget(self, frame: Frame = LAB) -> FourMomentumBudget:
+        """Energy and momentum of every rod before and after, in ``frame`` (c = 1)."""
+        frame = check_frame(frame)
+        m0 = np.array([r.mass_before for r in self.rods])
+        m1 = np.array([r.mass_after for r in self.rods])
+        th0 = np.array([relative_rapidity(r.motion.velocity_initial, frame.velocity) for r in self.rods])
+        th1 = np.array([relative_rapidity(r.motion.velocity_final, frame.velocity) for r in self.rods])
+        before = np.stack([m0 * np.cosh(th0), m0 * np.sinh(th0)], axis=-1)
+        after = np.stack([m1 * np.cosh(th1), m1 * np.sinh(th1)], axis=-1)
+        if self.external_source == "none":
+            external = np.zeros(2)
+        else:
+            external = after.sum(axis=0) - before.sum(axis=0)
+        return FourMomentumBudget(
+            frame_velocity=frame.beta,
+            bodies=tuple(r.name for r in self.rods),
+            rest_mass_before=m0,
+            rest_mass_after=m1,
+            before=before,
+            after=after,
+            kinetic_before=2.0 * m0 * np.sinh(0.5 * th0) ** 2,
+            kinetic_after=2.0 * m1 * np.sinh(0.5 * th1) ** 2,
+            external=external,
+            external_source=self.external_source,
+            heat=self.heat,
+        )

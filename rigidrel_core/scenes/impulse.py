@@ -1,0 +1,52 @@
+"""Impulsive acceleration: the back end of a rod at rest jumps to V (paper Sec. 4)."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from types import MappingProxyType
+
+from .._build import LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, rigid_motion, single_rod_frames
+from .._description import EventDescription, OriginEvent, SceneDescription
+from .._exact import REST, ExactVelocity
+from .._scene import EventSpec, Rod, Scene
+
+
+def impulsive_start(v: float, length: float, mass: float = 1.0) -> Scene:
+    """Impulsive acceleration (Sec. 4, Fig. 1 dashed curve).
+
+    The rod rests on ``[0, length]`` for ``t < 0``; at ``t = 0`` its left end jumps to
+    ``v`` (``a'_B -> infinity``, so ``a'_F = 1/L0`` by Eq. (14)). The right end follows
+    ``x = sqrt(L0^2 + t^2)`` (Eq. (20)) until ``T_F = v gamma L0`` (Eq. (21)). Event: ``"T_F"``.
+    """
+    v = V.check(v)
+    length = LENGTH.check(length)
+    mass = MASS.check(mass)
+    motion = rigid_motion(REST, ExactVelocity.from_float(v), length, Decimal(0), 0.0)
+    return checked_scene(
+        Scene(
+            kind=IMPULSIVE_START.kind,
+            parameters=MappingProxyType({"v": v, "length": length, "mass": mass}),
+            rods=(Rod("rod", motion, mass, mass),),
+            event_specs=(EventSpec("T_F", 0, 1, "stop"),),
+            frames=single_rod_frames(motion),
+            external_source="drive",
+            heat=0.0,
+            origin_event=OriginEvent.KICK,
+        )
+    )
+
+
+IMPULSIVE_START = SceneDescription(
+    kind="impulsive-start",
+    title="Impulsive start",
+    summary="A rod at rest is kicked at its back end, which jumps to V; the front follows a hyperbola.",
+    source="Sec. 4",
+    constructor=impulsive_start,
+    parameters=(V, LENGTH, MASS),
+    frames=SINGLE_ROD_FRAMES,
+    default_frame="rod after",
+    events=(EventDescription("T_F", "the front end reaches V", "Sec. 4, Eq. (21)"),),
+    order=30,
+)
+
+SCENES = (IMPULSIVE_START,)
