@@ -15,8 +15,6 @@ the app, viser or plotly.
 from ._budget import FourMomentumBudget as FourMomentumBudget
 from ._description import EventDescription as EventDescription
 from ._description import Interval as Interval
-from ._description import ObstacleKind as ObstacleKind
-from ._description import OriginEvent as OriginEvent
 from ._description import Overlay as Overlay
 from ._description import Parameter as Parameter
 from ._description import SceneDescription as SceneDescription
@@ -25,6 +23,8 @@ from ._description import Slider as Slider
 from ._exact import ExactVelocity as ExactVelocity
 from ._frame import LAB as LAB
 from ._frame import Frame as Frame
+from ._kinds import ObstacleKind as ObstacleKind
+from ._kinds import OriginEvent as OriginEvent
 from ._motion import RigidMotion as RigidMotion
 from ._registry import build_scene as build_scene
 from ._registry import default_frame as default_frame

@@ -10,14 +10,16 @@ very same :class:`Parameter` objects, so the ranges shown are the ranges enforce
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from enum import StrEnum
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Literal
 
+from ._kinds import ObstacleKind as ObstacleKind
+from ._kinds import OriginEvent as OriginEvent
 from ._validate import ParameterError
 
 if TYPE_CHECKING:
@@ -124,28 +126,6 @@ class Parameter:
         raise ValueError(f"parameter {self.name!r} has neither a slider nor a typical range")
 
 
-class OriginEvent(StrEnum):
-    """What happens at the shared origin (t, x) = (0, 0) of every frame."""
-
-    START = "start"
-    """The rod starts accelerating there (its back end)."""
-    KICK = "kick"
-    """The impulse: the back end jumps to its new velocity."""
-    CONTACT = "contact"
-    """Two bodies touch: the rod and the wall, or the two rods."""
-    REST = "rest"
-    """The decelerating rod's back end comes to rest there."""
-    VERTEX = "vertex"
-    """A general velocity change: the origin is where the rod's left end would be at rest if its
-    hyperbola were continued; nothing need happen there."""
-
-
-class ObstacleKind(StrEnum):
-    """Things in a scene that are not rods: they have inertial worldlines and are drawn, not solved."""
-
-    WALL = "wall"
-
-
 @dataclass(frozen=True)
 class EventDescription:
     """A named event in the paper's notation and what it marks."""
@@ -224,10 +204,19 @@ class SceneDescription:
         return {p.name: p.default for p in self.parameters}
 
     def build(self, **values: float | None) -> Scene:
-        """The scene with ``values``; missing parameters take their defaults (the paper's)."""
+        """The scene with ``values``; missing parameters take their defaults (the paper's).
+
+        A constructor that builds on another scene's (a registered variant) gets its scene
+        stamped with this description's kind and parameters, so that the scene names its own
+        description (:func:`rigidrel_core.describe`)."""
         for name in values:
             self.parameter(name)
-        return self.constructor(**{**self.defaults(), **values})
+        given = {**self.defaults(), **values}
+        scene = self.constructor(**given)
+        if scene.kind == self.kind:
+            return scene
+        own = MappingProxyType({k: float(v) for k, v in given.items() if v is not None})
+        return dataclasses.replace(scene, kind=self.kind, parameters=own)
 
     def event(self, name: str) -> EventDescription:
         for e in self.events:

@@ -149,6 +149,18 @@ def compose_velocities(a: ExactVelocity, b: ExactVelocity) -> ExactVelocity:
         return ExactVelocity(hi, float(v - Decimal(hi)), float(gap))
 
 
+def velocity_from_rapidity(psi: float) -> ExactVelocity:
+    """``tanh psi`` to double-double, its gap ``2/(exp(2|psi|) + 1)`` beside it (60 digits, ``psi`` exact)."""
+    with localcontext() as ctx:
+        ctx.prec = DECIMAL_DIGITS
+        e = (2 * Decimal(abs(psi))).exp()  # exp(2|psi|)
+        speed = (e - 1) / (e + 1)
+        gap = 2 / (e + 1)
+        v = speed if psi >= 0 else -speed
+        hi = float(v)
+        return ExactVelocity(hi, float(v - Decimal(hi)), float(gap))
+
+
 def lorentz_factor_decimal(v: Decimal) -> Decimal:
     """``gamma = 1/sqrt((1 - v)(1 + v))`` in the ambient decimal context."""
     return 1 / ((1 - v) * (1 + v)).sqrt()

@@ -23,7 +23,7 @@ from typing import overload
 import numpy as np
 import numpy.typing as npt
 
-from ._exact import REST, ExactVelocity, compose_velocities, relative_rapidity
+from ._exact import REST, ExactVelocity, compose_velocities, relative_rapidity, velocity_from_rapidity
 from ._validate import ParameterError, check_velocity
 
 FloatArray = npt.NDArray[np.float64]
@@ -62,19 +62,17 @@ class Frame:
 
     @classmethod
     def from_rapidity(cls, rapidity: float, name: str | None = None) -> Frame:
-        """The frame of rapidity ``psi`` (``beta = tanh psi``); ``|psi| <= 700``."""
+        """The frame of rapidity ``psi`` (``beta = tanh psi``), ``|psi| <= 700``, the float ``psi``
+        taken as exact: ``tanh psi = expm1(2 psi)/(expm1(2 psi) + 2)`` and ``1 - |tanh psi| =
+        2/(exp(2|psi|) + 1)`` in 60 digits, so that the velocity and its gap to light speed agree
+        and rapidities of frames add exactly under ``@``."""
         allowed = "a finite number with |rapidity| <= 700"
         if isinstance(rapidity, bool) or not isinstance(rapidity, (int, float)):
             raise ParameterError("rapidity", allowed, rapidity)
         psi = float(rapidity)
         if not abs(psi) <= 700.0:
             raise ParameterError("rapidity", allowed, rapidity)
-        # 1 - |tanh psi| = 2 / (exp(2|psi|) + 1), without cancellation
-        gap = 2.0 / (math.expm1(2.0 * abs(psi)) + 2.0)
-        beta = math.tanh(psi)
-        if gap <= 0.0:
-            raise ParameterError("rapidity", "small enough that the speed is below light speed in float64", psi)
-        return cls(ExactVelocity(beta, 0.0, gap), name)
+        return cls(velocity_from_rapidity(psi), name)
 
     # ------------------------------------------------------------------ views
     @property
@@ -155,6 +153,8 @@ class Frame:
     def apply(self, events_lab: npt.ArrayLike) -> FloatArray:
         """``self @ events_lab`` (see :meth:`__matmul__`)."""
         e = _events("events", events_lab)
+        if self.key() == (0.0, 0.0):  # the lab's own coordinates: the identity, exactly
+            return e.copy()
         up, down = self.doppler_factors()
         t, x = e[..., 0], e[..., 1]
         u = (t - x) * up  # t' - x'

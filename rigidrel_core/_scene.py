@@ -17,9 +17,9 @@ import numpy as np
 import numpy.typing as npt
 
 from ._budget import ExternalSource, FourMomentumBudget
-from ._description import ObstacleKind, OriginEvent
 from ._exact import ExactVelocity, relative_rapidity
 from ._frame import LAB, Frame, check_frame
+from ._kinds import ObstacleKind, OriginEvent
 from ._motion import MotionPlan, RigidMotion, plan_motions
 from ._validate import ParameterError, check_fractions, check_times
 
@@ -93,7 +93,7 @@ class Scene:
     """Invariant rest energy created (epsilon < 1), see :class:`FourMomentumBudget`."""
     origin_event: OriginEvent
     obstacles: tuple[Obstacle, ...] = ()
-    _plans: dict[tuple[object, ...], MotionPlan] = field(default_factory=dict, repr=False)
+    _plans: dict[tuple[object, ...], MotionPlan] = field(default_factory=dict, init=False, repr=False)
 
     # ------------------------------------------------------------------ summary
     @property
@@ -201,7 +201,10 @@ class Scene:
         ``fractions`` must start at 0 and end at 1.
         """
         frame = check_frame(frame)
-        tt = check_times("t", np.array([t], dtype=np.float64))
+        tt = check_times("t", t)
+        if tt.shape != ():
+            raise ParameterError("t", "one time (a real number)", t)
+        tt = tt.reshape(1)
         f = check_fractions("fractions", fractions)
         if f.size < 2 or f[0] != 0.0 or f[-1] != 1.0:
             raise ParameterError("fractions", "sorted fractions starting at 0 and ending at 1", fractions)

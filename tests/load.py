@@ -19,8 +19,9 @@ import sys
 import time
 from pathlib import Path
 
-from app.server import App
-from app.settings import PRESETS, Preset
+from rigidrel_app.live.server import App
+from rigidrel_app.view.state import presets
+
 from tests.viser_client import SWARM_WARMUP, client_swarm, swarm_result, wait_until
 
 TARGET_FPS = 25.0
@@ -44,9 +45,8 @@ def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
         if len(app.sessions) < clients:
             raise RuntimeError(f"only {len(app.sessions)} of {clients} clients connected")
         for session in list(app.sessions.values()):
-            with session.lock:
-                session._try(PRESETS[Preset.FIG3], refit=True)
-                session.set_playing(True)
+            session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
+            session.toggle_play()
         # memory and CPU over the measured window, with every client connected at both ends
         time.sleep(SWARM_WARMUP - 0.5)
         mem0, cpu0, wall0 = rss_mb(), time.process_time(), time.perf_counter()

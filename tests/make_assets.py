@@ -12,13 +12,14 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from rigidrel_app.backends.raster import write_gif
+from rigidrel_app.export.figures import write_figures
+from rigidrel_app.export.recording import playback_times
+from rigidrel_app.live.server import App
+from rigidrel_app.view.scene_view import build_drawing
+from rigidrel_app.view.state import Resolved, presets
+
 import rigidrel_core as rr
-from app.drawing import build_drawing
-from app.export.raster import write_gif
-from app.export.recording import playback_times
-from app.figures import write_figures
-from app.server import App
-from app.settings import PRESETS, Preset, Resolved
 from tests.browser.conftest import CHROMIUM, VIEWPORT, launch_chromium
 from tests.viser_client import wait_until
 
@@ -26,8 +27,6 @@ ASSETS = Path(__file__).resolve().parents[1] / "assets"
 
 
 def app_screenshot(path: Path) -> None:
-    from dataclasses import replace
-
     from playwright.sync_api import sync_playwright
 
     with App(port=0) as app, sync_playwright() as p:
@@ -37,10 +36,8 @@ def app_screenshot(path: Path) -> None:
         page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
         wait_until(lambda: app.sessions, timeout=60)
         session = next(iter(app.sessions.values()))
-        with session.lock:
-            session._try(replace(PRESETS[Preset.FIG3], frame="barycentric"), refit=True)
-            session.now = 0.15
-            session.draw_now(force_plots=True)
+        session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)  # in its default, barycentric frame
+        session.seek(0.15)
         for button in page.locator(".mantine-Notification-root button").all():
             button.click()  # the headless browser's "software WebGL" notice
         time.sleep(2.5)
@@ -50,7 +47,7 @@ def app_screenshot(path: Path) -> None:
 
 def lanes_gif(path: Path) -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
-    drawn = build_drawing(Resolved(scene, scene.frames["barycentric"], None))
+    drawn = build_drawing(Resolved(scene, scene.frame("barycentric")))
     write_gif(drawn, path, playback_times(drawn, 8.0, 10.0), 10.0, width=720)
 
 

@@ -1,58 +1,133 @@
-"""The app's pure parts: settings, drawing vocabulary, diagrams, lanes, camera (no browser)."""
+"""The app's pure parts: settings, playback, drawing vocabulary, diagrams, lanes, camera (no browser).
+
+Scenes are taken from the core's registry: a scene registered there is drawn here with no edit.
+"""
 
 from __future__ import annotations
 
 import json
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
+from rigidrel_app.backends.plotly import SplicedFigure, decode_array
+from rigidrel_app.live.playback import PLAY_SECONDS, Playback
+from rigidrel_app.view import camera as cam
+from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
+from rigidrel_app.view.lanes import TICK_FRACTIONS, lane_geometry, lane_state
+from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
+from rigidrel_app.view.scene_view import build_drawing, camera_pose, lane_states, readout_markdown
+from rigidrel_app.view.state import (
+    CUSTOM_FRAME,
+    NO_PRESET,
+    Resolved,
+    Settings,
+    frame_from_text,
+    preset_of,
+    presets,
+    resolve,
+    settings_for,
+)
+from rigidrel_app.view.vocabulary import Chart, Label, Points, Polyline, Style, event_label
 
 import rigidrel_core as rr
-from app import camera as cam
-from app.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
-from app.draw import Chart, Label, Points, Polyline, SplicedFigure, Style, decode_array, event_label
-from app.drawing import build_drawing, camera_pose, lane_states
-from app.lanes import TICK_FRACTIONS, lane_geometry, lane_state
-from app.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
-from app.settings import CUSTOM_FRAME, PRESETS, Preset, Resolved, Settings, resolve
 
-ALL_SETTINGS = [
-    Settings(kind)
-    for kind in (
-        rr.SceneKind.CONSTANT_ACCELERATION,
-        rr.SceneKind.DECELERATION,
-        rr.SceneKind.IMPULSIVE_START,
-        rr.SceneKind.WALL_COLLISION,
-        rr.SceneKind.ROD_COLLISION,
-    )
-]
+#: Every registered scene at its defaults (the app offers each one).
+ALL_SETTINGS = [Settings(kind) for kind in rr.scene_descriptions()]
+
+
+def scene_id(s: Settings) -> str:
+    return s.scene
 
 
 # ---------------------------------------------------------------- settings
 def test_presets_reproduce_the_papers_figures() -> None:
-    fig1 = resolve(PRESETS[Preset.FIG1])
+    p = presets()
+    fig1 = resolve(p["Fig. 1: acceleration to V = 0.6"])
     assert isinstance(fig1, Resolved) and fig1.overlay is not None
     assert fig1.scene.events["T_F"] == pytest.approx((1.5, 1.5), rel=1e-15)
-    fig3 = resolve(PRESETS[Preset.FIG3])
-    fig4 = resolve(PRESETS[Preset.FIG4])
+    fig3 = resolve(p["Fig. 3: collision, M2 = 2 M1"])
+    fig4 = resolve(p["Fig. 4: collision, M1 = 2 M2"])
     assert isinstance(fig3, Resolved) and isinstance(fig4, Resolved)
     assert fig3.scene.final_velocities == pytest.approx((-9 / 41, 39 / 89), rel=1e-14)
     assert fig4.scene.final_velocities == pytest.approx((9 / 41, 21 / 29), rel=1e-14)
 
 
+def test_every_description_preset_is_in_the_menu_and_names_itself() -> None:
+    labels = [p.label for d in rr.scene_descriptions().values() for p in d.presets]
+    assert list(presets()) == labels
+    for label, s in presets().items():
+        assert preset_of(s) == label
+        assert preset_of(s.with_value(s.values[0][0], 0.123)) == NO_PRESET  # the menu follows the controls
+
+
 def test_invalid_settings_give_a_notice_not_an_exception() -> None:
-    notice = resolve(Settings(rr.SceneKind.ROD_COLLISION, v=0.5, v2=0.7))
-    assert isinstance(notice, str) and "never catches" in notice and "last valid scene" in notice
-    notice = resolve(Settings(rr.SceneKind.WALL_COLLISION, frame=CUSTOM_FRAME, beta=1.0))
-    assert isinstance(notice, str) and "frame_velocity" in notice
+    notice = resolve(Settings.of("rod-collision", v1=0.5, v2=0.7))
+    assert isinstance(notice, str) and notice.startswith("V2 = 0.7 refused") and "so that the rods collide" in notice
+    assert "last valid scene" in notice
+    notice = resolve(Settings("wall-collision", frame=CUSTOM_FRAME, beta=1.0))
+    assert isinstance(notice, str) and notice.startswith("β = 1.0 refused") and "(-1, 1)" in notice
+    notice = resolve(Settings("rod-collision", frame="rod after"))
+    assert isinstance(notice, str) and "'barycentric'" in notice  # a frame the scene lacks names those it has
 
 
-def test_frame_falls_back_to_the_scenes_default() -> None:
-    r = resolve(Settings(rr.SceneKind.IMPULSIVE_START, frame="barycentric"))
-    assert isinstance(r, Resolved) and r.frame.name == "rod after"
-    r = resolve(Settings(rr.SceneKind.ROD_COLLISION, frame="rod after"))
-    assert isinstance(r, Resolved) and r.frame.name == "barycentric"
+def test_settings_carry_shared_parameters_across_scenes() -> None:
+    s = Settings.of("constant-acceleration", v=0.8)
+    wall = s.with_scene("wall-collision")
+    assert wall.value("v") == 0.8 and wall.value("eps") == 1.0 and wall.frame is None
+    assert Settings("wall-collision") == Settings.of("wall-collision", v=0.6)  # defaults filled in
+    with pytest.raises(ValueError, match="nope must be one of the parameters of wall-collision"):
+        Settings.of("wall-collision", nope=1.0)
+
+
+def test_default_frames_differ_from_the_lab() -> None:
+    for s in ALL_SETTINGS:
+        r = resolve(s)
+        assert isinstance(r, Resolved)
+        assert not r.frame.same_velocity(rr.LAB), s.scene
+    # a velocity change that ends at rest: its "rod after" is the lab, so the default moves on
+    r = resolve(Settings.of("velocity-change", v_initial=0.5, v_final=0.0))
+    assert isinstance(r, Resolved) and r.frame.name == "rod before"
+
+
+def test_settings_round_trip_and_frames_from_text() -> None:
+    scene = rr.build_scene("rod-collision", m2=3.0)
+    for frame in (scene.frame("barycentric"), rr.Frame.from_velocity(0.3, "custom")):
+        r = resolve(settings_for(scene, frame))
+        assert isinstance(r, Resolved) and r.frame == frame and r.scene.parameters == scene.parameters
+    assert frame_from_text(scene, "rod 2 after") == scene.frame("rod 2 after")
+    assert frame_from_text(scene, "-0.25").beta == -0.25
+    assert frame_from_text(scene, None) == scene.frame("barycentric")
+    with pytest.raises(ValueError, match="frame must be a velocity in \\(-1, 1\\) or one of 'lab'"):
+        frame_from_text(scene, "sideways")
+
+
+def test_readout_names_every_parameter_by_its_symbol() -> None:
+    r = resolve(Settings("rod-collision"))
+    assert isinstance(r, Resolved)
+    text = readout_markdown(r)
+    for p in rr.describe("rod-collision").parameters:
+        assert f"{p.symbol} = " in text
+
+
+# ---------------------------------------------------------------- playback clock
+def test_playback_advances_loops_and_stops_exactly_at_the_end() -> None:
+    p = Playback.start((-1.0, 1.0))
+    assert p.now == 0.0 and not p.playing
+    assert p.advance(1.0) == p  # paused: nothing moves
+    playing = p.toggled()
+    quarter = playing.advance(PLAY_SECONDS / 8)  # 1/8 of the playing time: 1/8 of the window
+    assert quarter.now == pytest.approx(0.25)
+    looped = playing.advance(PLAY_SECONDS * 0.75)
+    assert looped.playing and looped.now == pytest.approx(-0.5)
+    once = replace(playing, loop=False).advance(PLAY_SECONDS)
+    assert once.now == 1.0 and not once.playing  # the window's end, not short of it
+    again = once.toggled()
+    assert again.now == -1.0 and again.playing  # play from the start once at the end
+    assert playing.seek(5.0).now == 1.0 and not playing.seek(0.5).playing
+    assert replace(playing, speed=2.0).advance(PLAY_SECONDS / 8).now == pytest.approx(0.5)
+    assert playing.with_window((0.5, 2.0)).now == 0.5
 
 
 # ---------------------------------------------------------------- drawing vocabulary
@@ -83,7 +158,7 @@ def test_event_labels_in_the_papers_notation() -> None:
 
 
 # ---------------------------------------------------------------- sampling
-@pytest.mark.parametrize("settings", ALL_SETTINGS, ids=lambda s: s.scene.value)
+@pytest.mark.parametrize("settings", ALL_SETTINGS, ids=scene_id)
 @pytest.mark.parametrize("beta", [0.0, 0.9])
 def test_worldlines_are_exact_and_within_half_a_pixel(settings: Settings, beta: float) -> None:
     r = resolve(settings)
@@ -94,11 +169,12 @@ def test_worldlines_are_exact_and_within_half_a_pixel(settings: Settings, beta: 
     fractions = np.array([0.0, 0.5, 1.0])
     lines = sample_worldlines(r.scene, frame, fractions, window, px_per_x)
     dense_t = np.linspace(*window, 4001)
-    dense = r.scene.material_positions(fractions, dense_t, frame)
+    dense = r.scene.material_positions(dense_t, frame, fractions=fractions)
     for i in range(r.scene.n_rods):
         for k in range(fractions.size):
             w = lines[i][k]
-            assert np.array_equal(w.x, r.scene.material_positions([fractions[k]], w.t, frame)[i, 0])  # exact samples
+            exact = r.scene.material_positions(w.t, frame, fractions=[fractions[k]])[i, 0]
+            assert np.array_equal(w.x, exact)  # exact samples
             error_px = np.abs(np.interp(dense_t, w.t, w.x) - dense[i, k]).max() * px_per_x
             assert error_px <= TOLERANCE_PX + 1e-9
             assert w.t.size < 200  # no finer than needed
@@ -106,8 +182,8 @@ def test_worldlines_are_exact_and_within_half_a_pixel(settings: Settings, beta: 
 
 def test_lengths_within_half_a_pixel_and_flat_while_coasting() -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
-    window = scene.time_window(0.0)
-    curves = sample_lengths(scene, rr.Frame.lab(), window, px_per_length=200.0)
+    window = scene.time_window(rr.LAB)
+    curves = sample_lengths(scene, rr.LAB, window, px_per_length=200.0)
     dense_t = np.linspace(*window, 4001)
     dense = scene.lengths(dense_t)
     for r, c in enumerate(curves):
@@ -118,7 +194,7 @@ def test_lengths_within_half_a_pixel_and_flat_while_coasting() -> None:
 # ---------------------------------------------------------------- diagrams
 def test_minkowski_diagrams_carry_worldlines_events_cone_and_axes() -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
-    lab, bary = rr.Frame.lab(), scene.frames["barycentric"]
+    lab, bary = rr.LAB, scene.frame("barycentric")
     chart = minkowski_static(scene, View(lab, bary, "lab", "", "'"), (-1, 1), (-2, 2), 300.0)
     names = {i.style.name for i in chart.items if i.style.name}
     assert {"rod 1", "rod 2", "light cone of the origin", "events"} <= names
@@ -132,13 +208,13 @@ def test_minkowski_diagrams_carry_worldlines_events_cone_and_axes() -> None:
     now = minkowski_now(View(lab, bary, "lab", "", "'"), 0.3, 10.0, scene.positions([0.3])[:, :, 0])
     other_now = next(i for i in now if isinstance(i, Polyline) and i.style.name and "t' = 0.3" in i.style.name)
     # the chosen frame's line of simultaneity t' = 0.3, drawn in the lab
-    t_prime = rr.Boost.from_velocity(bary.beta).apply(np.stack([other_now.y, other_now.x], axis=-1))[:, 0]
+    t_prime = (bary @ np.stack([other_now.y, other_now.x], axis=-1))[:, 0]
     assert np.allclose(t_prime, 0.3, atol=1e-12)
 
 
 def test_length_chart_marks_the_papers_events() -> None:
     scene = rr.constant_acceleration(0.6, 1.0, 0.5)
-    chart = length_static(scene, rr.Frame.lab(), rr.Frame.lab(), (-0.5, 2.0), (300.0, 200.0))
+    chart = length_static(scene, rr.LAB, rr.LAB, (-0.5, 2.0), (300.0, 200.0))
     labels = {i.text for i in chart.items if isinstance(i, Label)}
     assert {event_label("T_B"), event_label("T_F")} <= labels
     curve = next(i for i in chart.items if isinstance(i, Polyline))
@@ -151,7 +227,7 @@ def test_lane_ticks_sit_on_the_cores_material_points() -> None:
     geo = lane_geometry(scene)
     frame = rr.Frame.from_velocity(0.5)
     st = lane_state(scene, frame, 0.3, geo, "title", -1.0)
-    expected = scene.material_positions(TICK_FRACTIONS, [0.3], frame)[:, :, 0].ravel() / geo.unit
+    expected = scene.material_positions([0.3], frame, fractions=TICK_FRACTIONS)[:, :, 0].ravel() / geo.unit
     assert np.array_equal(st.segments.x0[: expected.size], expected)
     assert [b.x0 for b in st.boxes] == list(expected.reshape(2, -1)[:, 0])
     assert len(st.labels) == 1 and "clocks" in st.labels[0].text and st.labels[0].text.startswith("title")
@@ -181,13 +257,13 @@ def test_equal_scale_ranges_keep_light_at_45_degrees() -> None:
     assert x0 <= -1.0 and x1 >= 3.0 and t0 <= -0.5 and t1 >= 0.5
 
 
-@pytest.mark.parametrize("settings", ALL_SETTINGS, ids=lambda s: s.scene.value)
+@pytest.mark.parametrize("settings", ALL_SETTINGS, ids=scene_id)
 def test_every_scene_builds_a_drawing(settings: Settings) -> None:
     r = resolve(settings)
     assert isinstance(r, Resolved)
     d = build_drawing(r)
-    for fig in (d.lab_chart, d.frame_chart, d.length_chart):
-        data = json.loads(fig.with_dynamic(()))
+    for chart in d.charts:
+        data = json.loads(SplicedFigure(chart).with_dynamic(()))
         for trace in data["data"]:
             for axis in ("x", "y"):
                 values = decode_array(trace[axis])  # NaN separates segments; nothing infinite
@@ -197,16 +273,20 @@ def test_every_scene_builds_a_drawing(settings: Settings) -> None:
 
 
 def test_playback_markers_come_from_the_core() -> None:
-    r = resolve(PRESETS[Preset.FIG3])
+    r = resolve(presets()["Fig. 3: collision, M2 = 2 M1"])
     assert isinstance(r, Resolved)
     d = build_drawing(r)
     now = 0.4
     states = lane_states(d, now)
-    lab_json, frame_json, length_json = d.plot_figures(now, states)
+    lab_items, frame_items, length_items = d.moving_items(now, states)
     # the rods' ends on each diagram, and their equal-time lengths on the length plot
-    for text, state in ((lab_json, states[0]), (frame_json, states[1])):
-        ends = json.loads(text)["data"][-1]
-        np.testing.assert_array_equal(decode_array(ends["x"]), state.ends.ravel())
-    lengths = json.loads(length_json)["data"][-1]
+    for items, state in ((lab_items, states[0]), (frame_items, states[1])):
+        ends = items[-1]
+        assert isinstance(ends, Points)
+        np.testing.assert_array_equal(ends.x, state.ends.ravel())
+    lengths = length_items[-1]
+    assert isinstance(lengths, Points)
     expected = np.concatenate([r.scene.lengths(now), r.scene.lengths(now, r.frame)])
-    np.testing.assert_array_equal(decode_array(lengths["y"]), expected)
+    np.testing.assert_array_equal(lengths.y, expected)
+    text = SplicedFigure(d.lab_chart).with_dynamic(lab_items)
+    np.testing.assert_array_equal(decode_array(json.loads(text)["data"][-1]["x"]), states[0].ends.ravel())

@@ -1,14 +1,14 @@
 """``rigidrel bench``: a reduced run writes the JSON table and readable charts; bad --out is one line, status 2.
 
 The smoke run goes through every stage of ``--quick`` (table, cost-per-sample curves,
-stability maps, sampling study, HTML and PNG charts) with the smallest settings. PNGs need
-Chromium through kaleido: if it cannot start, this test fails and says why.
+stability maps, sampling study, HTML and PNG charts) with the smallest settings (about 10 s:
+its tests are marked slow). PNGs need Chromium through kaleido: if it cannot start, this test
+fails and says why.
 """
 
 from __future__ import annotations
 
 import json
-import os
 import subprocess
 import sys
 from pathlib import Path
@@ -17,11 +17,10 @@ from typing import Any
 import numpy as np
 import pytest
 from PIL import Image
-
-from app.bench.cli import run
-from app.bench.config import SMOKE
-from app.bench.methods import MethodName
-from app.bench.scenes import Regime
+from rigidrel_app.bench.cli import run
+from rigidrel_app.bench.config import SMOKE
+from rigidrel_app.bench.methods import MethodName
+from rigidrel_app.bench.scenes import Regime
 
 ROOT = Path(__file__).resolve().parents[1]
 CHARTS = ("speed_accuracy", "stability_maps", "sampling", "throughput")
@@ -35,6 +34,7 @@ def smoke(tmp_path_factory: pytest.TempPathFactory) -> tuple[int, Path, dict[str
     return code, out, data
 
 
+@pytest.mark.slow
 def test_smoke_run_renders_pngs(smoke: tuple[int, Path, dict[str, Any]]) -> None:
     code, _, data = smoke
     if data["png_error"] is not None:
@@ -42,6 +42,7 @@ def test_smoke_run_renders_pngs(smoke: tuple[int, Path, dict[str, Any]]) -> None
     assert code == 0
 
 
+@pytest.mark.slow
 def test_json_table_schema(smoke: tuple[int, Path, dict[str, Any]]) -> None:
     _, _, data = smoke
     assert data["schema"] == "rigidrel-bench/1"
@@ -68,6 +69,7 @@ def test_json_table_schema(smoke: tuple[int, Path, dict[str, Any]]) -> None:
     assert {p["series"] for p in data["throughput"]["points"]} >= {"rigidrel core", "textbook float64"}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", CHARTS)
 def test_chart_files_exist_and_pngs_are_not_blank(smoke: tuple[int, Path, dict[str, Any]], name: str) -> None:
     _, out, data = smoke
@@ -83,11 +85,10 @@ def test_chart_files_exist_and_pngs_are_not_blank(smoke: tuple[int, Path, dict[s
 
 
 def _rigidrel(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
-    path = os.pathsep.join(p for p in (str(ROOT), os.environ.get("PYTHONPATH")) if p)
+    """``rigidrel ARGS`` (the installed package's command line) in ``cwd``."""
     return subprocess.run(
-        [sys.executable, "-m", "app.cli", *args],
+        [sys.executable, "-m", "rigidrel_app.cli", *args],
         cwd=cwd,
-        env={**os.environ, "PYTHONPATH": path},
         capture_output=True,
         text=True,
         timeout=120,
@@ -98,6 +99,7 @@ def _bench(*args: str) -> subprocess.CompletedProcess[str]:
     return _rigidrel("bench", *args)
 
 
+@pytest.mark.slow  # each run imports the bench's methods (scipy, spacetimelib, plotly): 1-3 s
 @pytest.mark.parametrize("where", ["file", "under-a-file"])
 def test_bad_out_is_one_line_and_exit_status_2(tmp_path: Path, where: str) -> None:
     a_file = tmp_path / "a-file"
@@ -118,11 +120,17 @@ def test_missing_out_is_a_usage_error() -> None:
 
 
 @pytest.mark.parametrize(
-    "command", [["export", "rod-collision"], ["figures"], ["bench", "--quick"]], ids=lambda c: c[0]
+    "command",
+    [
+        pytest.param(["export", "rod-collision"], id="export"),
+        pytest.param(["figures"], id="figures"),
+        pytest.param(["bench", "--quick"], id="bench", marks=pytest.mark.slow),  # imports the bench: 1-3 s
+    ],
 )
 @pytest.mark.parametrize("name", ["", "  "], ids=["empty", "blank"])
 def test_empty_out_is_one_line_naming_out_and_exit_status_2(tmp_path: Path, command: list[str], name: str) -> None:
-    """``--out ""`` is a usage error, not the current folder (every command shares app.cli's ``out_dir``)."""
+    """``--out ""`` is a usage error, not the current folder (every command shares
+    :func:`rigidrel_app.export.paths.out_dir`)."""
     proc = _rigidrel(*command, "--out", name, cwd=tmp_path)
     assert proc.returncode == 2, proc.stderr
     lines = proc.stderr.strip().splitlines()

@@ -1,4 +1,4 @@
-"""Stability of the methods ``rigidrel bench`` compares, against the 50-digit reference (issue 5).
+"""Stability of the methods ``rigidrel bench`` compares, against the 50-digit reference.
 
 * the textbook formulas (float64, lab first, then boosted) lose at least 4 of float64's
   digits where the core holds 1e-12;
@@ -14,10 +14,9 @@ import warnings
 
 import numpy as np
 import pytest
-
-from app.bench import scenes as bs
-from app.bench.methods import core, ivp, polyline, textbook
-from app.bench.methods.mpmath_slices import ReferenceSlices, reference_slices, relative_errors
+from rigidrel_app.bench import scenes as bs
+from rigidrel_app.bench.methods import core, ivp, polyline, textbook
+from rigidrel_app.bench.methods.mpmath_slices import ReferenceSlices, reference_slices, relative_errors
 
 #: float64's unit roundoff; "losing k digits" means an error of at least 10^k of it.
 UNIT_ROUNDOFF = 2.0**-53

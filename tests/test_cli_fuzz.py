@@ -1,4 +1,8 @@
-"""Hypothesis over the command line: any bad parameter is one line on stderr and exit status 2."""
+"""Hypothesis over the command line: any bad parameter is one line on stderr and exit status 2.
+
+Scenes and options come from the core's registry (every parameter of every scene, plus options
+that belong to another scene).
+"""
 
 from __future__ import annotations
 
@@ -7,33 +11,13 @@ import math
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from rigidrel_app.cli import main
 
-from app.cli import main
+import rigidrel_core as rr
 
-SCENES = [
-    "constant-acceleration",
-    "deceleration",
-    "velocity-change",
-    "impulsive-start",
-    "wall-collision",
-    "rod-collision",
-]
-OPTIONS = [
-    "--v",
-    "--length",
-    "--a-front",
-    "--eps",
-    "--v1",
-    "--v2",
-    "--m1",
-    "--m2",
-    "--l1",
-    "--l2",
-    "--mass",
-    "--v-initial",
-    "--v-final",
-    "--frame",
-]
+SCENES = list(rr.scene_descriptions())
+OPTIONS = sorted({"--" + p.name.replace("_", "-") for d in rr.scene_descriptions().values() for p in d.parameters})
+OPTIONS.append("--frame")
 
 garbage = st.one_of(
     st.sampled_from(
@@ -86,7 +70,8 @@ def test_numbers_that_parse_but_are_out_of_range_name_the_parameter(capsys: pyte
     for args, name in (
         (["--v", "1.0"], "v must"),
         (["--eps", str(math.nextafter(1.0, 2.0))], "eps must"),
-        (["--a-front", "1e-300"], "parameters must"),
+        (["--a-front", "1e-300"], "a_front must be a finite number > 1e-120"),
+        (["--a-front", "1e-115", "--v", "0.9999999999999999"], "parameters must"),
     ):
         with pytest.raises(SystemExit) as info:
             main(["events", "constant-acceleration" if "--eps" not in args else "wall-collision", *args])

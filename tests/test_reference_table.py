@@ -1,17 +1,79 @@
-"""The committed reference table is what its generator produces (first case re-derived)."""
+"""The committed reference table is what its generator produces (first case re-derived), and the
+reference it is made from is independent of rigidrel_core and leaves mpmath's precision alone."""
 
 from __future__ import annotations
 
 import json
 import random
+import subprocess
+import sys
+import textwrap
 from pathlib import Path
+
+import mpmath as mp
+import pytest
+from rigidrel_app.bench.reference import REFERENCE_DIGITS, REFERENCES, boost_event, frame_slice
 
 from tests.reference import make_reference
 
+TABLE = Path(__file__).parent / "reference" / "reference.json"
 
+
+@pytest.mark.slow  # 1.5-3.5 s of 50-digit bisection
 def test_first_case_regenerates_identically() -> None:
-    table = json.loads((Path(__file__).parent / "reference" / "reference.json").read_text())
-    assert table["mp_dps"] == 50
+    table = json.loads(TABLE.read_text())
+    assert table["mp_dps"] == REFERENCE_DIGITS == 50
     case0 = make_reference.cases()[0]
-    regenerated = make_reference.build_case(case0, random.Random(7))
+    regenerated = make_reference.build_case(case0, random.Random(make_reference.FRAMES_SEED))
     assert regenerated == table["cases"][0]
+
+
+def test_table_lists_the_generators_cases_in_order() -> None:
+    """Kinds and parameters of every committed case, fixed and random, are the generator's."""
+    table = json.loads(TABLE.read_text())
+    cases = make_reference.cases()
+    assert [c["kind"] for c in table["cases"]] == [c["kind"] for c in cases]
+    for committed, case in zip(table["cases"], cases):
+        params: dict[str, float | None] = case["params"]  # type: ignore[assignment]
+        assert committed["params"] == {k: None if v is None else float(v).hex() for k, v in params.items()}
+
+
+def test_reference_never_imports_the_core_nor_changes_mpmaths_precision() -> None:
+    """Import-linter-style: the reference package, its builders and slices, in a fresh interpreter,
+    load no rigidrel_core module; mpmath's global precision stays at its default throughout."""
+    script = textwrap.dedent(
+        """
+        import sys
+        import mpmath as mp
+        dps = mp.mp.dps
+        from rigidrel_app.bench.reference import REFERENCES, F, boost_event, frame_slice
+        assert mp.mp.dps == dps, ("import", mp.mp.dps)
+        for ref in REFERENCES.values():
+            scene = ref.build((0.0, 1.0), **ref.cases[0].params)
+            frame_slice(scene.worldlines[0][-1], F(0.5), F(0.25))
+            boost_event(next(iter(scene.events.values())), F(-0.5))
+            assert mp.mp.dps == dps, (ref.kind, mp.mp.dps)
+        core = sorted(m for m in sys.modules if m == "rigidrel_core" or m.startswith("rigidrel_core."))
+        assert not core, core
+        print(len(REFERENCES))
+        """
+    )
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert int(proc.stdout) == len(REFERENCES) >= 6
+
+
+def test_slices_and_boosts_compute_at_50_digits_whatever_the_callers_precision() -> None:
+    """Impulsive start to V = 1/2 (L0 = 1): the front end at lab t = 1/4 is at sqrt(17)/4 (Eq. (20)), and
+    T_F = (gamma/2, gamma) (Eq. (21)) seen from beta = 1/4 is at t' = 2/(3 sqrt 5): to 1e-45 both at
+    mpmath's default 15 digits and inside a 30-digit block, which stay as they were."""
+    ref = REFERENCES["impulsive-start"].build((1.0,), v=0.5, length=1.0)
+    front = ref.worldlines[0][0]
+    for dps in (15, 30):
+        with mp.workdps(dps):
+            x = frame_slice(front, mp.mpf(0), mp.mpf(0.25))
+            t_prime, _ = boost_event(ref.events["T_F"], mp.mpf(0.25))
+            assert mp.mp.dps == dps
+        with mp.workdps(REFERENCE_DIGITS):
+            assert abs(x - mp.sqrt(17) / 4) < mp.mpf(10) ** -45
+            assert abs(t_prime - 2 / (3 * mp.sqrt(5))) < mp.mpf(10) ** -45

@@ -20,10 +20,13 @@ from typing import Any
 import pytest
 from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
+from rigidrel_app.live.server import App
+from rigidrel_app.view.state import CUSTOM_FRAME
 
-from app.server import App
-from app.settings import CUSTOM_FRAME
+import rigidrel_core as rr
 from tests.viser_client import ClientLoop, LightClient, wait_until
+
+pytestmark = pytest.mark.slow
 
 
 class Harness:
@@ -65,16 +68,18 @@ def harness() -> Iterator[Harness]:
         h.close()
 
 
+#: Every number control a tab has, by label, with its range: the scenes' parameter controls (from the
+#: registry; a log-scale one has a box for the value and a slider for its log10) and the others.
 SLIDERS = {
-    "V": (0.01, 0.99),
-    "ε (restitution)": (0.0, 1.0),
-    "V2": (-0.99, 0.99),
-    "log10 M2/M1": (-2.0, 2.0),
-    "L2/L1": (0.1, 5.0),
     "β (custom)": (-0.99, 0.99),
     "Speed": (0.1, 4.0),
-    "a'_F L0": (0.01, 0.99),
 }
+for _d in rr.scene_descriptions().values():
+    for _p in _d.parameters:
+        if _p.slider is not None:
+            SLIDERS[_p.label] = (_p.slider.lo, _p.slider.hi)
+            if _p.slider.scale == "log":
+                SLIDERS[f"log₁₀ {_p.label}"] = (math.log10(_p.slider.lo), math.log10(_p.slider.hi))
 
 hostile_numbers = st.one_of(
     st.sampled_from([math.nan, math.inf, -math.inf, 1e308, -1e308, 1e-320, 5e-324]),
@@ -94,10 +99,19 @@ def as_viser_casts(value: Any) -> float:
         return math.nan
 
 
+def answered(harness: Harness, session: Any, send: Any) -> None:
+    """Send one message and wait for the server's answer to it: the session checked the value (and
+    acted on it or refused it), or viser could not cast it (one line in the log, counted)."""
+    handled, errors = session.messages_handled, harness.app.errors
+    harness.run(send)
+    wait_until(lambda: session.messages_handled > handled or harness.app.errors > errors)
+
+
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(label=st.sampled_from(sorted(SLIDERS)), value=hostile_anything)
 @example(label="L2/L1", value="1e9")  # a string viser casts to an illegal float
 @example(label="V", value="nan")
+@example(label="M2/M1", value=0.0)  # the log-scale parameter's value box
 def test_hostile_slider_values_are_refused_on_the_server(harness: Harness, label: str, value: Any) -> None:
     lo, hi = SLIDERS[label]
     assume(not lo <= as_viser_casts(value) <= hi)  # a legal value once cast ("1", True) is not hostile
@@ -107,43 +121,47 @@ def test_hostile_slider_values_are_refused_on_the_server(harness: Harness, label
     session = next(s for s in harness.app.sessions.values() if not s.closed)
     scene_before = session.drawn.resolved.scene  # type: ignore[union-attr]
     settings_before = session.settings
-    errors_before = harness.app.errors
-    notice_before = session._notice
-    harness.run(
-        client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid[label], "updates": {"value": value}})
-    )
-    # either viser cannot cast it (a one-line log, counted) or the session refuses it with a notice
-    wait_until(
-        lambda: harness.app.errors > errors_before or session._notice != notice_before or "refused" in session._notice
-    )
-    time.sleep(0.05)
+    message = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid[label], "updates": {"value": value}}
+    answered(harness, session, client.send_raw(message))
     assert session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
     assert session.settings == settings_before
-    for field, handle in session.sliders.items():
-        assert isinstance(handle.value, float) and math.isfinite(handle.value)
-        assert handle.value == getattr(settings_before, field)
-    session._set_notice("")  # next example starts clean
+    for control in session.controls.parameters.values():
+        for handle in control.handles:
+            assert isinstance(handle.value, float) and math.isfinite(handle.value)
+    for name, value_now in session.settings.values:
+        control = session.controls.control_for(session.settings, name)
+        if control is not None and value_now is not None:
+            assert control.slider.value == pytest.approx(
+                value_now if control.box is None else math.log10(value_now), rel=1e-12
+            )
 
 
 def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.LogCaptureFixture) -> None:
     _, bystander = harness.connect()
     client, session = harness.connect()
-    with session.lock:  # a custom frame: a refused Frame value must put the dropdown back on it
-        session._try(replace(session.settings, frame=CUSTOM_FRAME, beta=0.3))
+    # a custom frame: a refused Frame value must put the dropdown back on it
+    session.change(replace(session.settings, frame=CUSTOM_FRAME, beta=0.3))
     scene_before = session.drawn.resolved.scene  # type: ignore[union-attr]
     for label, value in (
         ("Scene", "Warp drive"),
         ("Frame", "../../etc/passwd"),
         ("Paper figure", "Fig. 99"),
-        ("Loop", "yes"),
     ):
-        harness.run(
-            client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid[label], "updates": {"value": value}})
-        )
+        message = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid[label], "updates": {"value": value}}
+        answered(harness, session, client.send_raw(message))
+        assert session.notice.startswith(f"{label} = {value!r} refused"), session.notice
+    # viser makes whatever a checkbox gets a bool ("" is False): nothing to refuse, the loop is off
+    message = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Loop"], "updates": {"value": ""}}
+    answered(harness, session, client.send_raw(message))
+    assert session.playback.loop is False
+    # an update of a property that is not a value: viser drops it (no callback); the Speed probe that
+    # follows is answered only after it
     harness.run(client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid["V"], "updates": {"nope": 1}}))
-    time.sleep(0.5)
+    probe = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"], "updates": {"value": 1.7}}
+    answered(harness, session, client.send_raw(probe))
+    assert session.playback.speed == 1.7
     assert not session.closed  # refused values leave the tab connected, with its last valid scene
-    assert session.frame_dd.value == CUSTOM_FRAME and session.drawn.resolved.frame.beta == 0.3  # type: ignore[union-attr]
+    assert session.controls.frame.value == CUSTOM_FRAME and session.drawn.resolved.frame.beta == 0.3  # type: ignore[union-attr]
     # Message types the server does not know (an upload with a path in its name: this app has no
     # upload control; a made-up type) make viser drop that one connection. Each is the last
     # message on its connection: the server may close the socket before another could be sent.
@@ -170,8 +188,8 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
     assert len(dropped()) >= 2 and all(r.exc_info is None and "\n" not in r.getMessage() for r in dropped())
     assert any("KeyError: 'NoSuchMessage'" in r.getMessage() for r in dropped())
     assert session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
-    assert session.scene_dd.value in session.scene_dd.options
-    assert session.frame_dd.value in session.frame_dd.options
+    assert session.controls.scene.value in session.controls.scene.options
+    assert session.controls.frame.value in session.controls.frame.options
     # where "../../pwned.txt" could land relative to the server's working directory (not a walk of
     # the whole parent tree: other processes create and delete files there while it runs)
     cwd = Path.cwd().resolve()
@@ -185,13 +203,17 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
 
 def test_a_client_cannot_reach_another_session(harness: Harness) -> None:
     a, session_a = harness.connect()
-    _, session_b = harness.connect()
-    v_b = session_b.settings.v
-    uuid_of_b = session_b.sliders["v"]._impl.uuid  # learnt by the attacker somehow
+    b, session_b = harness.connect()
+    v_b = session_b.settings.value("v")
+    uuid_of_b = b.gui_uuid["V"]  # learnt by the attacker somehow
+    assert uuid_of_b != a.gui_uuid["V"]
     harness.run(a.send_raw({"type": "GuiUpdateMessage", "uuid": uuid_of_b, "updates": {"value": 0.31}}))
-    time.sleep(0.5)
-    assert session_b.settings.v == v_b
-    assert session_a.settings.v != 0.31
+    # messages from one connection are dispatched in order: once a's probe is answered, the
+    # message before it has been dispatched too (to nobody)
+    probe = {"type": "GuiUpdateMessage", "uuid": a.gui_uuid["Speed"], "updates": {"value": 2.5}}
+    answered(harness, session_a, a.send_raw(probe))
+    assert session_b.settings.value("v") == v_b and session_b.messages_handled == 0
+    assert session_a.settings.value("v") != 0.31
 
 
 def _fps(clients: list[LightClient], seconds: float) -> list[float]:
@@ -210,14 +232,12 @@ def test_stalled_clients_do_not_slow_the_others() -> None:
     try:
         readers = [h.connect() for _ in range(3)]
         for _, s in readers:
-            with s.lock:
-                s.set_playing(True)
+            s.toggle_play()
         time.sleep(1.0)
         baseline = min(_fps([c for c, _ in readers], 4.0))
         stalled = [h.connect(read=False) for _ in range(3)]
         for _, s in stalled:
-            with s.lock:
-                s.set_playing(True)
+            s.toggle_play()
         time.sleep(1.0)
         with_stalled = min(_fps([c for c, _ in readers], 4.0))
         assert baseline > 0 and with_stalled >= 0.8 * baseline, (baseline, with_stalled)
@@ -230,22 +250,20 @@ def test_disconnects_and_reconnects_leak_nothing() -> None:
     h = Harness()
     try:
         keep, keep_session = h.connect()
-        with keep_session.lock:
-            keep_session.set_playing(True)
+        keep_session.toggle_play()
         time.sleep(0.5)
         threads_before = threading.active_count()
         for _ in range(8):
             c, s = h.connect()
-            with s.lock:
-                s.set_playing(True)
+            s.toggle_play()
             time.sleep(0.3)  # mid-animation
             c.stop()
             h.run(c.close())
             h.clients.remove(c)
             wait_until(lambda s=s: s.closed)
         wait_until(lambda: len(h.app.sessions) == 1)
-        time.sleep(0.5)
-        assert threading.active_count() <= threads_before + 2  # the pool's lazily started workers at most
+        # the pool's lazily started workers at most; threads that end do so within the timeout
+        wait_until(lambda: threading.active_count() <= threads_before + 2, timeout=10)
         assert h.app.errors == 0
         frames = keep.stats.lane_frames
         wait_until(lambda: keep.stats.lane_frames > frames)  # the tab that stayed still plays

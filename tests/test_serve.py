@@ -1,4 +1,4 @@
-"""``rigidrel serve`` / ``python -m app`` as a user runs them: the URL it really got, clean exits."""
+"""``rigidrel serve`` / ``python -m rigidrel_app`` as a user runs them: the URL it really got, clean exits."""
 
 from __future__ import annotations
 
@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
+pytestmark = pytest.mark.slow
 URL = re.compile(r"rigidrel: serving on (http://127\.0\.0\.1:(\d+))")
 
 
@@ -78,7 +79,7 @@ def stop(proc: subprocess.Popen[str], sig: int) -> str:
 @pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
 def test_serve_prints_its_url_and_stops_cleanly(sig: int) -> None:
     port = free_port()
-    with serving("-m", "app.cli", "serve", "--port", str(port)) as (proc, url, got):
+    with serving("-m", "rigidrel_app.cli", "serve", "--port", str(port)) as (proc, url, got):
         assert got == port
         with urllib.request.urlopen(url, timeout=10) as r:
             assert r.status == 200 and b"<html" in r.read().lower()
@@ -90,7 +91,7 @@ def test_serve_prints_its_url_and_stops_cleanly(sig: int) -> None:
 
 def test_ctrl_c_stops_the_server_even_when_started_with_sigint_ignored() -> None:
     """A shell's background job inherits SIGINT ignored; Ctrl-C (SIGINT) must still stop the server."""
-    with serving("-m", "app.cli", "serve", "--port", str(free_port()), sigint_ignored=True) as (proc, _, _):
+    with serving("-m", "rigidrel_app.cli", "serve", "--port", str(free_port()), sigint_ignored=True) as (proc, _, _):
         out = stop(proc, signal.SIGINT)
     assert proc.returncode == 0, out
     assert "shutting down" in out
@@ -101,7 +102,7 @@ def test_busy_port_moves_on_and_says_where() -> None:
         blocker.bind(("127.0.0.1", 0))
         blocker.listen()
         busy = int(blocker.getsockname()[1])
-        with serving("-m", "app", "--port", str(busy)) as (proc, url, got):
+        with serving("-m", "rigidrel_app", "--port", str(busy)) as (proc, url, got):
             assert got != busy
             with urllib.request.urlopen(url, timeout=10) as r:
                 assert r.status == 200
@@ -110,7 +111,7 @@ def test_busy_port_moves_on_and_says_where() -> None:
 
 
 def test_binds_loopback_by_default() -> None:
-    from app.server import App
+    from rigidrel_app.live.server import App
 
     with App(port=0) as app:
         assert app.server.get_host() == "127.0.0.1"
@@ -120,7 +121,7 @@ def test_binds_loopback_by_default() -> None:
 @pytest.mark.parametrize("args", [["--port", "70000"], ["--port", "abc"], ["--host"]])
 def test_bad_serve_arguments(args: list[str]) -> None:
     r = subprocess.run(
-        [sys.executable, "-m", "app.cli", "serve", *args], capture_output=True, text=True, cwd=ROOT, timeout=60
+        [sys.executable, "-m", "rigidrel_app.cli", "serve", *args], capture_output=True, text=True, cwd=ROOT, timeout=60
     )
     assert r.returncode == 2
     assert len(r.stderr.splitlines()) == 1
@@ -133,7 +134,7 @@ def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
     loop = ClientLoop()  # pytest may already run an event loop in this thread: playwright's
     try:
         for sig in (signal.SIGINT, signal.SIGTERM):
-            with serving("-m", "app.cli", "serve", "--port", str(free_port())) as (proc, url, _):
+            with serving("-m", "rigidrel_app.cli", "serve", "--port", str(free_port())) as (proc, url, _):
                 clients = [LightClient(url) for _ in range(3)] + [LightClient(url, read=False)]
                 for c in clients:
                     loop.run(c.connect(), timeout=30)
@@ -151,5 +152,32 @@ def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
             others = [line for line in out.splitlines() if not line.startswith("rigidrel: dropped")]
             assert not any("Traceback" in line or "Error" in line for line in others), out
             assert took < 15.0
+    finally:
+        loop.close()
+
+
+def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
+    """``rigidrel serve rod-collision --m2 3 --frame 0.4``: a new tab shows that scene in that frame."""
+    from rigidrel_app.cli import build_parser, start_settings
+    from rigidrel_app.live.server import App
+
+    from tests.viser_client import ClientLoop, LightClient, wait_until
+
+    args = build_parser().parse_args(["serve", "rod-collision", "--m2", "3", "--frame", "0.4", "--port", "0"])
+    start = start_settings("rigidrel serve", args)
+    assert start is not None and args.port == 0
+    loop = ClientLoop()
+    try:
+        with App(port=0, start=start) as app:
+            client = LightClient(app.url)
+            loop.run(client.connect())
+            loop.start(client.run(30))
+            wait_until(lambda: app.sessions)
+            session = next(iter(app.sessions.values()))
+            wait_until(lambda: session.drawn is not None)
+            assert session.settings == start
+            assert session.drawn.resolved.scene.parameters["m2"] == 3.0  # type: ignore[union-attr]
+            assert session.drawn.resolved.frame.beta == 0.4  # type: ignore[union-attr]
+            client.stop()
     finally:
         loop.close()

@@ -160,8 +160,10 @@ class LightClient:
         moved = False
         for m in decode_frame(data):
             kind = m.get("type", "")
-            if kind.startswith("Gui") and "props" in m and isinstance(m["props"], dict) and "label" in m["props"]:
-                self.gui_uuid[str(m["props"]["label"])] = str(m["uuid"])
+            props = m.get("props")
+            # a control (not a folder of the same name), by its label
+            if kind.startswith("Gui") and kind != "GuiFolderMessage" and isinstance(props, dict) and "label" in props:
+                self.gui_uuid[str(props["label"])] = str(m["uuid"])
             if kind == "SceneNodeUpdateMessage" and "batched_positions" in m.get("updates", {}):
                 moved = True
         if moved:

@@ -1,100 +1,109 @@
 """The ``rigidrel`` command: events tables for slides, the app server, exports, figures, benchmarks.
 
-Every bad argument ends in one line on stderr and exit status 2.
+The scene options are generated from the core's scene registry: ``rigidrel events SCENE``
+has one ``--name VALUE`` option per parameter of that scene, with its range and default
+in ``--help``. Every bad argument ends in one line on stderr and exit status 2.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 from collections.abc import Sequence
-from pathlib import Path
-from typing import NoReturn
+from typing import Any, NoReturn
 
 import rigidrel_core as rr
 
-from .settings import choose_frame
+from .export.paths import EXIT_USAGE, fail, out_dir
+from .view.state import CUSTOM_FRAME, Settings, format_value, frame_from_text, resolve
 
-EXIT_USAGE = 2
+__all__ = ["EXIT_USAGE", "build_parser", "main"]
 
 
 class OneLineParser(argparse.ArgumentParser):
-    """argparse, but a usage error is one line on stderr and exit status 2."""
+    """argparse, but a usage error is one line on stderr and exit status 2, and an option is never
+    guessed from a prefix (``--v`` is not ``--v1``)."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        kwargs.setdefault("allow_abbrev", False)
+        super().__init__(*args, **kwargs)
 
     def error(self, message: str) -> NoReturn:
         sys.stderr.write(f"{self.prog}: error: {message}\n")
         raise SystemExit(EXIT_USAGE)
 
 
-def fail(prog: str, message: str) -> NoReturn:
-    sys.stderr.write(f"{prog}: error: {message.splitlines()[0] if message else 'failed'}\n")
-    raise SystemExit(EXIT_USAGE)
+class SceneParser(OneLineParser):
+    """The options of one scene (its ``scene_kind``)."""
+
+    scene_kind = ""
 
 
-# ---------------------------------------------------------------- events
-def _all_parameters() -> dict[str, rr.ParameterSpec]:
-    out: dict[str, rr.ParameterSpec] = {}
-    for specs in rr.SCENE_PARAMETERS.values():
-        for p in specs:
-            out.setdefault(p.name, p)
-    return out
+def _flag(p: rr.Parameter) -> str:
+    return "--" + p.name.replace("_", "-")
 
 
-def _number_or_none(text: str) -> float | None:
-    if text.strip().lower() in ("none", "impulse", "impulsive"):
-        return None
+def _number(text: str) -> float:
     try:
         return float(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
 
 
-def add_scene_arguments(parser: argparse.ArgumentParser, frame_default: str | None = "lab") -> None:
-    """``SCENE`` and one ``--name VALUE`` option per scene parameter (defaults: the paper's).
-
-    ``frame_default=None`` means the app's default frame (the rod's rest frame after, or
-    the barycentric frame).
-    """
-    parser.add_argument("scene", choices=[k.value for k in rr.SceneKind], help="which scene")
-    for name, spec in _all_parameters().items():
-        flags = dict.fromkeys(["--" + name.replace("_", "-"), f"--{name}"])
-        parser.add_argument(
-            *flags,
-            dest=name,
-            type=_number_or_none,
-            default=argparse.SUPPRESS,
-            metavar=name.upper(),
-            help=f"{spec.description}; allowed {spec.allowed}",
-        )
-    parser.add_argument(
-        "--frame",
-        default=frame_default,
-        help="frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after' (default: "
-        + ("the lab" if frame_default == "lab" else "the app's: the rod's rest frame after, or the barycentric frame")
-        + ")",
-    )
+def _number_or_none(text: str) -> float | None:
+    if text.strip().lower() in ("none", "impulse", "impulsive"):
+        return None
+    return _number(text)
 
 
-def scene_from_args(prog: str, args: argparse.Namespace) -> tuple[rr.Scene, rr.Frame]:
-    names = set(_all_parameters())
-    params = {k: v for k, v in vars(args).items() if k in names}
+def add_scene_subparsers(
+    parser: argparse.ArgumentParser, common: list[SceneParser], frame_help: str, required: bool = True
+) -> None:
+    """One sub-command per registered scene, with one option per parameter (defaults: the paper's)."""
+    sub = parser.add_subparsers(dest="scene", metavar="SCENE", required=required, parser_class=SceneParser)
+    for kind, d in rr.scene_descriptions().items():
+        sp = sub.add_parser(kind, help=d.summary, description=f"{d.title} ({d.source}). {d.summary}", parents=common)
+        assert isinstance(sp, SceneParser)  # parser_class above
+        sp.scene_kind = kind
+        for p in d.parameters:
+            unit = f" [{p.unit}]" if p.unit else ""
+            sp.add_argument(
+                _flag(p),
+                dest=p.name,
+                type=_number_or_none if p.optional else _number,
+                default=argparse.SUPPRESS,
+                metavar=p.symbol.replace("′", "'"),
+                help=f"{p.help}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
+                + ("; 'none' omits it" if p.optional else ""),
+            )
+        sp.add_argument("--frame", default=None, help=frame_help + f"; presets: {', '.join(d.frames)}")
+
+
+def scene_values(args: argparse.Namespace) -> dict[str, float | None]:
+    d = rr.describe(args.scene)
+    return {p.name: getattr(args, p.name) for p in d.parameters if hasattr(args, p.name)}
+
+
+def scene_from_args(prog: str, args: argparse.Namespace, default_frame: str | None) -> tuple[rr.Scene, rr.Frame]:
+    """The scene and frame the arguments name (``--frame`` omitted: ``default_frame``, None for the
+    scene's default frame); a bad value is one line and exit status 2."""
     try:
-        scene = rr.build_scene(args.scene, **params)
-        frame = choose_frame(scene, args.frame)
+        scene = rr.build_scene(args.scene, **scene_values(args))
+        frame = frame_from_text(scene, args.frame if args.frame is not None else default_frame)
     except ValueError as exc:
         fail(prog, str(exc))
     return scene, frame
 
 
+# ---------------------------------------------------------------- events
 def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
     """Everything ``rigidrel events`` prints, as plain data."""
     budget = scene.budget(frame)
     return {
-        "scene": scene.kind.value,
+        "scene": scene.kind,
         "parameters": dict(scene.parameters),
-        "frame": {"name": frame.name, "velocity": frame.beta},
+        "frame": {"name": frame.label(), "velocity": frame.beta},
         "events": {k: {"t": t, "x": x} for k, (t, x) in scene.events_in(frame).items()},
         "events_lab": {k: {"t": t, "x": x} for k, (t, x) in scene.events.items()},
         "initial_velocities": list(scene.initial_velocities),
@@ -109,16 +118,17 @@ def _g(x: float) -> str:
 
 
 def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
+    d = rr.describe(scene)
     budget = scene.budget(frame)
     lines = [
-        f"scene      {scene.kind.value}   (c = 1)",
+        f"scene      {scene.kind}   ({d.title}, {d.source}; c = 1)",
         "parameters " + "  ".join(f"{k}={_g(v)}" for k, v in scene.parameters.items()),
-        f"frame      {frame.name}  (beta = {_g(frame.beta)})",
+        f"frame      {frame.label()}  (beta = {_g(frame.beta)})",
         "",
-        f"{'event':<8}{'t':>20}{'x':>20}",
+        f"{'event':<8}{'t':>20}{'x':>20}   meaning",
     ]
     for name, (t, x) in scene.events_in(frame).items():
-        lines.append(f"{name:<8}{_g(t):>20}{_g(x):>20}")
+        lines.append(f"{name:<8}{_g(t):>20}{_g(x):>20}   {d.event(name).meaning}")
     lines += ["", f"{'rod':<8}{'V before (lab)':>20}{'V after (lab)':>20}"]
     for rod, v0, v1 in zip(scene.rods, scene.initial_velocities, scene.final_velocities):
         lines.append(f"{rod.name:<8}{_g(v0):>20}{_g(v1):>20}")
@@ -140,7 +150,7 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
 
 
 def cmd_events(args: argparse.Namespace) -> int:
-    scene, frame = scene_from_args("rigidrel events", args)
+    scene, frame = scene_from_args("rigidrel events", args, "lab")
     if args.json:
         print(json.dumps(events_report(scene, frame), indent=2, allow_nan=False))
     else:
@@ -148,25 +158,79 @@ def cmd_events(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_scenes(args: argparse.Namespace) -> int:
+    """Every registered scene, its parameters with their ranges, its frames and events."""
+    del args
+    for kind, d in rr.scene_descriptions().items():
+        print(f"{kind}  ({d.title}; {d.source})\n  {d.summary}")
+        for p in d.parameters:
+            print(f"  {_flag(p):<14}{p.symbol:<6}{p.allowed():<52} default {format_value(p.default)}")
+        print(f"  frames: {', '.join(d.frames)} (default {d.default_frame})")
+        print(f"  events: {', '.join(f'{e.name} ({e.meaning})' for e in d.events)}\n")
+    return 0
+
+
 # ---------------------------------------------------------------- main
+def _positive(text: str) -> float:
+    value = _number(text)
+    if not (value > 0 and value < 1e4):
+        raise argparse.ArgumentTypeError(f"must be in (0, 1e4); got {text}")
+    return value
+
+
+def _port(text: str) -> int:
+    try:
+        port = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a port number: {text!r}") from None
+    if not 0 <= port <= 65535:
+        raise argparse.ArgumentTypeError(f"port must be in [0, 65535]; got {port}")
+    return port
+
+
 def build_parser() -> OneLineParser:
     parser = OneLineParser(prog="rigidrel", description="Born-rigid rods in special relativity (Franklin 2012).")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
+    frame_help = "frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'"
+
+    ev_common = SceneParser(add_help=False)
+    ev_common.add_argument("--json", action="store_true", help="machine-readable output")
     ev = sub.add_parser("events", help="events, final velocities and 4-momentum budget of a scene")
-    add_scene_arguments(ev)
-    ev.add_argument("--json", action="store_true", help="machine-readable output")
+    add_scene_subparsers(ev, [ev_common], frame_help + " (default: the lab)")
     ev.set_defaults(func=cmd_events)
-    sv = sub.add_parser("serve", help="start the app: open the printed URL in a browser")
-    sv.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1: this machine only)")
-    sv.add_argument("--port", type=_port, default=8080, help="port to try first; the next free one is used if busy")
+
+    sc = sub.add_parser("scenes", help="list every scene with its parameters, ranges, frames and events")
+    sc.set_defaults(func=cmd_scenes)
+
+    def server_options(defaults: bool) -> SceneParser:
+        # the scene's sub-command repeats them without defaults, so that "serve --port P SCENE" keeps P
+        common = SceneParser(add_help=False)
+        host = "127.0.0.1" if defaults else argparse.SUPPRESS
+        port = 8080 if defaults else argparse.SUPPRESS
+        common.add_argument("--host", default=host, help="interface to bind (default 127.0.0.1: this machine only)")
+        common.add_argument("--port", type=_port, default=port, help="port to try first; the next free one if busy")
+        return common
+
+    sv = sub.add_parser(
+        "serve",
+        help="start the app: open the printed URL in a browser",
+        parents=[server_options(True)],
+        description="Start the app. With a SCENE and its options, every new tab opens on that state.",
+    )
+    add_scene_subparsers(
+        sv, [server_options(False)], frame_help + " (default: the scene's default frame)", required=False
+    )
     sv.set_defaults(func=cmd_serve)
+
+    ex_common = SceneParser(add_help=False)
+    ex_common.add_argument("--out", required=True, help="folder to write into (created if missing)")
+    ex_common.add_argument("--seconds", type=_positive, default=10.0, help="length of the animations (default 10 s)")
+    ex_common.add_argument("--fps", type=_positive, default=30.0, help="frames per second of the 3-D HTML and MP4")
+    ex_common.add_argument("--gif-fps", type=_positive, default=15.0, help="frames per second of the GIF")
     ex = sub.add_parser("export", help="offline HTML (3-D and diagram), PNG, SVG, GIF and MP4 of a scene")
-    add_scene_arguments(ex, frame_default=None)
-    ex.add_argument("--out", required=True, help="folder to write into (created if missing)")
-    ex.add_argument("--seconds", type=_positive, default=10.0, help="length of the animations (default 10 s)")
-    ex.add_argument("--fps", type=_positive, default=30.0, help="frames per second of the 3-D HTML and MP4")
-    ex.add_argument("--gif-fps", type=_positive, default=15.0, help="frames per second of the GIF")
+    add_scene_subparsers(ex, [ex_common], frame_help + " (default: the scene's default frame)")
     ex.set_defaults(func=cmd_export)
+
     fg = sub.add_parser("figures", help="regenerate the paper's Figs. 1-4 as SVG and PNG")
     fg.add_argument("--out", required=True, help="folder to write into (created if missing)")
     fg.set_defaults(func=cmd_figures)
@@ -177,36 +241,11 @@ def build_parser() -> OneLineParser:
     return parser
 
 
-def _positive(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
-    if not (value > 0 and value < 1e4):
-        raise argparse.ArgumentTypeError(f"must be in (0, 1e4); got {text}")
-    return value
-
-
-def out_dir(prog: str, text: str) -> Path:
-    """The folder ``--out`` names (``~`` expanded), created if missing; a one-line error and exit
-    status 2 for an empty name or a folder that cannot be created or written to."""
-    if not text.strip():
-        fail(prog, "--out: an empty folder name")
-    out = Path(text).expanduser()
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        fail(prog, f"--out {text!r} cannot be created: {exc.strerror or exc}")
-    if not os.access(out, os.W_OK | os.X_OK):
-        fail(prog, f"--out {text!r} is not a writable folder")
-    return out
-
-
 def cmd_export(args: argparse.Namespace) -> int:
     from .export.bundle import export_scene
 
     prog = "rigidrel export"
-    scene, frame = scene_from_args(prog, args)
+    scene, frame = scene_from_args(prog, args, None)
     out = out_dir(prog, args.out)
     try:
         written = export_scene(scene, frame, out, seconds=args.seconds, fps=args.fps, gif_fps=args.gif_fps)
@@ -218,7 +257,7 @@ def cmd_export(args: argparse.Namespace) -> int:
 
 
 def cmd_figures(args: argparse.Namespace) -> int:
-    from .figures import write_figures
+    from .export.figures import write_figures
 
     prog = "rigidrel figures"
     out = out_dir(prog, args.out)
@@ -238,25 +277,40 @@ def cmd_bench(args: argparse.Namespace) -> int:
     return run_bench(quick=args.quick, out=args.out)
 
 
-def _port(text: str) -> int:
-    try:
-        port = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a port number: {text!r}") from None
-    if not 0 <= port <= 65535:
-        raise argparse.ArgumentTypeError(f"port must be in [0, 65535]; got {port}")
-    return port
+def start_settings(prog: str, args: argparse.Namespace) -> Settings | None:
+    """The state ``rigidrel serve SCENE ...`` opens every tab on (None: the app's default)."""
+    if args.scene is None:
+        return None
+    scene, frame = scene_from_args(prog, args, None)
+    preset = frame.name if frame.name is not None and scene.frames.get(frame.name) == frame else None
+    settings = Settings(
+        scene.kind,
+        tuple(scene_values(args).items()),
+        preset if preset is not None else CUSTOM_FRAME,
+        0.0 if preset is not None else frame.beta,
+    )
+    checked = resolve(settings)
+    if isinstance(checked, str):
+        fail(prog, checked)
+    return settings
 
 
 def cmd_serve(args: argparse.Namespace) -> int:
-    from .server import serve  # viser is imported only here
+    start = start_settings("rigidrel serve", args)
+    from .live.server import serve  # viser is imported only here
 
-    return serve(args.host, args.port)
+    return serve(args.host, args.port, start)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args, extra = parser.parse_known_args(argv)
+    if extra:  # an option the scene does not have: name it, and the ones it has
+        kind = getattr(args, "scene", None)
+        if kind is None:
+            parser.error(f"unrecognized arguments: {' '.join(extra)}")
+        options = ", ".join(_flag(p) for p in rr.describe(kind).parameters)
+        fail(f"rigidrel {args.command} {kind}", f"{extra[0]} is not an option of {kind}; its parameters are {options}")
     return int(args.func(args))
 
 

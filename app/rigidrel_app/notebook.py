@@ -1,10 +1,10 @@
 """Scenes in a Jupyter notebook: the diagram as a plotly figure, the 3-D lanes as a playing recording.
 
     import rigidrel_core as rr
-    from app.notebook import diagram, recording
+    from rigidrel_app.notebook import diagram, recording
     scene = rr.rod_collision(v1=0.6, v2=0.0, m1=1.0, m2=2.0, l1=1.0, l2=1.0, eps=1.0)
-    diagram(scene, frame="barycentric")      # interactive plotly figure
-    recording(scene, frame="barycentric")    # the lanes playing, offline (an iframe)
+    diagram(scene, scene.frame("barycentric"))      # interactive plotly figure
+    recording(scene, scene.frame("barycentric"))    # the lanes playing, offline (an iframe)
 
 Outside a notebook both return ordinary objects (a plotly ``Figure``; a :class:`Recording`
 with ``html`` and ``save``).
@@ -20,29 +20,22 @@ import plotly.graph_objects as go
 
 import rigidrel_core as rr
 
-from .diagrams import minkowski_in_frame
-from .draw import chart_to_plotly, jsonable
-from .drawing import build_drawing
-from .settings import Resolved, choose_frame
-
-FrameLike = rr.Frame | str | float
+from .export.diagram import diagram_figure
+from .export.recording import record_lanes_html
+from .view.scene_view import build_drawing
+from .view.state import Resolved
 
 
 def diagram(
-    scene: rr.Scene, frame: FrameLike = "lab", size: tuple[int, int] = (640, 560), density: float = 2.0
+    scene: rr.Scene, frame: rr.Frame = rr.LAB, size: tuple[int, int] = (640, 560), density: float = 2.0
 ) -> go.Figure:
-    """The scene's Minkowski diagram in ``frame``, exact, as an interactive plotly figure.
+    """The scene's Minkowski diagram in ``frame`` (a :class:`~rigidrel_core.Frame`, e.g.
+    ``scene.frame("barycentric")``), exact, as an interactive plotly figure.
 
-    ``frame``: a preset name of the scene, a velocity in (-1, 1) or a :class:`~rigidrel_core.Frame`.
     Curves are sampled to half a pixel at ``density`` device pixels per CSS pixel (2 covers
     high-density screens and 2x PNG exports).
     """
-    area = (size[0] - 100.0, size[1] - 180.0)
-    chart = minkowski_in_frame(scene, choose_frame(scene, frame), area, density=density)
-    fig = jsonable(chart_to_plotly(chart))
-    fig["layout"].update({"width": size[0], "height": size[1]})
-    fig["layout"]["legend"].update({"y": -0.13})
-    return go.Figure(fig)
+    return go.Figure(diagram_figure(scene, frame, size, density))
 
 
 @dataclass(frozen=True)
@@ -63,9 +56,9 @@ class Recording:
         )
 
 
-def recording(scene: rr.Scene, frame: FrameLike = "lab", seconds: float = 10.0, fps: float = 30.0) -> Recording:
-    """Both lanes (the lab and ``frame``) playing through the scene's window, as offline HTML."""
-    from .export.recording import record_lanes_html
-
-    drawn = build_drawing(Resolved(scene, choose_frame(scene, frame), None))
+def recording(scene: rr.Scene, frame: rr.Frame | None = None, seconds: float = 10.0, fps: float = 30.0) -> Recording:
+    """Both lanes (the lab and ``frame``, by default the scene's default frame) playing through the
+    scene's window, as offline HTML."""
+    chosen = rr.default_frame(scene) if frame is None else frame
+    drawn = build_drawing(Resolved(scene, chosen, None))
     return Recording(record_lanes_html(drawn, seconds, fps))

@@ -184,7 +184,7 @@ _IMPULSIVE_ALLOWED = Interval(0.0, 1.0, hi_closed=True)
 A_FRONT_OR_IMPULSE = Parameter(
     "a_front",
     A_FRONT.symbol,
-    A_FRONT.label,
+    "a′_F L0 (1: impulse)",
     A_FRONT.unit,
     A_FRONT.domain,
     0.5,

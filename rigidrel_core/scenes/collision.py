@@ -86,11 +86,12 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         bar_g_after = tuple((1 + b * b).sqrt() for b in bar_u_after)
         lab_u_after = tuple(_cancelled_sum(energy * b, momentum * g) / mass for b, g in zip(bar_u_after, bar_g_after))
         denom = dm1 * bar_g_after[0] + dm2 * bar_g_after[1]
-        if de == 1:  # elastic: bar g' = bar g, so denom = M exactly
+        excess = _cancelled_sum(mass, -denom)  # M - (m1 bar g1' + m2 bar g2') >= 0: no heat below the noise
+        if de == 1 or excess <= 0:  # elastic: bar g' = bar g, so denom = M exactly
             factor, heat = Decimal(1), Decimal(0)
         else:
             factor = mass / denom
-            heat = (mass - denom) / denom * (dm1 + dm2)
+            heat = excess / denom * (dm1 + dm2)
         # barycentric velocity u = P / E, with 1 - |u| = (E - |P|)/E formed without cancellation
         e_minus_p = dm1 * g1 * (1 - d1) + dm2 * g2 * (1 - d2)
         e_plus_p = dm1 * g1 * (1 + d1) + dm2 * g2 * (1 + d2)
@@ -206,7 +207,7 @@ ROD_COLLISION = SceneDescription(
     summary="Rod 1 at V1 hits rod 2 at V2 < V1; their touching ends take the barycentric solution at once.",
     source="Secs. 5-6",
     constructor=rod_collision,
-    parameters=(V1, V2, M1, M2, L1, L2, EPS),
+    parameters=(V1, M2, V2, L2, EPS, M1, L1),
     frames=("lab", "rod 1 before", "rod 2 before", "rod 1 after", "rod 2 after", "barycentric"),
     default_frame="barycentric",
     events=(

@@ -15,36 +15,37 @@ from __future__ import annotations
 import argparse
 import json
 import timeit
+from collections.abc import Callable
 
 import numpy as np
 
 import rigidrel_core as rr
 
 
-def best(fn, repeat: int, number: int = 1) -> float:
+def best(fn: Callable[[], object], repeat: int, number: int = 1) -> float:
     return min(timeit.repeat(fn, number=number, repeat=repeat)) / number
 
 
 def run(n: int = 1_000_000, repeat: int = 15) -> dict[str, float]:
     scene = rr.rod_collision(v1=0.6, v2=-0.3, m1=1.0, m2=2.0, l1=1.0, l2=1.5, eps=0.8)
-    beta = 0.5
-    t0, t1 = scene.time_window(beta)
+    frame = rr.Frame.from_velocity(0.5)
+    t0, t1 = scene.time_window(frame)
     t = np.linspace(t0, t1, n)
     shuffled = np.random.default_rng(0).permutation(t)
     t256 = np.linspace(t0, t1, 256)
-    scene.positions(t256, beta)  # plan for this frame, once
+    scene.positions(t256, frame)  # plan for this frame, once
 
     def baseline() -> None:
         for _ in range(4):
             np.sqrt(1.0 + t * t)
 
     base = best(baseline, repeat)
-    sorted_s = best(lambda: scene.positions(t, beta), repeat)
-    shuffled_s = best(lambda: scene.positions(shuffled, beta), max(3, repeat // 3))
-    small = best(lambda: scene.positions(t256, beta), 7, number=2000)
+    sorted_s = best(lambda: scene.positions(t, frame), repeat)
+    shuffled_s = best(lambda: scene.positions(shuffled, frame), max(3, repeat // 3))
+    small = best(lambda: scene.positions(t256, frame), 7, number=2000)
     build = best(lambda: rr.rod_collision(0.6, -0.3, 1.0, 2.0, 1.0, 1.5, 0.8), 7, number=50)
     fresh = iter(np.linspace(-0.9, 0.9, 10_000))
-    new_frame = best(lambda: scene.positions(t256, float(next(fresh))), 5, number=200)
+    new_frame = best(lambda: scene.positions(t256, rr.Frame.from_velocity(float(next(fresh)))), 5, number=200)
     return {
         "n_times": float(n),
         "baseline_4_sqrt_passes_ms": base * 1e3,

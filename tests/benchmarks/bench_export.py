@@ -13,9 +13,9 @@ import tempfile
 import time
 from pathlib import Path
 
+from rigidrel_app.export.bundle import export_scene
+
 import rigidrel_core as rr
-from app.export.bundle import export_scene
-from app.settings import choose_frame
 
 
 def main() -> None:
@@ -24,12 +24,12 @@ def main() -> None:
     parser.add_argument("--fps", type=float, default=30.0)
     args = parser.parse_args()
     for scene in (rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0), rr.constant_acceleration(0.6, 1.0, 0.5)):
-        frame = choose_frame(scene, None)
+        frame = rr.default_frame(scene)
         with tempfile.TemporaryDirectory() as tmp:
             t0 = time.perf_counter()
             written = export_scene(scene, frame, Path(tmp), seconds=args.seconds, fps=args.fps)
             total = time.perf_counter() - t0
-            print(f"{scene.kind.value}: {args.seconds:g} s at {args.fps:g} fps, frame {frame.name}")
+            print(f"{scene.kind}: {args.seconds:g} s at {args.fps:g} fps, frame {frame.name}")
             for w in written:
                 print(f"  {w.path.name:34s} {w.seconds:7.2f} s {w.megabytes:8.2f} MB")
             print(f"  {'all formats':34s} {total:7.2f} s")

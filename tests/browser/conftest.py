@@ -51,7 +51,7 @@ def browser() -> Iterator[Any]:
 
 @pytest.fixture
 def app_server() -> Iterator[object]:
-    from app.server import App
+    from rigidrel_app.live.server import App
 
     app = App(host="127.0.0.1", port=0)
     try:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import io
 import json
-import math
+import re
 import time
 from pathlib import Path
 from typing import Any
@@ -16,18 +16,20 @@ from typing import Any
 import numpy as np
 import pytest
 from PIL import Image
+from rigidrel_app.backends.viser import ROD_DEPTH
+from rigidrel_app.live.server import App
+from rigidrel_app.live.session import Session
+from rigidrel_app.view import camera as cam
+from rigidrel_app.view.lanes import lane_geometry
+from rigidrel_app.view.scene_view import FRAME_Z, LAB_Z
+from rigidrel_app.view.state import CUSTOM_FRAME, Settings
+from rigidrel_app.view.vocabulary import ROD_COLORS
 
 import rigidrel_core as rr
-from app import camera as cam
-from app.draw import ROD_COLORS
-from app.drawing import FRAME_Z, LAB_Z
-from app.lanes import lane_geometry
-from app.server import App
-from app.session import Session
-from app.settings import CUSTOM_FRAME, Settings
-from app.viser_scene import ROD_DEPTH
 from tests.browser.conftest import VIEWPORT
 from tests.viser_client import wait_until
+
+pytestmark = pytest.mark.browser
 
 #: Detected rod edges must lie this close to the core's positions projected through the camera.
 PIXEL_TOLERANCE = 3.0
@@ -141,11 +143,9 @@ def show(tab: AppPage, settings: Settings, now: float) -> None:
     """Put the session in a known state, paused at ``now`` (server side, as a preset would)."""
     s = tab.session
     with s.lock:
-        s.fit_cb.value = True
-        s._try(settings, refit=True)
-        s.set_playing(False)
-        s.now = now
-        s.draw_now(force_plots=True)
+        s.controls.fit.value = True
+        s.change(settings, refit=True)
+        s.seek(now)
 
 
 def current_pose(tab: AppPage) -> cam.CameraPose:
@@ -201,9 +201,8 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     The chosen frame moves at beta = 0.8 and the clock is mid-collision, so lab positions
     drawn in the frame lane would be off by far more than the tolerance (checked).
     """
-    settings = Settings(
-        rr.SceneKind.ROD_COLLISION, v=0.6, v2=0.0, log_mass_ratio=math.log10(2.0), eps=1.0, frame=CUSTOM_FRAME, beta=0.8
-    )
+    settings = Settings.of("rod-collision", v1=0.6, v2=0.0, m2=2.0, eps=1.0)
+    settings = Settings(settings.scene, settings.values, CUSTOM_FRAME, 0.8)
     now = 0.4
     default_scene = tab.canvas()
     show(tab, settings, now)
@@ -214,11 +213,11 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     pose = current_pose(tab)
     h, w = img.shape[:2]
     tab.page.screenshot(path=str(shots / "collision_beta_0.8_t_0.4.png"))
-    lanes = {LAB_Z: rr.Frame.lab(), FRAME_Z: frame}
+    lanes = {LAB_Z: rr.LAB, FRAME_Z: frame}
     separation = []
     for z, lane_frame in lanes.items():
         x = scene.positions(np.array([now]), lane_frame)[:, :, 0] / unit
-        x_lab = scene.positions(np.array([now]), 0.0)[:, :, 0] / unit
+        x_lab = scene.positions(np.array([now]), rr.LAB)[:, :, 0] / unit
         for r, color in ((0, "blue"), (1, "orange")):
             lo, hi, v = expected_extent(x[r, 0], x[r, 1], z, pose, w, h)
             runs = rod_runs(img[round(v)], color)
@@ -240,7 +239,7 @@ def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
     before = tab.diagrams()
     before_velocity = tab.session.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
     tab.type_into_slider("V", 0.85)
-    wait_until(lambda: tab.session.settings.v == 0.85)
+    wait_until(lambda: tab.session.settings.value("v") == 0.85)
     wait_until(lambda: tab.diagrams()[0]["traces"] != before[0]["traces"])
     after = tab.diagrams()
     assert tab.session.drawn.resolved.scene.final_velocities != before_velocity  # type: ignore[union-attr]
@@ -253,11 +252,11 @@ def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
 
 def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) -> None:
     default_scene = tab.canvas()
-    show(tab, Settings(rr.SceneKind.ROD_COLLISION, frame="lab"), 0.2)
+    show(tab, Settings("rod-collision", frame="lab"), 0.2)
     img0 = tab.canvas_after(default_scene)
     pose = current_pose(tab)
     with tab.session.lock:
-        tab.session.fit_cb.value = False  # keep the camera: compare pixels
+        tab.session.controls.fit.value = False  # keep the camera: compare pixels
     tab.choose("Frame", "rod 2 after")
     wait_until(lambda: tab.session.drawn.resolved.frame.name == "rod 2 after")  # type: ignore[union-attr]
     img1 = tab.canvas_after(img0)
@@ -286,7 +285,7 @@ def rod_extents(img: np.ndarray) -> np.ndarray:
 
 
 def test_plotly_panels_carry_traces_and_event_labels(tab: AppPage) -> None:
-    show(tab, Settings(rr.SceneKind.ROD_COLLISION, frame="barycentric"), 0.0)
+    show(tab, Settings("rod-collision", frame="barycentric"), 0.0)
     wait_until(lambda: any("T<sub>2</sub>" in "".join(p["annotations"]) for p in tab.diagrams()))
     lab, frame = tab.diagrams()
     lengths = tab.lengths_plot()
@@ -307,12 +306,12 @@ def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
     b = AppPage(browser, app_server)
     try:
         a.type_into_slider("V", 0.3)
-        wait_until(lambda: a.session.settings.v == 0.3)
-        time.sleep(0.5)
-        assert b.session.settings.v == Settings().v
+        wait_until(lambda: a.session.settings.value("v") == 0.3)
+        # a's change is complete; b's session has had no message at all and still shows the default
+        assert b.session.settings.value("v") == Settings().value("v") and b.session.messages_handled == 0
         assert a.session is not b.session
         value = b.control("V").locator("[role=slider]").get_attribute("aria-valuenow")
-        assert float(value) == pytest.approx(Settings().v)
+        assert float(value) == pytest.approx(Settings().value("v"))
     finally:
         a.close()
         b.close()
@@ -320,25 +319,25 @@ def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
 
 def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, shots: Path) -> None:
     tab.choose("Scene", "Rod-rod collision")
-    wait_until(lambda: tab.session.drawn.resolved.scene.kind is rr.SceneKind.ROD_COLLISION)  # type: ignore[union-attr]
+    wait_until(lambda: tab.session.drawn.resolved.scene.kind == "rod-collision")  # type: ignore[union-attr]
     scene_before = tab.session.drawn.resolved.scene  # type: ignore[union-attr]
     tab.type_into_slider("V2", 0.9)  # faster than V1 = 0.6: the rods never meet
-    tab.page.wait_for_selector("text=rod 1 never catches rod 2", timeout=20_000)
+    tab.page.wait_for_selector("text=so that the rods collide", timeout=20_000)
     assert tab.session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
     tab.page.screenshot(path=str(shots / "notice.png"))
     for p in tab.diagrams():  # still the last valid scene's curves, no NaN
         assert p["traces"] and all(np.isfinite(v) for t in p["traces"] for v in t["x"] if v is not None)
     tab.type_into_slider("V2", -0.3)
     wait_until(lambda: tab.session.drawn.resolved.scene is not scene_before)  # type: ignore[union-attr]
-    wait_until(lambda: not tab.page.locator("text=rod 1 never catches rod 2").is_visible())
+    wait_until(lambda: not tab.page.locator("text=so that the rods collide").is_visible())
 
 
 def test_playback_moves_the_rods_and_the_now_lines(tab: AppPage) -> None:
     wait_until(lambda: tab.diagrams()[0]["traces"])
     tab.page.click("button:has-text('Play')")
-    wait_until(lambda: tab.session.playing)
-    t0 = tab.session.now
-    wait_until(lambda: tab.session.now > t0)
+    wait_until(lambda: tab.session.playback.playing)
+    t0 = tab.session.playback.now
+    wait_until(lambda: tab.session.playback.now > t0)
 
     def now_lines() -> list[str]:
         return [n for n in tab.diagrams()[0]["names"] if n.startswith("now: t =")]
@@ -346,7 +345,7 @@ def test_playback_moves_the_rods_and_the_now_lines(tab: AppPage) -> None:
     names = wait_until(now_lines)
     wait_until(lambda: now_lines() not in ([], names))  # the diagram's now line follows playback
     tab.page.click("button:has-text('Pause')")
-    wait_until(lambda: not tab.session.playing)
+    wait_until(lambda: not tab.session.playback.playing)
     assert json.dumps(tab.errors) == "[]"
 
 
@@ -384,3 +383,24 @@ def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:
             new.stop()
         else:
             old.stop()
+
+
+def test_every_registered_scene_is_in_the_menu_and_draws(tab: AppPage, shots: Path) -> None:
+    """The scene menu is the registry: choosing each scene as a user draws it, with its own controls."""
+    tab.control("Scene").click()
+    options = tab.page.locator("[role=option]:visible").all_inner_texts()
+    tab.page.keyboard.press("Escape")
+    titles = [d.title for d in rr.scene_descriptions().values()]
+    assert options == titles
+    for kind, d in rr.scene_descriptions().items():
+        before = tab.canvas()
+        tab.choose("Scene", d.title)
+        wait_until(lambda kind=kind: tab.session.drawn.resolved.scene.kind == kind)  # type: ignore[union-attr]
+        for p in d.parameters:
+            if p.slider is not None:  # this scene's controls are shown
+                label = tab.page.locator("label").filter(has_text=re.compile(f"^{re.escape(p.label)}$"))
+                label.wait_for(state="visible", timeout=20_000)
+        if kind != "constant-acceleration":
+            tab.canvas_after(before)
+        tab.page.screenshot(path=str(shots / f"{kind}.png"))
+    assert tab.errors == []

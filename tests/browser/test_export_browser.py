@@ -9,13 +9,15 @@ from typing import Any
 import numpy as np
 import pytest
 from PIL import Image
+from rigidrel_app.export.diagram_html import diagram_html
+from rigidrel_app.export.recording import record_lanes_html
+from rigidrel_app.view.scene_view import build_drawing
+from rigidrel_app.view.state import Resolved, Settings
 
 import rigidrel_core as rr
-from app.drawing import build_drawing
-from app.export.diagram_html import diagram_html
-from app.export.recording import record_lanes_html
-from app.settings import Resolved, Settings
 from tests.viser_client import wait_until
+
+pytestmark = pytest.mark.browser
 
 ALLOWED = ("file://", "data:", "blob:", "about:")
 
@@ -53,11 +55,11 @@ class OfflinePage:
 def exported(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     out = tmp_path_factory.mktemp("offline")
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
-    drawn = build_drawing(Resolved(scene, scene.frames["barycentric"], None))
+    drawn = build_drawing(Resolved(scene, scene.frame("barycentric"), None))
     lanes = out / "lanes.html"
     lanes.write_text(record_lanes_html(drawn, seconds=6.0, fps=20.0), encoding="utf-8")
     slider = out / "diagram.html"
-    slider.write_text(diagram_html(Settings(rr.SceneKind.ROD_COLLISION)), encoding="utf-8")
+    slider.write_text(diagram_html(Settings("rod-collision")), encoding="utf-8")
     return {"lanes": lanes, "diagram": slider}
 
 
@@ -99,7 +101,7 @@ def test_diagram_page_responds_to_its_slider_offline(browser: Any, exported: dic
         before_title = wait_until(lambda: page.page.evaluate(title))
         before = page.page.evaluate(traces)
         assert "β = 0.2308" in before_title  # case I's barycentric frame: V1 = 0.6, M2/M1 = 2
-        # as a user: click the first step of the mass-ratio slider
+        # as a user: click the first step of the mass-ratio slider (the page's second slider)
         group = page.page.locator("g.slider-group").nth(1)
         label = group.locator("g.slider-label-group").nth(0).bounding_box()
         rail = group.locator("rect.slider-rail-touch-rect").bounding_box()
@@ -107,8 +109,8 @@ def test_diagram_page_responds_to_its_slider_offline(browser: Any, exported: dic
         page.page.mouse.click(label["x"] + label["width"] / 2, rail["y"] + rail["height"] / 2)
         after_title = wait_until(lambda: (t := page.page.evaluate(title)) != before_title and t)
         after = page.page.evaluate(traces)
-        page.page.screenshot(path=str(shots / "mass_ratio_0.25.png"))
-        assert "β = 0.5)" in after_title  # M2/M1 = 1/4: u = 0.75/1.5
+        page.page.screenshot(path=str(shots / "mass_ratio_0.01.png"))
+        assert "β = 0.5952)" in after_title  # M2/M1 = 0.01: u = M1 γ V / (M1 γ + M2) = 0.75/1.26
         assert after != before
         # the play button sweeps V1
         page.page.click("text=▶ V1")

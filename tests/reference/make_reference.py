@@ -1,30 +1,30 @@
 """Generate the 50-digit reference table for rigidrel_core's accuracy tests.
 
-Independent of the core by construction:
+Independent of the core by construction: the scenes are those of
+:mod:`rigidrel_app.bench.reference` (one module per scene family; it never imports
+rigidrel_core), which solves each scene by the paper's own route in mpmath at 50 digits,
+follows the paper's lab formulas point by point and finds a slice at frame time ``t'`` by
+bisection on lab time ``t`` of ``gamma (t - beta x(t)) = t'`` (the core never inverts
+anything: it evaluates closed forms in the frame). That package is also the run-time
+reference of ``rigidrel bench``.
 
-* scene solutions follow the paper's own route in mpmath at 50 digits: rapidities via
-  ``atanh``, the barycentric velocity ``u = (m1 g1 V1 + m2 g2 V2)/(m1 g1 + m2 g2)``,
-  velocity addition ``(V - u)/(1 - u V)`` into and out of the barycentric frame, Eq.
-  (epsilon) for the restitution (the core uses proper-velocity algebra in ``decimal``);
-* worldlines are the paper's lab formulas, point by point (Eq. (deriv) for constant
-  acceleration with each point's own ``a' = 1/(xi + 1/a'_B)``, Eq. (imp) for impulses,
-  ``t -> -t`` for deceleration, Eqs. (t12)-(imp12) for collisions);
-* a slice at frame time ``t'`` is found by bisection on lab time ``t`` of
-  ``gamma (t - beta x(t)) = t'`` (the core never inverts anything: it evaluates closed
-  forms in the frame).
+This script knows no scene: it takes every scene family's fixed cases (in their ``order``),
+then draws :data:`RANDOM_CASES` more from one seeded stream (each draw picks a kind in
+teaching order and lets that kind draw its parameters), picks the frames (the lab,
+``beta = +-0.999999``, one random frame, each rod's rest frame after and the barycentric
+frame) and sample times, and writes the table. Floats are stored as ``float.hex`` (exact),
+reference values as 30-digit strings. Adding a scene family to the reference package
+changes the random stream, hence the table: regenerate it.
 
-The worldlines, scene solutions and frame slices live in :mod:`app.bench.reference` (also
-the run-time reference of ``rigidrel bench``); this script picks the cases, frames and
-sample times and writes the table. Floats are stored as ``float.hex`` (exact), reference
-values as 30-digit strings.
+Run from the repository root (a few minutes)::
 
-Run from the repository root::
-
-    python -m tests.reference.make_reference      # writes tests/reference/reference.json
+    python -m tests.reference.make_reference                  # writes tests/reference/reference.json
+    python -m tests.reference.make_reference --out /tmp/r.json  # elsewhere, e.g. to compare
 """
 
 from __future__ import annotations
 
+import argparse
 import itertools
 import json
 import random
@@ -34,12 +34,25 @@ from pathlib import Path
 from typing import Any
 
 import mpmath as mp
+from rigidrel_app.bench.reference import (
+    BUILDERS,
+    REFERENCE_DIGITS,
+    REFERENCES,
+    F,
+    Mp,
+    RefScene,
+    boost_event,
+    frame_slice,
+    reference_precision,
+)
 
-from app.bench.reference import BUILDERS, F, Mp, RefScene, boost_event, frame_slice
-
-mp.mp.dps = 50
 OUT = Path(__file__).with_name("reference.json")
 FRACTIONS = (0.0, 0.375, 1.0)
+#: Random cases after the fixed ones, and the seed of the stream they are drawn from.
+RANDOM_CASES = 36
+CASES_SEED = 20261121
+#: The seed of the stream the frames and sample times are drawn from, case after case.
+FRAMES_SEED = 7
 
 
 def s(x: Mp) -> str:
@@ -66,80 +79,18 @@ def sample_times(events_frame: list[Mp], scale: float, rng: random.Random) -> li
 
 # ------------------------------------------------------------------ cases
 def cases() -> list[dict[str, object]]:
-    ca, dec, imp, vc, wall, rod = BUILDERS.keys()
-    fixed: list[tuple[str, dict[str, object]]] = [
-        # the paper's worked examples
-        (ca, {"v": 0.6, "length": 1.0, "a_front": 0.5}),
-        (dec, {"v": 0.6, "length": 1.0, "a_front": 0.5}),
-        (imp, {"v": 0.6, "length": 1.0}),
-        (wall, {"v": 0.6, "length": 1.0, "eps": 0.0}),
-        (wall, {"v": 0.6, "length": 1.0, "eps": 0.5}),
-        (wall, {"v": 0.6, "length": 1.0, "eps": 1.0}),
-        (rod, {"v1": 0.6, "v2": 0.0, "m1": 1.0, "m2": 2.0, "l1": 1.0, "l2": 1.0, "eps": 1.0}),
-        (rod, {"v1": 0.6, "v2": 0.0, "m1": 2.0, "m2": 1.0, "l1": 1.0, "l2": 1.0, "eps": 1.0}),
-        (rod, {"v1": 0.6, "v2": 0.0, "m1": 1.0, "m2": 2.0, "l1": 1.0, "l2": 1.0, "eps": 0.5}),
-        # ultra-relativistic
-        (ca, {"v": 1 - 1e-12, "length": 1.0, "a_front": 0.5}),
-        (ca, {"v": 1 - 1e-9, "length": 2.5, "a_front": 0.1}),
-        (imp, {"v": 1 - 1e-12, "length": 1.0}),
-        (wall, {"v": 1 - 1e-12, "length": 1.0, "eps": 1.0}),
-        (wall, {"v": 1 - 1e-12, "length": 1.0, "eps": 0.3}),
-        (rod, {"v1": 1 - 1e-12, "v2": 0.0, "m1": 1.0, "m2": 1.0, "l1": 1.0, "l2": 1.0, "eps": 1.0}),
-        (rod, {"v1": 0.9, "v2": -(1 - 1e-9), "m1": 1.0, "m2": 3.0, "l1": 1.0, "l2": 0.5, "eps": 0.7}),
-        (rod, {"v1": 1 - 1e-12, "v2": 1 - 1e-9, "m1": 1.0, "m2": 1.0, "l1": 1.0, "l2": 1.0, "eps": 1.0}),
-        # near the horizon, and far from it
-        (ca, {"v": 0.6, "length": 1.0, "a_front": 1 - 1e-6}),
-        (dec, {"v": 0.8, "length": 1.0, "a_front": 1 - 1e-6}),
-        (ca, {"v": 0.6, "length": 1.0, "a_front": 1e-6}),
-        # mass ratios and sizes
-        (rod, {"v1": 0.6, "v2": 0.0, "m1": 1.0, "m2": 1e6, "l1": 1.0, "l2": 1.0, "eps": 1.0}),
-        (rod, {"v1": 0.6, "v2": 0.0, "m1": 1.0, "m2": 1e-6, "l1": 1.0, "l2": 1.0, "eps": 1.0}),
-        (rod, {"v1": 0.5, "v2": -0.5, "m1": 1e6, "m2": 1.0, "l1": 1e-6, "l2": 1e6, "eps": 0.2}),
-        (rod, {"v1": 0.3, "v2": -0.2, "m1": 1.0, "m2": 1.0, "l1": 1e6, "l2": 1e-6, "eps": 0.0}),
-        (ca, {"v": 0.6, "length": 1e-6, "a_front": 2.5e5}),
-        (ca, {"v": 0.6, "length": 1e6, "a_front": 2.5e-7}),
-        (imp, {"v": 0.9, "length": 1e6}),
-        (wall, {"v": 0.4, "length": 1e-6, "eps": 0.6}),
-        # general velocity changes
-        (vc, {"v_initial": 0.3, "v_final": 0.6, "length": 1.0, "a_front": 0.4}),
-        (vc, {"v_initial": 0.6, "v_final": -0.5, "length": 1.0, "a_front": None}),
-        (vc, {"v_initial": -0.999999, "v_final": 0.999999, "length": 1.0, "a_front": 0.9}),
-        (vc, {"v_initial": 0.5, "v_final": 0.0, "length": 2.0, "a_front": 0.25}),
-    ]
-    rng = random.Random(20261121)
-    out = [{"kind": k, "params": p} for k, p in fixed]
-
-    def speed() -> float:
-        return 1.0 - 10.0 ** (-rng.uniform(0.05, 12.0)) if rng.random() < 0.4 else rng.uniform(0.01, 0.99)
-
-    def logu(lo: float, hi: float) -> float:
-        return 10.0 ** rng.uniform(lo, hi)
-
-    for _ in range(36):
-        kind = rng.choice(list(BUILDERS))
-        L = logu(-6, 6)
-        if kind in (ca, dec):
-            p = {"v": speed(), "length": L, "a_front": (1 - 10 ** -rng.uniform(0.01, 6)) / L}
-        elif kind == imp:
-            p = {"v": speed(), "length": L}
-        elif kind == wall:
-            p = {"v": speed(), "length": L, "eps": rng.random()}
-        elif kind == vc:
-            a, b = sorted([rng.uniform(-1, 1) * speed(), rng.uniform(-1, 1) * speed()])
-            if rng.random() < 0.5:
-                a, b = b, a
-            p = {
-                "v_initial": a,
-                "v_final": b,
-                "length": L,
-                "a_front": None if rng.random() < 0.3 else rng.uniform(0.01, 0.999) / L,
-            }
-        else:
-            v1 = rng.uniform(-0.5, 1) * speed()
-            v2 = v1 - rng.uniform(0.01, 1) * (1 + v1)
-            v2 = max(v2, -1 + 1e-12)
-            p = {"v1": v1, "v2": v2, "m1": 1.0, "m2": logu(-6, 6), "l1": L, "l2": L * logu(-2, 2), "eps": rng.random()}
-        out.append({"kind": kind, "params": p})
+    """Every scene family's fixed cases by ``order``, then :data:`RANDOM_CASES` drawn cases."""
+    fixed = sorted((c for r in REFERENCES.values() for c in r.cases), key=lambda c: c.order)
+    orders = [c.order for c in fixed]
+    if len(set(orders)) != len(orders):
+        raise ValueError(f"two reference cases share an order: {orders}")
+    out: list[dict[str, object]] = [{"kind": c.kind, "params": dict(c.params)} for c in fixed]
+    rng = random.Random(CASES_SEED)
+    drawn = [r for r in REFERENCES.values() if r.draw is not None]
+    for _ in range(RANDOM_CASES):
+        ref = rng.choice(drawn)
+        assert ref.draw is not None
+        out.append({"kind": ref.kind, "params": ref.draw(rng)})
     return out
 
 
@@ -154,49 +105,52 @@ def frames_for(ref: RefScene, rng: random.Random) -> list[float]:
 def build_case(case: dict[str, object], rng: random.Random) -> dict[str, object]:
     kind = str(case["kind"])
     params: dict[str, Any] = dict(case["params"])  # type: ignore[arg-type]
-    ref = BUILDERS[kind](FRACTIONS, **params)
-    frames = []
-    for beta_f in frames_for(ref, rng):
-        beta = F(beta_f)
-        ev_frame = {k: boost_event(e, beta) for k, e in ref.events.items()}
-        scale = float(max(ref.lengths_rest))
-        times = sample_times([e[0] for e in ev_frame.values()], scale, rng)
-        exact = [[[frame_slice(w, beta, F(t)) for t in times] for w in rod] for rod in ref.worldlines]
-        frames.append(
-            {
-                "beta": beta_f.hex(),
-                "times": [t.hex() for t in times],
-                "positions": [[[s(x) for x in pt] for pt in rod] for rod in exact],
-                "lengths": [[s(b - a) for a, b in zip(rod[0], rod[-1])] for rod in exact],
-                "events": {k: [s(e[0]), s(e[1])] for k, e in ev_frame.items()},
-            }
-        )
-    return {
-        "kind": kind,
-        "params": {k: (None if v is None else float(v).hex()) for k, v in params.items()},
-        "fractions": [f.hex() for f in FRACTIONS],
-        "final_velocities": [s(v) for v in ref.final_velocities],
-        "final_gaps": [s(1 - abs(v)) for v in ref.final_velocities],
-        "extra": {k: s(v) for k, v in ref.extra.items()},
-        "events_lab": {k: [s(e[0]), s(e[1])] for k, e in ref.events.items()},
-        "frames": frames,
-    }
+    with reference_precision():
+        ref = BUILDERS[kind](FRACTIONS, **params)
+        frames = []
+        for beta_f in frames_for(ref, rng):
+            beta = F(beta_f)
+            ev_frame = {k: boost_event(e, beta) for k, e in ref.events.items()}
+            scale = float(max(ref.lengths_rest))
+            times = sample_times([e[0] for e in ev_frame.values()], scale, rng)
+            exact = [[[frame_slice(w, beta, F(t)) for t in times] for w in rod] for rod in ref.worldlines]
+            frames.append(
+                {
+                    "beta": beta_f.hex(),
+                    "times": [t.hex() for t in times],
+                    "positions": [[[s(x) for x in pt] for pt in rod] for rod in exact],
+                    "lengths": [[s(b - a) for a, b in zip(rod[0], rod[-1])] for rod in exact],
+                    "events": {k: [s(e[0]), s(e[1])] for k, e in ev_frame.items()},
+                }
+            )
+        return {
+            "kind": kind,
+            "params": {k: (None if v is None else float(v).hex()) for k, v in params.items()},
+            "fractions": [f.hex() for f in FRACTIONS],
+            "final_velocities": [s(v) for v in ref.final_velocities],
+            "final_gaps": [s(1 - abs(v)) for v in ref.final_velocities],
+            "extra": {k: s(v) for k, v in ref.extra.items()},
+            "events_lab": {k: [s(e[0]), s(e[1])] for k, e in ref.events.items()},
+            "frames": frames,
+        }
 
 
-def main() -> None:
-    rng = random.Random(7)
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(
+        prog="python -m tests.reference.make_reference", description=(__doc__ or "").splitlines()[0]
+    )
+    parser.add_argument("--out", type=Path, default=OUT, help=f"where to write the table (default: {OUT})")
+    out: Path = parser.parse_args(argv).out
+    rng = random.Random(FRAMES_SEED)
     t0 = time.perf_counter()
-    table = {
-        "generator": "tests/reference/make_reference.py",
-        "mp_dps": mp.mp.dps,
-        "cases": [],
-    }
     all_cases = cases()
+    built = []
     for i, case in enumerate(all_cases):
-        table["cases"].append(build_case(case, rng))  # type: ignore[union-attr]
+        built.append(build_case(case, rng))
         print(f"{i + 1}/{len(all_cases)} {case['kind']} {time.perf_counter() - t0:.1f}s", file=sys.stderr)
-    OUT.write_text(json.dumps(table, indent=None, separators=(",", ":")) + "\n")
-    print(f"wrote {OUT} ({OUT.stat().st_size / 1e6:.2f} MB)", file=sys.stderr)
+    table = {"generator": "tests/reference/make_reference.py", "mp_dps": REFERENCE_DIGITS, "cases": built}
+    out.write_text(json.dumps(table, indent=None, separators=(",", ":")) + "\n")
+    print(f"wrote {out} ({out.stat().st_size / 1e6:.2f} MB)", file=sys.stderr)
 
 
 if __name__ == "__main__":

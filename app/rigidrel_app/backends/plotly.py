@@ -15,6 +15,10 @@ import numpy as np
 
 from ..view.vocabulary import Area, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style
 
+#: The app's plotly config, sent with every figure: no mode bar, resize with the panel.
+APP_CONFIG: dict[str, Any] = {"displayModeBar": False, "responsive": True}
+
+
 def _plotly_line(style: Style) -> dict[str, Any]:
     """Plotly line attributes. ``simplify`` off: plotly would otherwise drop vertices it judges
     collinear (about a pixel), undoing the sampler's chord tolerance and leaving visible corners."""
@@ -137,9 +141,9 @@ def chart_to_plotly(chart: Chart) -> dict[str, Any]:
 class SplicedFigure:
     """A figure whose static part is serialised once; ``with_dynamic`` adds the moving items.
 
-    viser's plotly handle re-sends the whole figure JSON on every assignment (it calls
-    ``figure.to_json()``: the app hands it a :class:`JsonFigure` of ``with_dynamic``'s
-    string), so the diagrams follow playback at 10 Hz without rebuilding plotly objects.
+    viser's plotly handle re-sends the whole figure JSON on every assignment (the app hands it
+    ``with_dynamic``'s string through :func:`rigidrel_app.backends.viser.show_figure_json`), so
+    the diagrams follow playback at 10 Hz without rebuilding plotly objects.
     """
 
     def __init__(self, chart: Chart, config: dict[str, Any] | None = None) -> None:

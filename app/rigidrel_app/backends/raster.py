@@ -13,9 +13,9 @@ from pathlib import Path
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
-from ..draw import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, plain_text, rgb
-from ..drawing import FRAME_Z, LAB_Z, LANE_Z, Drawn, lane_states
-from ..lanes import LaneState
+from ..view.lanes import LaneState
+from ..view.scene_view import FRAME_Z, LAB_Z, LANE_Z, Drawn, lane_states
+from ..view.vocabulary import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, plain_text, rgb
 
 _FONTS = (
     "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",

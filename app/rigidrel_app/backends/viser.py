@@ -11,10 +11,11 @@ from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
+import plotly.graph_objects as go
 import viser
 
-from .draw import FRAME_COLOR, INK, Label, Segments, plain_text, rgb
-from .lanes import Box, LaneState, segments_array
+from ..view.lanes import Box, LaneState, segments_array
+from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, plain_text, rgb
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
 _CUBE_FACES = np.array(
@@ -35,8 +36,8 @@ _CUBE_FACES = np.array(
     dtype=np.uint32,
 )
 ROD_DEPTH = 0.14
-#: Boxes per lane at most: two rods and a wall. Unused instances are shrunk out of sight,
-#: so the batched mesh node is created once per client and never re-added.
+#: Box instances per lane the mesh starts with (two rods and a wall); it grows when a scene has
+#: more. Unused instances are shrunk out of sight, so the node is rarely re-added.
 BOXES_PER_LANE = 3
 _HIDDEN = (0.0, 1e4, 0.0)
 _ANCHOR: dict[str, Literal["center-left", "center-right", "center-center"]] = {
@@ -121,6 +122,7 @@ class LaneRenderer:
         self._scene = scene
         self.lane_z = tuple(lane_z)
         self._boxes: viser.BatchedMeshHandle | None = None
+        self._box_capacity = BOXES_PER_LANE * len(self.lane_z)
         self._box_colors: tuple[str, ...] = ()
         self._box_positions = np.zeros((0, 3), dtype=np.float32)
         self._box_scales = np.zeros((0, 3), dtype=np.float32)
@@ -202,9 +204,12 @@ class LaneRenderer:
             self._dials.batched_positions = positions
 
     def _update_boxes(self, boxes: Sequence[tuple[Box, float]]) -> None:
-        n = BOXES_PER_LANE * len(self.lane_z)
-        if len(boxes) > n:
-            raise ValueError(f"at most {n} boxes")
+        if len(boxes) > self._box_capacity:  # a scene with more bodies: a bigger mesh, once
+            self._box_capacity = len(boxes)
+            if self._boxes is not None:
+                self._boxes.remove()
+                self._boxes = None
+        n = self._box_capacity
         positions = np.tile(np.array(_HIDDEN, dtype=np.float32), (n, 1))
         scales = np.full((n, 3), 1e-6, dtype=np.float32)
         for k, (b, z) in enumerate(boxes):
@@ -237,3 +242,22 @@ class LaneRenderer:
                 self._boxes.batched_colors = colors
         self._box_colors = names
         self._box_positions, self._box_scales = positions, scales
+
+
+class _FigureJson(go.Figure):
+    """A figure that is nothing but its JSON text: viser's plotly handle calls only ``to_json``.
+
+    ``go.Figure.__init__`` is skipped on purpose: it would validate every trace again (tens of
+    milliseconds) for a text the plotly backend has already built.
+    """
+
+    def __init__(self, text: str) -> None:  # pyright: ignore[reportMissingSuperCall]
+        self._rigidrel_json = text
+
+    def to_json(self, *args: object, **kwargs: object) -> str:
+        return self._rigidrel_json
+
+
+def show_figure_json(handle: viser.GuiPlotlyHandle, text: str) -> None:
+    """Send a plotly figure's JSON (``{"data": ..., "layout": ..., "config": ...}``) to a plotly panel."""
+    handle.figure = _FigureJson(text)

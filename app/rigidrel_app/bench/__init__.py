@@ -1,1 +1,1 @@
-"""Speed against accuracy: every method of computing the scenes, measured in one run (issue 5)."""
+"""Speed against accuracy: every method of computing the scenes, measured in one run."""

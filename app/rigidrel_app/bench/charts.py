@@ -8,7 +8,7 @@ from collections.abc import Sequence
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
-from app.sampling import TOLERANCE_PX
+from rigidrel_app.view.sampling import TOLERANCE_PX
 
 from .methods.mpmath_slices import ROUNDING_LEVEL
 from .runner import RegimeRow, ThroughputPoint

@@ -1,4 +1,4 @@
-"""Entry point of ``rigidrel bench [--quick] --out DIR``: speed against accuracy of every method (issue 5).
+"""Entry point of ``rigidrel bench [--quick] --out DIR``: speed against accuracy of every method.
 
 Writes into ``DIR``:
 
@@ -27,8 +27,8 @@ from typing import Any
 
 import plotly.graph_objects as go
 
-from app.cli import out_dir
-from app.sampling import TOLERANCE_PX
+from rigidrel_app.export.paths import out_dir
+from rigidrel_app.view.sampling import TOLERANCE_PX
 
 from .charts import sampling_figure, speed_accuracy_figure, stability_figure, throughput_figure
 from .config import FULL, QUICK, BenchConfig
@@ -86,7 +86,7 @@ def _environment() -> dict[str, Any]:
 
 
 #: Errors within this factor of each other count as equal (and so do all errors at float64's
-#: rounding level, :data:`~app.bench.methods.mpmath_slices.ROUNDING_LEVEL`).
+#: rounding level, :data:`~rigidrel_app.bench.methods.mpmath_slices.ROUNDING_LEVEL`).
 EQUAL_ERROR_FACTOR = 10.0
 
 

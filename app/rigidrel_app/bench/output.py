@@ -2,7 +2,7 @@
 
 The HTML files load plotly.js from its CDN (``include_plotlyjs="cdn"``): each is then a
 few hundred kB instead of 4.7 MB. The PNGs are the offline copies, drawn by the same system
-Chromium as the exports' (:mod:`app.export.images`); nothing is downloaded.
+Chromium as the exports' (:mod:`rigidrel_app.export.images`); nothing is downloaded.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from typing import Any
 
 import plotly.graph_objects as go
 
-from app.export.images import ImageWriter, start_kaleido, stop_kaleido
+from rigidrel_app.export.images import ImageWriter, start_kaleido, stop_kaleido
 
 #: Deadline for the browser's first figure (it starts in about 3 s on an idle machine).
 STARTUP_SECONDS = 90.0
@@ -56,7 +56,7 @@ class ChromiumUnavailable(RuntimeError):
 
 
 class ChartImages:
-    """The run's PNGs through the exports' writer (:class:`app.export.images.ImageWriter`, one kaleido
+    """The run's PNGs through the exports' writer (:class:`rigidrel_app.export.images.ImageWriter`, one kaleido
     server for the whole run), plus what a bench run needs on top: a deadline for the browser's first
     figure, the first failure kept rather than raised (the JSON and HTML are written regardless), and
     render timing. Use as a context manager."""

@@ -5,14 +5,14 @@ start from: every rod end's lab worldline, as three pieces,
 
 * ``t <= t_start``: inertial, ``x = x_start + v_before (t - t_start)``;
 * ``t_start <= t <= t_stop``: accelerated, by the formula the paper prints for it:
-  Eq. (deriv) ``x = xi + (sqrt(1 + a'^2 t^2) - 1)/a'`` for constant acceleration from rest
-  at ``t = 0`` (``a'_F`` given, ``a'_B = a'_F / (1 - a'_F L0)``, Eq. (gl)), or Eqs. (imp),
-  (imp12) ``x = side sqrt(L^2 + t^2)`` for the far end of a kicked rod;
+  Eq. (4) ``x = xi + (sqrt(1 + a'^2 t^2) - 1)/a'`` for constant acceleration from rest
+  at ``t = 0`` (Sec. 3; ``a'_F`` given, ``a'_B = a'_F / (1 - a'_F L0)``, Eq. (15)), or Eqs. (20),
+  (23) ``x = side sqrt(L^2 + t^2)`` for the far end of a kicked rod (Secs. 4-5);
 * ``t >= t_stop``: inertial, ``x = x_stop + v_after (t - t_stop)``.
 
-Switch times from Eqs. (tlt), (tf), (t12), (t'12); Lorentz factors ``gamma = 1/sqrt(1 - V^2)``;
-collision velocities by the route of Sec. 6 (barycentric ``u``, velocity addition, Eq.
-(epsilon), Eq. (vp)), all in float64 exactly as a reader would type them.
+Switch times from Eqs. (9), (21), (22), (25); Lorentz factors ``gamma = 1/sqrt(1 - V^2)``;
+collision velocities by the route of Sec. 6 (barycentric ``u``, Eq. (26), velocity addition,
+Eq. (29), Eq. (31)), all in float64 exactly as a reader would type them.
 """
 
 from __future__ import annotations
@@ -24,12 +24,11 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
-from rigidrel_core import SceneKind
-
 from .scenes import BenchScene
 
 FloatArray = npt.NDArray[np.float64]
-#: Which printed formula the accelerated piece uses ("kick": none, the velocity jumps).
+#: Which printed formula the accelerated piece uses: "deriv" Eq. (4), "imp" Eqs. (20), (23), "kick" none
+#: (the velocity jumps).
 PieceForm = Literal["kick", "deriv", "imp"]
 
 
@@ -47,7 +46,7 @@ def inertial_slice(x0: float, t0: float, v: float, beta: float, gamma: float, t_
 
 def textbook_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> tuple[float, float]:
     """Sec. 6 as printed: ``u = (M1 g1 V1 + M2 g2 V2)/(M1 g1 + M2 g2)``, ``bar V = (V - u)/(1 - u V)``,
-    ``bar g' bar V' = -eps bar g bar V`` (Eq. (epsilon)), ``V' = (u + bar V')/(1 + u bar V')`` (Eq. (vp))."""
+    ``bar g' bar V' = -eps bar g bar V`` (Eq. (29)), ``V' = (u + bar V')/(1 + u bar V')`` (Eq. (31))."""
     g1, g2 = textbook_gamma(v1), textbook_gamma(v2)
     u = (m1 * g1 * v1 + m2 * g2 * v2) / (m1 * g1 + m2 * g2)
     out = []
@@ -71,11 +70,11 @@ class PaperEnd:
     v_before: float
     v_after: float
     accel: float = 0.0
-    """Proper acceleration ``a'`` of the accelerated piece (``1/L`` for Eq. (imp)); 0 for a kick."""
+    """Proper acceleration ``a'`` of the accelerated piece (``1/L`` for Eq. (20)); 0 for a kick."""
     side: float = 1.0
     """+1 if the velocity increases, -1 if it decreases."""
     xi: float = 0.0
-    """Eq. (deriv): the rest position before the push."""
+    """Eq. (4): the rest position before the push."""
 
     @property
     def radius(self) -> float:
@@ -84,7 +83,7 @@ class PaperEnd:
 
     @property
     def centre(self) -> float:
-        """Lab x of the hyperbola's centre at ``t = 0``: ``xi - 1/a'`` (Eq. (deriv)) or 0 (Eq. (imp))."""
+        """Lab x of the hyperbola's centre at ``t = 0``: ``xi - 1/a'`` (Eq. (4)) or 0 (Eq. (20))."""
         return self.xi - 1.0 / self.accel if self.form == "deriv" else 0.0
 
     def accelerated_x(self, t: FloatArray) -> FloatArray:
@@ -97,8 +96,8 @@ class PaperEnd:
 
 
 def _deriv_end(xi: float, a: float, v: float) -> PaperEnd:
-    """Eq. (deriv) from rest at ``xi`` until speed ``v``, reached at ``T = gamma v / a'`` (Eq. (tlt))
-    and ``X = xi + (gamma - 1)/a'`` (Eq. (xlt))."""
+    """Eq. (4) from rest at ``xi`` until speed ``v``, reached at ``T = gamma v / a'`` (Eq. (9))
+    and ``X = xi + (gamma - 1)/a'`` (Eq. (8))."""
     g = textbook_gamma(v)
     return PaperEnd("deriv", 0.0, g * v / a, xi, xi + (g - 1.0) / a, 0.0, v, accel=a, side=1.0, xi=xi)
 
@@ -109,8 +108,8 @@ def _kick_end(v_before: float, v_after: float) -> PaperEnd:
 
 
 def _far_end(length: float, side: float, v_before: float, v_after: float) -> PaperEnd:
-    """Eq. (imp12) ``x = side sqrt(L^2 + t^2)`` from ``T = side gamma V L`` to ``T' = side gamma' V' L``
-    (Eqs. (t12), (t'12)); ``x = side gamma L`` at either end."""
+    """Eq. (23) ``x = side sqrt(L^2 + t^2)`` from ``T = side gamma V L`` to ``T' = side gamma' V' L``
+    (Eqs. (22), (25)); ``x = side gamma L`` at either end."""
     g0, g1 = textbook_gamma(v_before), textbook_gamma(v_after)
     return PaperEnd(
         "imp",
@@ -128,11 +127,11 @@ def _far_end(length: float, side: float, v_before: float, v_after: float) -> Pap
 def paper_ends(scene: BenchScene) -> tuple[tuple[PaperEnd, PaperEnd], ...]:
     """``((left, right), ...)`` for each rod of the scene, in float64 textbook formulas."""
     p = scene.params
-    if scene.kind is SceneKind.CONSTANT_ACCELERATION:
+    if scene.kind == "constant-acceleration":
         v, length, a_front = p["v"], p["length"], p["a_front"]
-        a_back = a_front / (1.0 - a_front * length)  # Eq. (gl)
+        a_back = a_front / (1.0 - a_front * length)  # Eq. (15)
         return ((_deriv_end(0.0, a_back, v), _deriv_end(length, a_front, v)),)
-    if scene.kind is SceneKind.IMPULSIVE_START:
+    if scene.kind == "impulsive-start":
         v, length = p["v"], p["length"]
         return ((_kick_end(0.0, v), _far_end(length, 1.0, 0.0, v)),)
     v1, v2 = p["v1"], p["v2"]

@@ -1,14 +1,15 @@
 """Model no more than a panel shows: fixed-N against adaptive sampling of the app's diagrams.
 
 The app draws each curve (worldlines of five material points per rod in two Minkowski
-diagrams, each rod's equal-time length) with :mod:`app.sampling`: samples start at the
+diagrams, each rod's equal-time length) with :mod:`rigidrel_app.view.sampling`: samples start at the
 core's switch times and an interval is halved only while its midpoint leaves the chord
 by more than half a pixel at the panel's size, over the visible time window only. The
 alternative is a fixed number ``N`` of equally spaced times per curve.
 
 For a few of the app's scenes this module rebuilds the whole drawing
-(:func:`app.drawing.build_drawing`, what every slider change costs on the server) once with
-the app's sampler and once with a fixed-``N`` :class:`~app.sampling.Sampler` passed in, and records
+(:func:`rigidrel_app.view.scene_view.build_drawing`, what every slider change costs on the
+server) once with the app's sampler and once with a fixed-``N``
+:class:`~rigidrel_app.view.sampling.Sampler` passed in, and records
 
 * points used: all samples of all curves of the drawing;
 * max deviation: the largest horizontal (worldlines) or vertical (lengths) distance, in
@@ -30,10 +31,11 @@ import numpy as np
 import numpy.typing as npt
 
 import rigidrel_core as rr
-from app.drawing import LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX, Drawn, build_drawing
-from app.sampling import ADAPTIVE, TOLERANCE_PX, Sampled, Sampler
-from app.settings import PRESETS, Preset, Resolved, Settings, resolve
-from rigidrel_core import SceneKind
+
+from ..backends.plotly import APP_CONFIG, SplicedFigure
+from ..view.sampling import ADAPTIVE, TOLERANCE_PX, Sampled, Sampler
+from ..view.scene_view import LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX, Drawn, build_drawing
+from ..view.state import Resolved, Settings, presets, resolve
 
 FloatArray = npt.NDArray[np.float64]
 SamplerKind = Literal["adaptive", "fixed"]
@@ -51,10 +53,14 @@ class StudyScene:
 
 
 STUDY_SCENES: tuple[StudyScene, ...] = (
-    StudyScene("Fig. 1, rod's final rest frame", "Fig. 1", PRESETS[Preset.FIG1]),
-    StudyScene("Fig. 3, barycentric frame", "Fig. 3", PRESETS[Preset.FIG3]),
-    StudyScene("impulsive start to V = 0.99", "impulse V=0.99", Settings(SceneKind.IMPULSIVE_START, v=0.99)),
-    StudyScene("V = 0.9, a'_F L0 = 0.99 (near the horizon)", "a'_F L0=0.99", Settings(v=0.9, a_front_length=0.99)),
+    StudyScene("Fig. 1, rod's final rest frame", "Fig. 1", presets()["Fig. 1: acceleration to V = 0.6"]),
+    StudyScene("Fig. 3, barycentric frame", "Fig. 3", presets()["Fig. 3: collision, M2 = 2 M1"]),
+    StudyScene("impulsive start to V = 0.99", "impulse V=0.99", Settings.of("impulsive-start", v=0.99)),
+    StudyScene(
+        "V = 0.9, a'_F L0 = 0.99 (near the horizon)",
+        "a'_F L0=0.99",
+        Settings.of("constant-acceleration", v=0.9, a_front=0.99),
+    ),
 )
 
 
@@ -128,7 +134,7 @@ def _sampler(kind: SamplerKind, n: int) -> Sampler:
 
 
 def _worldline_exact(scene: rr.Scene, frame: rr.Frame, fraction: float, rod: int) -> Callable[[FloatArray], FloatArray]:
-    return lambda t: scene.material_positions(np.array([fraction]), t, frame)[rod, 0]
+    return lambda t: scene.material_positions(t, frame, fractions=np.array([fraction]))[rod, 0]
 
 
 def _length_exact(scene: rr.Scene, frame: rr.Frame, rod: int) -> Callable[[FloatArray], FloatArray]:
@@ -152,11 +158,8 @@ Sent = tuple[tuple[str, float], ...]
 
 
 def _sent(d: Drawn) -> Sent:
-    return (
-        (d.lab_chart.to_json(), PLOT_ASPECT),
-        (d.frame_chart.to_json(), PLOT_ASPECT),
-        (d.length_chart.to_json(), LENGTH_ASPECT),
-    )
+    aspects = (PLOT_ASPECT, PLOT_ASPECT, LENGTH_ASPECT)
+    return tuple((SplicedFigure(chart, APP_CONFIG).to_json(), a) for chart, a in zip(d.charts, aspects, strict=True))
 
 
 def measure(resolved: Resolved, kind: SamplerKind, n: int, repeats: int) -> tuple[SamplingPoint, Sent]:

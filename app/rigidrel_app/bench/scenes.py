@@ -1,4 +1,4 @@
-"""What is measured: scenes, frames, sample times and the regimes they stand for (issue 5).
+"""What is measured: scenes, frames, sample times and the regimes they stand for.
 
 Units c = 1; lengths in units of the rod's rest length ``L0`` unless a scene says otherwise.
 A frame of velocity ``beta`` has ``t' = gamma (t - beta x)``, ``x' = gamma (x - beta t)``.
@@ -6,7 +6,7 @@ A frame of velocity ``beta`` has ``t' = gamma (t - beta x)``, ``x' = gamma (x - 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Literal
 
@@ -14,12 +14,12 @@ import numpy as np
 import numpy.typing as npt
 
 import rigidrel_core as rr
-from rigidrel_core import SceneKind
 
 FloatArray = npt.NDArray[np.float64]
 
-#: Scene kinds every method of the bench implements.
-BenchKind = Literal[SceneKind.CONSTANT_ACCELERATION, SceneKind.IMPULSIVE_START, SceneKind.ROD_COLLISION]
+#: Scene kinds (the core's names) every method of the bench implements: the textbook, solve_ivp
+#: and polyline methods type in the paper's formulas for these three only.
+BenchKind = Literal["constant-acceleration", "impulsive-start", "rod-collision"]
 #: How a case's frame times are spread: over the frame's event window, or out to 1e6 lengths.
 TimeSpread = Literal["window", "long"]
 
@@ -28,7 +28,7 @@ LONG_TIME_LENGTHS = 1e6
 
 
 class Regime(StrEnum):
-    """The regimes of issue 5."""
+    """The regimes the bench measures, each where some method loses digits."""
 
     ORDINARY = "ordinary"
     ULTRA_RELATIVISTIC = "ultra-relativistic"
@@ -45,43 +45,38 @@ class BenchScene:
     label: str
     kind: BenchKind
     parameters: tuple[tuple[str, float], ...]
+    rest_lengths: tuple[float, ...] = field(init=False, compare=False)
+    """Each rod's rest length, from the core's scene built once here (so no method's timing pays for it,
+    and bad parameters fail when the bench scene is made)."""
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "rest_lengths", tuple(rod.motion.length for rod in self.core().rods))
 
     @property
     def params(self) -> dict[str, float]:
         return dict(self.parameters)
 
-    def rest_lengths(self) -> tuple[float, ...]:
-        p = self.params
-        if self.kind is SceneKind.ROD_COLLISION:
-            return (p["l1"], p["l2"])
-        return (p["length"],)
-
     def core(self) -> rr.Scene:
-        """The core's scene (solved in 60-digit decimal, sampled in float64)."""
-        p = self.params
-        if self.kind is SceneKind.CONSTANT_ACCELERATION:
-            return rr.constant_acceleration(p["v"], p["length"], p["a_front"])
-        if self.kind is SceneKind.IMPULSIVE_START:
-            return rr.impulsive_start(p["v"], p["length"])
-        return rr.rod_collision(p["v1"], p["v2"], p["m1"], p["m2"], p["l1"], p["l2"], p["eps"])
+        """The core's scene (solved in 60-digit decimal, sampled in float64), built afresh each call."""
+        return rr.build_scene(self.kind, **self.params)
 
 
 def constant_acceleration(label: str, v: float, length: float, a_front: float) -> BenchScene:
-    """Paper Sec. 3: from rest to ``v``, front-end proper acceleration ``a'_F = a_front`` (Eq. (gl))."""
-    return BenchScene(label, SceneKind.CONSTANT_ACCELERATION, (("v", v), ("length", length), ("a_front", a_front)))
+    """Paper Sec. 3: from rest to ``v``, front-end proper acceleration ``a'_F = a_front`` (Eq. (15))."""
+    return BenchScene(label, "constant-acceleration", (("v", v), ("length", length), ("a_front", a_front)))
 
 
 def impulsive_start(label: str, v: float, length: float) -> BenchScene:
-    """Paper Sec. 4: the back end jumps to ``v``; the front follows Eq. (imp)."""
-    return BenchScene(label, SceneKind.IMPULSIVE_START, (("v", v), ("length", length)))
+    """Paper Sec. 4: the back end jumps to ``v``; the front follows Eq. (20)."""
+    return BenchScene(label, "impulsive-start", (("v", v), ("length", length)))
 
 
 def rod_collision(
     label: str, v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float
 ) -> BenchScene:
-    """Paper Secs. 5-6: rod 1 (left) at ``v1`` hits rod 2 at ``v2``; restitution ``eps`` (Eq. (epsilon))."""
+    """Paper Secs. 5-6: rod 1 (left) at ``v1`` hits rod 2 at ``v2``; restitution ``eps`` (Eq. (29))."""
     names = ("v1", "v2", "m1", "m2", "l1", "l2", "eps")
-    return BenchScene(label, SceneKind.ROD_COLLISION, tuple(zip(names, (v1, v2, m1, m2, l1, l2, eps))))
+    return BenchScene(label, "rod-collision", tuple(zip(names, (v1, v2, m1, m2, l1, l2, eps))))
 
 
 FIG1 = constant_acceleration("Fig. 1: acceleration to V = 0.6, a'_F L0 = 1/2", 0.6, 1.0, 0.5)
@@ -106,9 +101,15 @@ class BenchCase:
     scene: BenchScene
     frame_velocity: float
     frame_name: str
+    """The frame's velocity (c = 1), as the methods that take floats get it."""
     spread: TimeSpread = "window"
     quick: bool = False
     """Part of ``rigidrel bench --quick``."""
+
+    @property
+    def frame(self) -> rr.Frame:
+        """The frame as the core takes it: ``rr.Frame.from_velocity(frame_velocity)``."""
+        return rr.Frame.from_velocity(self.frame_velocity)
 
     @property
     def label(self) -> str:
@@ -148,15 +149,16 @@ def sample_times(case: BenchCase, n: int) -> FloatArray:
     (``"window"``), or geometrically spaced out to +-1e6 rest lengths (``"long"``).
 
     The core only chooses *where* to look (its event times and window); the values there
-    come from each method, and the reference from :mod:`app.bench.reference`.
+    come from each method, and the reference from :mod:`rigidrel_app.bench.reference`.
     """
     scene = case.scene.core()
-    t0, t1 = scene.time_window(case.frame_velocity)
-    events = np.array([t for t, _ in scene.events_in(case.frame_velocity).values()])
+    frame = case.frame
+    t0, t1 = scene.time_window(frame)
+    events = np.array([t for t, _ in scene.events_in(frame).values()])
     if case.spread == "window":
         grid = np.linspace(t0, t1, max(n - events.size, 2))
     else:
-        reach = LONG_TIME_LENGTHS * max(case.scene.rest_lengths())
+        reach = LONG_TIME_LENGTHS * max(case.scene.rest_lengths)
         near = max(abs(t0), abs(t1))
         half = max((n - events.size) // 2, 1)
         far = np.geomspace(near, reach, half)

@@ -6,17 +6,15 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import rigidrel_core as rr
 
-from ..diagrams import frame_title
-from ..drawing import build_drawing
-from ..notebook import diagram
-from ..settings import SCENE_LABELS, Resolved, settings_for
+from ..backends.raster import write_gif, write_mp4
+from ..view.scene_view import build_drawing
+from ..view.state import Resolved, settings_for
+from .diagram import slide_diagram
 from .diagram_html import diagram_html
 from .images import image_writer
-from .raster import write_gif, write_mp4
 from .recording import playback_times, record_lanes_html
 
 
@@ -42,7 +40,7 @@ def export_scene(
 ) -> list[Written]:
     """Write the 3-D HTML, the slider HTML, PNG and SVG of the diagram, a GIF and (with ffmpeg) an MP4."""
     out.mkdir(parents=True, exist_ok=True)
-    stem = scene.kind.value
+    stem = scene.kind
     drawn = build_drawing(Resolved(scene, frame, None))
     written: list[Written] = []
 
@@ -53,11 +51,10 @@ def export_scene(
             written.append(Written(path, time.perf_counter() - t0))
 
     timed(out / f"{stem}-3d.html", lambda p: p.write_text(record_lanes_html(drawn, seconds, fps), encoding="utf-8"))
-    if scene.kind in SCENE_LABELS:  # the scenes the app (and so the slider page) offers
-        timed(
-            out / f"{stem}-diagram.html",
-            lambda p: p.write_text(diagram_html(settings_for(scene, frame)), encoding="utf-8"),
-        )
+    timed(
+        out / f"{stem}-diagram.html",
+        lambda p: p.write_text(diagram_html(settings_for(scene, frame)), encoding="utf-8"),
+    )
     fig = slide_diagram(scene, frame)
     with image_writer() as writer:
         timed(out / f"{stem}-diagram.png", lambda p: writer.write(fig, p, 760, 640, scale=2.0))
@@ -68,10 +65,3 @@ def export_scene(
     )
     timed(out / f"{stem}-lanes.mp4", lambda p: write_mp4(drawn, p, playback_times(drawn, seconds, fps), fps, width))
     return written
-
-
-def slide_diagram(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
-    """The Minkowski diagram in ``frame`` with a title, for slides (PNG/SVG)."""
-    fig = diagram(scene, frame, size=(760, 640)).to_dict()
-    fig["layout"]["title"] = {"text": f"{scene.kind.value}: Minkowski diagram, {frame_title(frame)} frame", "x": 0.02}
-    return fig

@@ -1,77 +1,105 @@
 """A standalone page with the Minkowski diagram and the length plot, explorable without a server.
 
-Two plotly sliders pick precomputed parameter values (slider A: V or V1; slider B: the
-frame's velocity, epsilon, or the mass ratio, by scene); every combination is a plotly
-animation frame computed by the core. A few lines of client-side script combine the two
-sliders into a frame name, and the play button sweeps slider A. plotly.js is inlined:
-the page works offline.
+Two plotly sliders pick precomputed parameter values, generated from the scene's
+description: slider A is the scene's first slider parameter (V, V1, ...), slider B its
+second one, or the frame's velocity for a scene with one slider. Every combination is a
+plotly animation frame computed by the core. A few lines of client-side script combine
+the two sliders into a frame name, and the play button sweeps slider A. plotly.js is
+inlined: the page works offline.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import Any
 
-import numpy as np
-import numpy.typing as npt
 import plotly.io as pio
 
 import rigidrel_core as rr
-from rigidrel_core import SceneKind
 
-from ..diagrams import frame_title, length_static, minkowski_in_frame
-from ..draw import Label, item_to_traces, jsonable, label_to_annotation
-from ..settings import CUSTOM_FRAME, SCENE_LABELS, Resolved, Settings, resolve
+from ..backends.plotly import item_to_traces, jsonable, label_to_annotation
+from ..view.diagrams import frame_title, length_static, minkowski_in_frame
+from ..view.state import CUSTOM_FRAME, Resolved, Settings, resolve
+from ..view.vocabulary import Label
 
 #: Pixel size of the page's plot areas (the diagram and the length plot side by side).
 DIAGRAM_PX = (560.0, 520.0)
 LENGTH_PX = (420.0, 300.0)
+#: The frame velocities of slider B for a scene with a single slider parameter.
+FRAME_BETAS = (-0.8, -0.5, 0.0, 0.5, 0.8)
 
 
 @dataclass(frozen=True)
 class SliderAxis:
-    """One page slider: which field of :class:`Settings` it sets, to which values."""
+    """One page slider: the scene parameter it sets (``None``: the custom frame's velocity), and its values."""
 
     name: str
-    field: str
+    parameter: str | None
     values: tuple[float, ...]
     fmt: Callable[[float], str]
 
     def apply(self, s: Settings, value: float) -> Settings:
         """``s`` with this slider at ``value`` (the frame slider also selects the custom frame)."""
-        extra = {"frame": CUSTOM_FRAME} if self.field == "beta" else {}
-        return replace(s, **{self.field: value}, **extra)
+        if self.parameter is None:
+            return replace(s, frame=CUSTOM_FRAME, beta=value)
+        return s.with_value(self.parameter, value)
+
+    def own(self, s: Settings) -> float | None:
+        v = s.beta if self.parameter is None else s.value(self.parameter)
+        return None if v is None else round(float(v), 4)
 
     def index(self, s: Settings) -> int:
         """Where the settings' own value sits among the slider's values."""
-        return self.values.index(round(float(getattr(s, self.field)), 4))
+        own = self.own(s)
+        return self.values.index(own) if own in self.values else 0
 
 
-def _axis(name: str, field: str, values: npt.ArrayLike, s: Settings, fmt: Callable[[float], str]) -> SliderAxis:
-    """A slider over ``values`` and the settings' own value of ``field`` (rounded to 4 digits)."""
-    own = round(float(getattr(s, field)), 4)
-    steps = {round(v, 4) for v in np.asarray(values, dtype=np.float64).ravel().tolist()}
-    return SliderAxis(name, field, tuple(sorted(steps | {own})), fmt)
+def page_values(slider: rr.Slider) -> tuple[float, ...]:
+    """Round values across a slider's range: 5 to 11 steps of 1, 2 or 5 times a power of ten
+    (linear), or 1 and 3 per decade (log)."""
+    if slider.scale == "log":
+        lo, hi = math.floor(math.log10(slider.lo)), math.ceil(math.log10(slider.hi))
+        grid = [m * 10.0**k for k in range(lo, hi + 1) for m in (1.0, 3.0)]
+        return tuple(round(v, 6) for v in grid if slider.lo <= v <= slider.hi)
+    span = slider.hi - slider.lo
+    for step in (m * 10.0**k for k in range(-3, 4) for m in (1.0, 2.0, 5.0)):
+        first = math.ceil(slider.lo / step - 1e-9)
+        last = math.floor(slider.hi / step + 1e-9)
+        if last - first <= 10 and step >= span / 12:
+            return tuple(round(k * step, 6) for k in range(first, last + 1))
+    return (slider.lo, slider.hi)
+
+
+def _axis(
+    name: str, parameter: str | None, values: tuple[float, ...], s: Settings, fmt: Callable[[float], str]
+) -> SliderAxis:
+    axis = SliderAxis(name, parameter, (), fmt)
+    own = axis.own(s)
+    steps = {round(v, 4) for v in values} | ({own} if own is not None else set())
+    return SliderAxis(name, parameter, tuple(sorted(steps)), fmt)
 
 
 def slider_axes(s: Settings) -> tuple[SliderAxis, SliderAxis]:
-    """What the two sliders vary for this scene, around the settings' own values."""
-    if s.scene is SceneKind.ROD_COLLISION:
-        a = _axis("V1", "v", np.linspace(max(0.05, s.v2 + 0.05), 0.95, 9), s, "{:.2f}".format)
-        ratios = np.log10([0.25, 0.5, 1.0, 2.0, 4.0])
-        return a, _axis("M2/M1", "log_mass_ratio", ratios, s, lambda v: f"{10**v:.3g}")
-    a = _axis("V", "v", np.linspace(0.1, 0.9, 9), s, "{:.2f}".format)
-    if s.scene is SceneKind.WALL_COLLISION:
-        return a, _axis("ε", "eps", np.linspace(0.0, 1.0, 5), s, "{:.2f}".format)
-    return a, _axis("frame β", "beta", (-0.8, -0.5, 0.0, 0.5, 0.8), s, "{:+.2f}".format)
+    """What the two sliders vary for this scene (its first two slider parameters, or the first and the
+    frame's velocity), around the settings' own values."""
+    params = [p for p in s.description.parameters if p.slider is not None and s.value(p.name) is not None]
+    axes: list[SliderAxis] = []
+    for p in params[:2]:
+        assert p.slider is not None
+        fmt = (lambda v: f"{v:.3g}") if p.slider.scale == "log" else (lambda v: f"{v:.2f}")
+        axes.append(_axis(p.label, p.name, page_values(p.slider), s, fmt))
+    if len(axes) < 2:
+        axes.append(_axis("frame β", None, FRAME_BETAS, s, lambda v: f"{v:+.2f}"))
+    return axes[0], axes[1]
 
 
 def _panels(r: Resolved) -> tuple[list[dict[str, Any]], list[dict[str, Any]], dict[str, Any]]:
     """Traces, annotations and axis ranges of the diagram (in the resolved frame) and the length plot."""
     scene, frame = r.scene, r.frame
     diagram = minkowski_in_frame(scene, frame, DIAGRAM_PX, r.overlay)
-    lengths = length_static(scene, rr.Frame.lab(), frame, scene.time_window(frame), LENGTH_PX)
+    lengths = length_static(scene, rr.LAB, frame, scene.time_window(frame), LENGTH_PX)
     traces: list[dict[str, Any]] = []
     annotations: list[dict[str, Any]] = []
     for chart, xa, ya in ((diagram, "x", "y"), (lengths, "x2", "y2")):
@@ -85,7 +113,7 @@ def _panels(r: Resolved) -> tuple[list[dict[str, Any]], list[dict[str, Any]], di
         "yaxis.range": list(diagram.y_range),
         "xaxis2.range": list(lengths.x_range),
         "yaxis2.range": list(lengths.y_range),
-        "title": f"{SCENE_LABELS[scene.kind]} — Minkowski diagram in the {frame_title(frame)} frame",
+        "title": f"{rr.describe(scene).title} — Minkowski diagram in the {frame_title(frame)} frame",
     }
     return traces, annotations, ranges
 
@@ -93,18 +121,22 @@ def _panels(r: Resolved) -> tuple[list[dict[str, Any]], list[dict[str, Any]], di
 def diagram_figure(settings: Settings) -> dict[str, Any]:
     """The plotly figure (dict) with its frames, sliders and play button."""
     a, b = slider_axes(settings)
-    frames: list[dict[str, Any]] = []
-    max_traces = 0
-    built: dict[str, tuple[list[dict[str, Any]], list[dict[str, Any]], dict[str, Any]]] = {}
-    for i, va in enumerate(a.values):
-        for j, vb in enumerate(b.values):
-            r = resolve(b.apply(a.apply(settings, va), vb))
-            if isinstance(r, str):
-                continue
-            built[f"{i}_{j}"] = _panels(r)
-            max_traces = max(max_traces, len(built[f"{i}_{j}"][0]))
-    if not built:
+    valid = {
+        (va, vb): r
+        for va in a.values
+        for vb in b.values
+        if not isinstance(r := resolve(b.apply(a.apply(settings, va), vb)), str)
+    }
+    if not valid:
         raise rr.ParameterError("parameters", "such that at least one slider combination is a valid scene", settings)
+    # a slider step that shows no valid scene for any value of the other slider is left out
+    a = replace(a, values=tuple(va for va in a.values if any(k[0] == va for k in valid)))
+    b = replace(b, values=tuple(vb for vb in b.values if any(k[1] == vb for k in valid)))
+    frames: list[dict[str, Any]] = []
+    built: dict[str, tuple[list[dict[str, Any]], list[dict[str, Any]], dict[str, Any]]] = {}
+    for (va, vb), r in valid.items():
+        built[f"{a.values.index(va)}_{b.values.index(vb)}"] = _panels(r)
+    max_traces = max(len(p[0]) for p in built.values())
     # start where the settings are (both sliders' value lists contain them)
     start = f"{a.index(settings)}_{b.index(settings)}"
     if start not in built:

@@ -16,9 +16,10 @@ import numpy as np
 import rigidrel_core as rr
 from rigidrel_core import examples
 
-from .diagrams import equal_scale_ranges, window_x_range
-from .draw import Anchor, Area, Chart, Dash, Item, Label, Points, Polyline, Style, chart_to_plotly, event_label
-from .sampling import sample_lengths, sample_worldlines
+from ..backends.plotly import chart_to_plotly
+from ..view.diagrams import equal_scale_ranges, window_x_range
+from ..view.sampling import sample_lengths, sample_worldlines
+from ..view.vocabulary import Anchor, Area, Chart, Dash, Item, Label, Points, Polyline, Style, event_label
 
 #: Export size of every figure (CSS pixels; PNGs are written at twice this).
 FIGURE_SIZE = (640, 560)
@@ -63,7 +64,7 @@ def _tube(
     shade: bool = True,
     colors: tuple[str, ...] = (_BLACK, _GREY),
 ) -> list[Item]:
-    lab = rr.Frame.lab()
+    lab = rr.LAB
     px_per_x = _PNG_SCALE * _PLOT_AREA[0] / (x_range[1] - x_range[0])
     lines = sample_worldlines(scene, lab, np.array([0.0, 1.0]), t_range, px_per_x, FIGURE_TOLERANCE_PX)
     items: list[Item] = []
@@ -95,7 +96,7 @@ def _events(scene: rr.Scene, names: tuple[str, ...], side: dict[str, Anchor] | N
 
 
 def _ranges(scene: rr.Scene, t_range: tuple[float, float]) -> tuple[tuple[float, float], tuple[float, float]]:
-    return equal_scale_ranges(window_x_range(scene, (rr.Frame.lab(),), t_range), t_range, _PLOT_AREA)
+    return equal_scale_ranges(window_x_range(scene, (rr.LAB,), t_range), t_range, _PLOT_AREA)
 
 
 def figure1() -> PaperFigure:
@@ -120,7 +121,7 @@ def figure2() -> PaperFigure:
     t_range = (0.0, 2.2)
     y_range = (0.75, 1.02)
     px_per_length = _PNG_SCALE * _PLOT_AREA[1] / (y_range[1] - y_range[0])
-    curve = sample_lengths(scene, rr.Frame.lab(), t_range, px_per_length, FIGURE_TOLERANCE_PX)[0]
+    curve = sample_lengths(scene, rr.LAB, t_range, px_per_length, FIGURE_TOLERANCE_PX)[0]
     items: list[Item] = [Polyline(curve.t, curve.x, Style(_BLACK, 2.0))]
     for n in ("T_B", "T_F"):
         t = scene.events[n][0]
@@ -189,7 +190,7 @@ def print_style(chart: Chart) -> dict[str, Any]:
 
 def write_figures(out: Path) -> list[Path]:
     """Every figure as SVG and PNG in ``out`` (one Chromium for all, through kaleido)."""
-    from .export.images import image_writer
+    from .images import image_writer
 
     out.mkdir(parents=True, exist_ok=True)
     written = []

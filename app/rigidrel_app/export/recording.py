@@ -15,8 +15,8 @@ from collections.abc import Iterator
 import numpy as np
 import viser
 
-from ..drawing import LANE_Z, PLOT_HZ, Drawn, camera_pose, lane_states
-from ..viser_scene import LaneRenderer
+from ..backends.viser import LaneRenderer
+from ..view.scene_view import LANE_Z, PLOT_HZ, Drawn, camera_pose, lane_states
 
 
 @contextlib.contextmanager

@@ -15,6 +15,8 @@ from typing import Any
 
 import viser
 
+from ..view.state import Settings
+from .greeting import greet
 from .session import Session
 
 #: 3-D lanes are redrawn at this rate per client while playing (>= 30 fps delivered, with margin).
@@ -62,8 +64,11 @@ class App:
         port: int = 8080,
         animation_hz: float | None = None,
         version: str | None = None,
+        start: Settings | None = None,
     ) -> None:
+        """``start``: the settings every new tab opens on (default: the first scene's defaults)."""
         self.animation_hz = animation_hz or ANIMATION_HZ
+        self.start = start
         self.version = version or app_version()
         self.errors = 0
         """Exceptions met while ticking sessions or handling client messages (each logged in one line)."""
@@ -101,10 +106,12 @@ class App:
         print(f"rigidrel: ignored a bad client message ({what})", file=sys.stderr)
 
     def _connect(self, client: viser.ClientHandle) -> None:
-        session = Session(client)
+        session = Session(client, self.start)
         with self._lock:
             self.sessions[client.client_id] = session
-        threading.Thread(target=session.greet, args=(self.version,), name="rigidrel-greet", daemon=True).start()
+        threading.Thread(
+            target=greet, args=(client, self.version, lambda: session.closed), name="rigidrel-greet", daemon=True
+        ).start()
 
     async def _disconnect(self, client: viser.ClientHandle) -> None:
         # async: it runs on viser's event loop, so it still runs while the server stops
@@ -149,7 +156,7 @@ class App:
         self.stop()
 
 
-def serve(host: str = "127.0.0.1", port: int = 8080) -> int:
+def serve(host: str = "127.0.0.1", port: int = 8080, start: Settings | None = None) -> int:
     """Run until Ctrl-C or SIGTERM; print the URL the server really got."""
     done = threading.Event()
 
@@ -160,7 +167,7 @@ def serve(host: str = "127.0.0.1", port: int = 8080) -> int:
     # shell inherits SIGINT as *ignored*, and Python then raises no KeyboardInterrupt.
     signal.signal(signal.SIGINT, _terminate)
     signal.signal(signal.SIGTERM, _terminate)
-    with App(host, port) as app:
+    with App(host, port, start=start) as app:
         print(f"rigidrel: serving on {app.url}  (Ctrl-C to stop)", flush=True)
         while not done.wait(0.5):
             pass

@@ -13,7 +13,8 @@ import numpy as np
 
 import rigidrel_core as rr
 
-from .draw import (
+from .sampling import ADAPTIVE, Sampler
+from .vocabulary import (
     FRAME_COLOR,
     INK,
     LIGHT_COLOR,
@@ -32,7 +33,6 @@ from .draw import (
     event_label,
     rgba,
 )
-from .sampling import ADAPTIVE, Sampler
 
 #: Material points drawn in the diagrams (fractions of the rest length).
 DIAGRAM_FRACTIONS = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
@@ -52,27 +52,34 @@ class View:
     @staticmethod
     def alone(frame: rr.Frame) -> View:
         """A diagram of ``frame`` compared with the lab (or with nothing, if it is the lab)."""
-        lab = rr.Frame.lab()
-        if frame.key() == lab.key():
-            return View(frame, frame, frame.name, "", "")
-        return View(frame, lab, frame.name, "'", "")
+        if frame.same_velocity(rr.LAB):
+            return View(frame, frame, frame_title(frame), "", "")
+        return View(frame, rr.LAB, frame_title(frame), "'", "")
+
+    @property
+    def compares(self) -> bool:
+        """Whether the other frame differs from this one (else no second axes or now-line)."""
+        return not self.frame.same_velocity(self.other)
 
 
 def frame_title(frame: rr.Frame) -> str:
-    return f"{frame.name} (β = {frame.beta:.4g})" if frame.name != "lab" else "lab"
+    """``"lab"``, or the frame's name (``"custom"`` for an unnamed one) and its velocity."""
+    if frame.same_velocity(rr.LAB) and frame.name in (None, "lab"):
+        return "lab"
+    return f"{frame.name or 'custom'} (β = {frame.beta:.4g})"
 
 
 def _to_view(view: View, events_other: FloatArray) -> FloatArray:
-    """Events of the other frame ``(..., 2)`` into this view's frame: one boost by the core's
-    exact relative rapidity (no round trip through the lab)."""
-    psi = rr.relative_rapidity(view.frame.velocity, view.other.velocity)
-    return rr.Boost.from_rapidity(psi).apply(events_other)
+    """Events of the other frame ``(..., 2)`` into this view's frame: one boost by the exactly
+    composed relative frame (no round trip through the lab)."""
+    return (view.frame @ view.other.inverse()) @ events_other
 
 
 def window_x_range(scene: rr.Scene, frames: tuple[rr.Frame, ...], t_range: tuple[float, float]) -> tuple[float, float]:
     """The x interval the rods sweep over the window in any of the frames (for shared scales)."""
     t = np.linspace(t_range[0], t_range[1], 97)
     xs = [scene.positions(t, f) for f in frames]
+    xs += [o.positions(t, f) for o in scene.obstacles for f in frames]
     lo = min(float(x.min()) for x in xs)
     hi = max(float(x.max()) for x in xs)
     return lo, hi
@@ -106,7 +113,14 @@ def minkowski_in_frame(
     a pixel at ``density`` device pixels per CSS pixel."""
     window = scene.time_window(frame)
     x_range, t_range = equal_scale_ranges(window_x_range(scene, (frame,), window), window, area_px)
-    return minkowski_static(scene, View.alone(frame), t_range, x_range, density * area_px[0], overlay)
+    label = overlay_label(scene)
+    return minkowski_static(scene, View.alone(frame), t_range, x_range, density * area_px[0], overlay, ADAPTIVE, label)
+
+
+def overlay_label(scene: rr.Scene) -> str:
+    """The legend name of the scene's comparison overlay (its description's)."""
+    overlay = rr.describe(scene).overlay
+    return overlay.label if overlay is not None else "comparison"
 
 
 def minkowski_static(
@@ -117,8 +131,12 @@ def minkowski_static(
     panel_px: float,
     overlay: rr.Scene | None = None,
     sampler: Sampler = ADAPTIVE,
+    overlay_label: str = "comparison",
 ) -> Chart:
-    """Everything in a Minkowski diagram that does not move with playback."""
+    """Everything in a Minkowski diagram that does not move with playback.
+
+    ``overlay`` is a second scene drawn dashed (Fig. 1's impulsive curve), named ``overlay_label``.
+    """
     frame = view.frame
     px_per_x = panel_px / max(x_range[1] - x_range[0], 1e-300)
     items: list[Item] = []
@@ -131,7 +149,7 @@ def minkowski_static(
         Polyline(np.array([-span, span]), np.array([span, -span]), Style(LIGHT_COLOR, 1.5, "dash", group="cone"))
     )
     # the other frame's time and space axes (x_o = 0 and t_o = 0), through the origin
-    if view.other.key() != frame.key():
+    if view.compares:
         ax = Style(
             FRAME_COLOR,
             1.5,
@@ -147,10 +165,10 @@ def minkowski_static(
         t_label = t0 + 0.92 * (t1 - t0)
         x_label = float(np.interp(t_label, both[0, :, 0], both[0, :, 1]))
         items.append(Label(x_label, t_label, f"t{view.other_prime}", Style(FRAME_COLOR)))
-    # the wall (lab x = 0)
-    if scene.has_wall:
-        tt = np.array([t0, t1])
-        items.append(Polyline(scene.wall_x(tt, frame), tt, Style(WALL_COLOR, 5.0, name="wall")))
+    # obstacles (a wall): straight worldlines
+    tt = np.array([t0, t1])
+    for obstacle in scene.obstacles:
+        items.append(Polyline(obstacle.positions(tt, frame), tt, Style(WALL_COLOR, 5.0, name=obstacle.name)))
     # world tubes and worldlines
     lines = sampler.worldlines(scene, frame, DIAGRAM_FRACTIONS, t_range, px_per_x)
     for r, rod in enumerate(scene.rods):
@@ -168,12 +186,11 @@ def minkowski_static(
             items.append(Polyline(w.x, w.t, Style(color, 1.0, opacity=0.7, group=rod.name)))
         items.append(Polyline(left.x, left.t, Style(color, 2.5, name=rod.name, group=rod.name)))
         items.append(Polyline(right.x, right.t, Style(color, 2.5, group=rod.name)))
-    if overlay is not None:  # Fig. 1's dashed curve: the impulsive start to the same V
-        left, right = sampler.worldlines(overlay, frame, np.array([0.0, 1.0]), t_range, px_per_x)[0]
-        items.append(Polyline(left.x, left.t, Style(INK, 1.5, "dash", group="overlay")))
-        items.append(
-            Polyline(right.x, right.t, Style(INK, 1.5, "dash", name="impulsive (Fig. 1 dashed)", group="overlay"))
-        )
+    if overlay is not None:  # e.g. Fig. 1's dashed curve: the impulsive start to the same V
+        for r, (left, right) in enumerate(sampler.worldlines(overlay, frame, np.array([0.0, 1.0]), t_range, px_per_x)):
+            items.append(Polyline(left.x, left.t, Style(INK, 1.5, "dash", group="overlay")))
+            name = overlay_label if r == 0 else None
+            items.append(Polyline(right.x, right.t, Style(INK, 1.5, "dash", name=name, group="overlay")))
     # named events, in the paper's notation
     events = scene.events_in(frame)
     if events:
@@ -198,13 +215,12 @@ def minkowski_now(view: View, now: float, span: float, ends: FloatArray) -> tupl
 
     ``ends``: the rods' end positions at ``now`` in this view's frame (from the core), any shape.
     """
-    frame = view.frame
     items: list[Item] = [
         Polyline(
             np.array([-span, span]), np.array([now, now]), Style(INK, 1.2, name=f"now: t{view.prime} = {now:.3g}")
         ),
     ]
-    if view.other.key() != frame.key():
+    if view.compares:
         # the other frame's line of simultaneity t_o = now, drawn in this frame
         e = _to_view(view, np.array([[now, -span], [now, span]]))
         items.append(
@@ -228,7 +244,7 @@ def length_static(
     """
     items: list[Item] = []
     frames: list[tuple[rr.Frame, str, Dash]] = [(lab, "", "solid")]
-    if chosen.key() != lab.key():
+    if not chosen.same_velocity(lab):
         frames.append((chosen, "'", "dash"))
     # the largest length over the window: the rest lengths and the contracted ones at the ends
     probe = np.array([t_range[0], t_range[1]])
@@ -244,7 +260,7 @@ def length_static(
         for name, (te, _) in scene.events_in(frame).items():
             if t_range[0] <= te <= t_range[1]:
                 le = scene.lengths(np.array([te]), frame)[:, 0]
-                rod = _event_rod(scene, name)
+                rod = scene.event_rod(name)
                 items.append(Points(np.array([te]), le[rod : rod + 1], Style(INK), size=6))
                 items.append(
                     Label(te, float(le[rod]), event_label(name) + (" (t')" if prime else ""), Style(INK), size=11)
@@ -257,13 +273,6 @@ def length_static(
         y_range=(0.0, top * 1.12 if top > 0 else 1.0),
         title="Equal-time length (Fig. 2)",
     )
-
-
-def _event_rod(scene: rr.Scene, name: str) -> int:
-    for spec in scene.event_specs:
-        if spec.name == name:
-            return spec.rod
-    return 0
 
 
 def length_now(now: float, y_top: float, lengths: FloatArray) -> tuple[Item, ...]:

@@ -3,8 +3,8 @@
 Lane coordinates: ``x`` along the rods (the frame's own x, in units of the scene's
 largest rest length), ``z`` up within the lane. Rods are boxes with a tick at every
 tenth of their rest length (so the uneven accelerations along a Born-rigid rod show),
-a proper-time clock dial on each end, the wall where there is one, a ruler of the
-frame's own x, and a mark at the origin event's place.
+a proper-time clock dial on each end, the scene's obstacles (a wall) as bars, a ruler of
+the frame's own x, and a mark at the origin event's place.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import numpy.typing as npt
 
 import rigidrel_core as rr
 
-from .draw import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, Label, Segments, Style
+from .vocabulary import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, Label, Segments, Style
 
 #: Material points with ticks: every tenth of the rest length.
 TICK_FRACTIONS = np.linspace(0.0, 1.0, 11)
@@ -91,13 +91,12 @@ def lane_state(
     ``CLOCK_PERIOD``.
     """
     u = geo.unit
-    x_phys, tau = scene.snapshot(now, frame, TICK_FRACTIONS)  # (rods, 11), (rods, 2)
+    x_phys, tau = scene.snapshot(now, frame, fractions=TICK_FRACTIONS)  # (rods, 11), (rods, 2)
     x = x_phys / u
     h = geo.rod_height
     boxes = [Box(float(x[r, 0]), float(x[r, -1]), h, ROD_COLORS[r % len(ROD_COLORS)]) for r in range(scene.n_rods)]
-    if scene.has_wall:
-        xw = float(scene.wall_x(np.array([now]), frame)[0]) / u
-        boxes.append(Box(xw - 0.02, xw, geo.wall_height, WALL_COLOR, z=0.5 * (geo.wall_height - h)))
+    for obstacle in scene.obstacles:
+        boxes.append(obstacle_box(obstacle, float(obstacle.positions(now, frame)) / u, geo))
     tx = x.ravel()
     n = tx.size
     cx = x[:, [0, -1]].ravel()  # the ends: (rods * 2,)
@@ -126,8 +125,16 @@ def lane_state(
     return LaneState(tuple(boxes), Segments(x0, z0, x1, z1, Style(INK, 1.5)), dials, texts, ends)
 
 
+def obstacle_box(obstacle: rr.Obstacle, x: float, geo: LaneGeometry) -> Box:
+    """An obstacle at lane x ``x``: a wall is a tall grey bar whose face is at ``x`` (its other side
+    towards negative x, where the rods never are)."""
+    if obstacle.kind is rr.ObstacleKind.WALL:
+        return Box(x - 0.02, x, geo.wall_height, WALL_COLOR, z=0.5 * (geo.wall_height - geo.rod_height))
+    raise ValueError(f"no lane drawing for obstacle kind {obstacle.kind!r}")
+
+
 def lane_static(
-    geo: LaneGeometry, x_range: tuple[float, float], origin_event: str
+    geo: LaneGeometry, x_range: tuple[float, float], origin_event: rr.OriginEvent
 ) -> tuple[Segments, tuple[Label, ...]]:
     """A ruler of the frame's own x below the rods, and a mark where the origin event happens."""
     lo, hi = x_range[0] / geo.unit, x_range[1] / geo.unit
@@ -145,7 +152,7 @@ def lane_static(
         Label(float(m), zr - 0.1, f"{m * geo.unit + 0.0:g}", Style(FRAME_COLOR), anchor="center", size=10)
         for m in marks
     )
-    origin = Label(0.0, zr + 0.05, f"{origin_event} (origin)", Style(FRAME_COLOR), anchor="left", size=10)
+    origin = Label(0.0, zr + 0.05, f"{origin_event.value} (origin)", Style(FRAME_COLOR), anchor="left", size=10)
     return ruler, (*labels, origin)
 
 

@@ -19,7 +19,7 @@ import rigidrel_core as rr
 
 FloatArray = npt.NDArray[np.float64]
 
-#: Half a pixel (issue 5's target).
+#: Half a pixel: finer than a panel can show.
 TOLERANCE_PX = 0.5
 MAX_DEPTH = 24
 
@@ -111,11 +111,11 @@ def sample_worldlines(
     ``px_per_x`` is the panel's horizontal scale; the error is measured horizontally
     (an upper bound of the distance to the chord).
     """
-    switches = scene.switch_times(frame, fractions)  # (rods, fractions, 2)
+    switches = scene.switch_times(frame, fractions=fractions)  # (rods, fractions, 2)
     knots = [_knots(switches[r, k], t_range) for r in range(scene.n_rods) for k in range(fractions.size)]
 
     def evaluate(t: FloatArray) -> FloatArray:
-        return scene.material_positions(fractions, t, frame).reshape(-1, t.size)
+        return scene.material_positions(t, frame, fractions=fractions).reshape(-1, t.size)
 
     flat = refine(evaluate, knots, tol_px / px_per_x)
     return [flat[r * fractions.size : (r + 1) * fractions.size] for r in range(scene.n_rods)]
@@ -149,7 +149,7 @@ class Sampler:
         if self.fixed_n is None:
             return sample_worldlines(scene, frame, fractions, t_range, px_per_x, self.tol_px)
         t = np.linspace(t_range[0], t_range[1], self.fixed_n)
-        x = scene.material_positions(fractions, t, frame)
+        x = scene.material_positions(t, frame, fractions=fractions)
         return [[Sampled(t, x[r, k]) for k in range(fractions.size)] for r in range(scene.n_rods)]
 
     def lengths(

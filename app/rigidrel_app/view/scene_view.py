@@ -1,7 +1,7 @@
 """What one scene in one frame looks like: everything the app, the recordings and the exports draw.
 
-Pure functions over :mod:`rigidrel_core` and the drawing vocabulary; no viser here, so
-the exporters use exactly what the app shows.
+Pure functions over :mod:`rigidrel_core` and the drawing vocabulary; no viser or plotly
+here, so the exporters use exactly what the app shows.
 """
 
 from __future__ import annotations
@@ -22,12 +22,13 @@ from .diagrams import (
     length_static,
     minkowski_now,
     minkowski_static,
+    overlay_label,
     window_x_range,
 )
-from .draw import Label, Segments, SplicedFigure
 from .lanes import LaneGeometry, LaneState, lane_geometry, lane_state, lane_static
 from .sampling import ADAPTIVE, Sampler
-from .settings import Resolved
+from .state import Resolved, format_value
+from .vocabulary import Chart, Item, Label, Segments
 
 #: Lane heights (z, in lane units): the lab on top, the chosen frame below.
 LAB_Z = 0.55
@@ -45,8 +46,7 @@ LENGTH_ASPECT = 0.75
 #: The plot area inside a Minkowski diagram (pixels): the panel minus plotly's margins.
 PLOT_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * PLOT_ASPECT - 40 - 114)
 LENGTH_AREA_PX = (PLOT_PANEL_PX - 40 - 58, PLOT_PANEL_PX * LENGTH_ASPECT - 40 - 114)
-PLOT_CONFIG = {"displayModeBar": False, "responsive": True}
-_LAB = rr.Frame.lab()
+_LAB = rr.LAB
 
 
 @dataclass(frozen=True)
@@ -58,9 +58,9 @@ class Drawn:
     geometry: LaneGeometry
     lane_ranges: tuple[tuple[float, float], tuple[float, float]]
     """Each lane's own x extent (lab, chosen frame): rulers and titles depend only on their frame."""
-    lab_chart: SplicedFigure
-    frame_chart: SplicedFigure
-    length_chart: SplicedFigure
+    lab_chart: Chart
+    frame_chart: Chart
+    length_chart: Chart
 
     @property
     def x_range(self) -> tuple[float, float]:
@@ -81,8 +81,13 @@ class Drawn:
         """Each lane's ruler and origin mark (lab, chosen frame): drawn once per scene."""
         return [lane_static(self.geometry, r, self.resolved.scene.origin_event) for r in self.lane_ranges]
 
-    def plot_figures(self, now: float, states: list[LaneState]) -> tuple[str, str, str]:
-        """The three diagrams' JSON at playback time ``now`` (lab, chosen frame, lengths).
+    @property
+    def charts(self) -> tuple[Chart, Chart, Chart]:
+        """The lab diagram, the chosen frame's diagram, the equal-time lengths."""
+        return (self.lab_chart, self.frame_chart, self.length_chart)
+
+    def moving_items(self, now: float, states: list[LaneState]) -> tuple[tuple[Item, ...], ...]:
+        """What moves on each of :attr:`charts` at playback time ``now``: the now-lines and markers.
 
         ``states`` are :func:`lane_states` at ``now``: their ends mark the rods on the diagrams.
         The length plot's markers are the core's equal-time lengths in both frames.
@@ -90,17 +95,17 @@ class Drawn:
         r = self.resolved
         lab_view, frame_view = _views(r.frame)
         lengths = [r.scene.lengths(now, f) for f in (_LAB, r.frame)]
-        length_top = self.length_chart.chart.y_range[1]
+        length_top = self.length_chart.y_range[1]
         return (
-            self.lab_chart.with_dynamic(minkowski_now(lab_view, now, self.span, states[0].ends)),
-            self.frame_chart.with_dynamic(minkowski_now(frame_view, now, self.span, states[1].ends)),
-            self.length_chart.with_dynamic(length_now(now, length_top, np.stack(lengths))),
+            minkowski_now(lab_view, now, self.span, states[0].ends),
+            minkowski_now(frame_view, now, self.span, states[1].ends),
+            length_now(now, length_top, np.stack(lengths)),
         )
 
 
 def _views(frame: rr.Frame) -> tuple[View, View]:
     """The lab diagram (compared with ``frame``) and the chosen frame's (compared with the lab)."""
-    return View(_LAB, frame, "lab", "", "'"), View(frame, _LAB, frame.name, "'", "")
+    return View(_LAB, frame, "lab", "", "'"), View(frame, _LAB, frame_title(frame), "'", "")
 
 
 def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
@@ -123,17 +128,18 @@ def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
     lab_view, frame_view = _views(frame)
     lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window, PLOT_AREA_PX)
     fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window, PLOT_AREA_PX)
-    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, PLOT_AREA_PX[0], resolved.overlay, sampler)
-    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, PLOT_AREA_PX[0], resolved.overlay, sampler)
+    label = overlay_label(scene)
+    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, PLOT_AREA_PX[0], resolved.overlay, sampler, label)
+    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, PLOT_AREA_PX[0], resolved.overlay, sampler, label)
     length_chart = length_static(scene, lab, frame, window, LENGTH_AREA_PX, sampler)
     return Drawn(
         resolved=resolved,
         window=window,
         geometry=geometry,
         lane_ranges=(lane_range(lab), lane_range(frame)),
-        lab_chart=SplicedFigure(lab_chart, PLOT_CONFIG),
-        frame_chart=SplicedFigure(frame_chart, PLOT_CONFIG),
-        length_chart=SplicedFigure(length_chart, PLOT_CONFIG),
+        lab_chart=lab_chart,
+        frame_chart=frame_chart,
+        length_chart=length_chart,
     )
 
 
@@ -170,10 +176,8 @@ def lane_states(d: Drawn, now: float, labels: bool = True) -> list[LaneState]:
 def readout_markdown(resolved: Resolved) -> str:
     """Parameters, final velocities and events in plain numbers, for the control panel."""
     scene, frame = resolved.scene, resolved.frame
-    names = {"v": "V", "v1": "V1", "v2": "V2", "eps": "ε", "a_front": "a'_F", "length": "L0", "l1": "L1", "l2": "L2"}
-    params = [f"{names[k]} = {v:.4g}" for k, v in scene.parameters.items() if k in names]
-    if "m1" in scene.parameters:
-        params.append(f"M2/M1 = {scene.parameters['m2'] / scene.parameters['m1']:.4g}")
+    d = rr.describe(scene)
+    params = [f"{d.parameter(k).symbol} = {format_value(v)}" for k, v in scene.parameters.items()]
     v = ", ".join(f"{r.name}: {v:+.4f}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
     ev = " · ".join(f"{k} ({t:.3f}, {x:.3f})" for k, (t, x) in scene.events.items())
     return (

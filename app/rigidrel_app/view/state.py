@@ -1,140 +1,111 @@
 """What the controls say, as a frozen value, and the scene and frame it means.
 
-The GUI only ever replaces one field of :class:`Settings` and asks :func:`resolve` for
-the scene: invalid combinations come back as a message, never as an exception.
+Everything here is generated from the core's scene registry: a :class:`Settings` holds a
+scene's name and a value for each of its parameters, the paper's presets are the
+descriptions' presets, and the frame menu is the scene's frame presets. The GUI only ever
+replaces one field of a :class:`Settings` and asks :func:`resolve` for the scene: invalid
+combinations come back as a notice, never as an exception.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from enum import StrEnum
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+from types import MappingProxyType
 
 import rigidrel_core as rr
-from rigidrel_core import SceneKind
 
-#: The scenes offered in the dropdown, in teaching order.
-SCENE_LABELS: dict[SceneKind, str] = {
-    SceneKind.CONSTANT_ACCELERATION: "Constant acceleration",
-    SceneKind.DECELERATION: "Deceleration",
-    SceneKind.IMPULSIVE_START: "Impulsive start",
-    SceneKind.WALL_COLLISION: "Wall crash / bounce",
-    SceneKind.ROD_COLLISION: "Rod-rod collision",
-}
+#: The frame dropdown's entry for a frame set by the β slider.
 CUSTOM_FRAME = "custom (β slider)"
+#: The preset menu's entry when the controls show no paper figure.
+NO_PRESET = "—"
+#: The scene a new tab opens on.
+DEFAULT_SCENE = "constant-acceleration"
+
+Values = tuple[tuple[str, float | None], ...]
 
 
-class Preset(StrEnum):
-    NONE = "—"
-    FIG1 = "Fig. 1: acceleration to V = 0.6"
-    FIG3 = "Fig. 3: collision, M2 = 2 M1"
-    FIG4 = "Fig. 4: collision, M1 = 2 M2"
+def _all_values(kind: str, given: Mapping[str, float | None]) -> Values:
+    d = rr.describe(kind)
+    for name in given:
+        d.parameter(name)  # an unknown name is refused, naming it
+    return tuple((p.name, given.get(p.name, p.default)) for p in d.parameters)
 
 
 @dataclass(frozen=True)
 class Settings:
-    """Slider and dropdown values. Rod 1 has rest length L0 = 1 and mass M1 = 1."""
+    """Every control's value: a scene, each of its parameters, the frame, the overlay.
 
-    scene: SceneKind = SceneKind.CONSTANT_ACCELERATION
-    v: float = 0.6
-    """V; V1 for a collision (c = 1)."""
-    v2: float = 0.0
-    log_mass_ratio: float = math.log10(2.0)
-    """log10(M2/M1)."""
-    eps: float = 1.0
-    a_front_length: float = 0.5
-    """a'_F L0 of the front end."""
-    length_ratio: float = 1.0
-    """L2/L1."""
-    frame: str = "rod after"
-    """A frame preset of the scene ("lab", "rod after", "barycentric", ...) or CUSTOM_FRAME.
-    A name the scene lacks falls back to :func:`default_frame`."""
+    ``values`` always lists every parameter of ``scene`` (defaults filled in), so two
+    settings that mean the same scene compare equal.
+    """
+
+    scene: str = DEFAULT_SCENE
+    values: Values = ()
+    frame: str | None = None
+    """A frame preset of the scene, :data:`CUSTOM_FRAME`, or ``None`` for the scene's default frame."""
     beta: float = 0.0
     """The custom frame's velocity."""
-    overlay_impulsive: bool = False
-    """Draw Fig. 1's dashed impulsive curve over a constant acceleration."""
+    overlay: bool = False
+    """Draw the description's comparison scene (Fig. 1's dashed impulsive curve) dashed over the scene."""
+    _by_name: Mapping[str, float | None] = field(init=False, repr=False, compare=False)
 
+    def __post_init__(self) -> None:
+        values = _all_values(self.scene, dict(self.values))
+        object.__setattr__(self, "values", values)
+        object.__setattr__(self, "_by_name", MappingProxyType(dict(values)))
 
-PRESETS: dict[Preset, Settings] = {
-    Preset.FIG1: Settings(SceneKind.CONSTANT_ACCELERATION, v=0.6, a_front_length=0.5, overlay_impulsive=True),
-    Preset.FIG3: Settings(SceneKind.ROD_COLLISION, v=0.6, v2=0.0, log_mass_ratio=math.log10(2.0), eps=1.0),
-    Preset.FIG4: Settings(SceneKind.ROD_COLLISION, v=0.6, v2=0.0, log_mass_ratio=math.log10(0.5), eps=1.0),
-}
+    @classmethod
+    def of(cls, scene: str, **values: float | None) -> Settings:
+        """The settings of ``scene`` with ``values`` (the rest at their defaults)."""
+        return cls(scene, tuple(values.items()))
+
+    @property
+    def description(self) -> rr.SceneDescription:
+        return rr.describe(self.scene)
+
+    def value(self, name: str) -> float | None:
+        return self._by_name[name]
+
+    def parameters(self) -> dict[str, float | None]:
+        return dict(self._by_name)
+
+    def with_value(self, name: str, value: float | None) -> Settings:
+        return replace(self, values=tuple((k, value if k == name else v) for k, v in self.values))
+
+    def with_scene(self, kind: str) -> Settings:
+        """Another scene: parameters of the same name keep their values, the frame its default."""
+        if kind == self.scene:
+            return self
+        keep = {p.name: self._by_name[p.name] for p in rr.describe(kind).parameters if p.name in self._by_name}
+        return Settings(kind, tuple(keep.items()), None, self.beta, False)
 
 
 @dataclass(frozen=True)
 class Resolved:
+    """The scene and frame the settings mean, and the overlay scene if one is drawn."""
+
     scene: rr.Scene
     frame: rr.Frame
-    overlay: rr.Scene | None
+    overlay: rr.Scene | None = None
 
 
-def scene_parameters(s: Settings) -> dict[str, float]:
-    """The core's parameters for the scene the settings describe (rod 1: rest length 1, mass 1)."""
-    kind = s.scene
-    if kind is SceneKind.ROD_COLLISION:
-        m2, l2 = 10.0**s.log_mass_ratio, s.length_ratio
-        return {"v1": s.v, "v2": s.v2, "m1": 1.0, "m2": m2, "l1": 1.0, "l2": l2, "eps": s.eps}
-    if kind in (SceneKind.CONSTANT_ACCELERATION, SceneKind.DECELERATION):
-        return {"v": s.v, "length": 1.0, "a_front": s.a_front_length}
-    if kind is SceneKind.WALL_COLLISION:
-        return {"v": s.v, "length": 1.0, "eps": s.eps}
-    if kind is SceneKind.IMPULSIVE_START:
-        return {"v": s.v, "length": 1.0}
-    raise rr.ParameterError("scene", "one of the scenes in the dropdown", s.scene)
+def presets() -> dict[str, Settings]:
+    """Every paper figure of every registered scene, by its menu label, in teaching order."""
+    out: dict[str, Settings] = {}
+    for kind, d in rr.scene_descriptions().items():
+        for p in d.presets:
+            out[p.label] = Settings(kind, tuple(p.values.items()), p.frame, 0.0, p.overlay)
+    return out
 
 
-def build_scene(s: Settings) -> rr.Scene:
-    """The scene the settings describe (raises ValueError naming the offending parameter)."""
-    return rr.build_scene(s.scene, **scene_parameters(s))
-
-
-def settings_for(scene: rr.Scene, frame: rr.Frame) -> Settings:
-    """The inverse of :func:`scene_parameters`: the settings that show ``scene`` in ``frame``,
-    in units of rod 1's rest length and mass. Only for the scenes in :data:`SCENE_LABELS`."""
-    p = scene.parameters
-    kind = scene.kind
-    common = {"frame": frame_choice(scene, frame), "beta": frame.beta}
-    if kind is SceneKind.ROD_COLLISION:
-        return Settings(
-            kind,
-            v=p["v1"],
-            v2=p["v2"],
-            log_mass_ratio=math.log10(p["m2"] / p["m1"]),
-            eps=p["eps"],
-            length_ratio=p["l2"] / p["l1"],
-            **common,
-        )
-    if kind in (SceneKind.CONSTANT_ACCELERATION, SceneKind.DECELERATION):
-        return Settings(kind, v=p["v"], a_front_length=p["a_front"] * p["length"], **common)
-    if kind is SceneKind.WALL_COLLISION:
-        return Settings(kind, v=p["v"], eps=p["eps"], **common)
-    if kind is SceneKind.IMPULSIVE_START:
-        return Settings(kind, v=p["v"], **common)
-    raise rr.ParameterError("scene", "one of the app's scenes (velocity-change has no slider page)", kind.value)
-
-
-def default_frame(scene: rr.Scene) -> str:
-    """The frame a lecturer compares with first: the rod's rest frame after, or the barycentre."""
-    return "barycentric" if "barycentric" in scene.frames else "rod after"
-
-
-def choose_frame(scene: rr.Scene, frame: rr.Frame | str | float | None) -> rr.Frame:
-    """The frame a user named: ``None`` for :func:`default_frame`, a :class:`~rigidrel_core.Frame`,
-    one of the scene's preset names, or a velocity in (-1, 1) (a number or its text)."""
-    if frame is None:
-        return scene.frames[default_frame(scene)]
-    if isinstance(frame, rr.Frame):
-        return frame
-    if isinstance(frame, str):
-        if frame in scene.frames:
-            return scene.frames[frame]
-        try:
-            frame = float(frame)
-        except ValueError:
-            presets = ", ".join(repr(k) for k in scene.frames)
-            raise rr.ParameterError("frame", f"a velocity in (-1, 1) or one of {presets}", frame) from None
-    return rr.Frame.from_velocity(frame)
+def preset_of(settings: Settings) -> str:
+    """The preset menu's entry for ``settings``: the figure they reproduce, or :data:`NO_PRESET`."""
+    for label, s in presets().items():
+        if s.scene == settings.scene and s.values == settings.values and s.overlay == settings.overlay:
+            return label
+    return NO_PRESET
 
 
 def frame_choices(scene: rr.Scene) -> tuple[str, ...]:
@@ -142,31 +113,75 @@ def frame_choices(scene: rr.Scene) -> tuple[str, ...]:
 
 
 def frame_choice(scene: rr.Scene, frame: rr.Frame) -> str:
-    """The Frame dropdown's entry for ``frame``: its preset name, or the custom (β slider) entry."""
-    return frame.name if frame.name in scene.frames else CUSTOM_FRAME
+    """The frame dropdown's entry for ``frame``: its preset name, or the custom (β slider) entry."""
+    if frame.name is not None and frame.name in scene.frames and scene.frames[frame.name] == frame:
+        return frame.name
+    return CUSTOM_FRAME
+
+
+def settings_for(scene: rr.Scene, frame: rr.Frame) -> Settings:
+    """The settings that show ``scene`` in ``frame`` (the inverse of :func:`resolve`)."""
+    choice = frame_choice(scene, frame)
+    return Settings(
+        scene.kind,
+        tuple(scene.parameters.items()),
+        choice,
+        frame.beta if choice == CUSTOM_FRAME else 0.0,
+    )
+
+
+def frame_from_text(scene: rr.Scene, text: str | None) -> rr.Frame:
+    """The frame a user named in text (command line, lesson): a preset name of the scene, a velocity
+    in (-1, 1), or ``None`` for the scene's default frame. A ``ValueError`` names the choices."""
+    if text is None:
+        return rr.default_frame(scene)
+    if text in scene.frames:
+        return scene.frames[text]
+    try:
+        beta = float(text)
+    except ValueError:
+        names = ", ".join(repr(k) for k in scene.frames)
+        raise rr.ParameterError("frame", f"a velocity in (-1, 1) or one of {names}", text) from None
+    return rr.Frame.from_velocity(beta, name="custom")
 
 
 def resolve(s: Settings) -> Resolved | str:
     """The scene and frame, or a one-sentence notice of why they cannot be built."""
     try:
-        scene = build_scene(s)
+        scene = s.description.build(**s.parameters())
         if s.frame == CUSTOM_FRAME:
             frame = rr.Frame.from_velocity(s.beta, name="custom")
+        elif s.frame is None:
+            frame = rr.default_frame(scene)
         else:
-            frame = scene.frames.get(s.frame) or scene.frames[default_frame(scene)]
+            frame = scene.frame(s.frame)
         overlay = None
-        if s.overlay_impulsive and s.scene is SceneKind.CONSTANT_ACCELERATION:
-            overlay = rr.impulsive_start(v=s.v, length=1.0)
+        d = s.description
+        if s.overlay and d.overlay is not None:
+            overlay = d.overlay.build(scene.parameters)
     except ValueError as exc:
-        return _explain(s, exc)
+        return notice(s, exc)
     return Resolved(scene, frame, overlay)
 
 
-def _explain(s: Settings, exc: ValueError) -> str:
+def notice(s: Settings, exc: ValueError) -> str:
+    """Why ``s`` makes no scene, in the words of the control that holds the offending value."""
     name = getattr(exc, "parameter", "")
-    if name == "v2":
-        return (
-            f"V2 = {s.v2:.3g} is not less than V1 = {s.v:.3g}: rod 1 never catches rod 2. "
-            "Lower V2 or raise V1; the last valid scene stays on screen."
-        )
+    d = s.description
+    if name in d.parameter_map:
+        p = d.parameter_map[name]
+        value = s.value(name)
+        shown = "none" if value is None else f"{value:.6g}"
+        return f"{p.label} = {shown} refused: {exc}. The last valid scene stays on screen."
+    if name == "beta":
+        return f"β = {s.beta!r} refused: {exc}. The last valid scene stays on screen."
     return f"{exc}. The last valid scene stays on screen."
+
+
+def format_value(value: float | None) -> str:
+    """A parameter value as the readouts and command lines show it (``none`` for an omitted one)."""
+    if value is None:
+        return "none"
+    if value == 0.0:
+        return "0"
+    return f"{value:.6g}" if math.isfinite(value) else str(value)

@@ -1,8 +1,9 @@
 """The methods compared by ``rigidrel bench``, one module each, with one signature.
 
-Every method takes a :class:`~app.bench.scenes.BenchScene`, a frame velocity ``beta``
-(c = 1, ``|beta| < 1``) and an array of the frame's times ``t'``, and returns ``x'`` of
-[left end, right end] of each rod at those times: shape ``(n_rods, 2, len(t'))``, float64.
+Every method takes a :class:`~rigidrel_app.bench.scenes.BenchScene`, a frame velocity ``beta``
+(c = 1, ``|beta| < 1``, a float: the core's method makes its ``rr.Frame`` inside the call) and an
+array of the frame's times ``t'``, and returns ``x'`` of [left end, right end] of each rod at
+those times: shape ``(n_rods, 2, len(t'))``, float64.
 Everything from the scene's parameters to the positions happens inside the call, so its
 wall time is the method's whole cost for that scene, frame and set of times.
 """
@@ -24,7 +25,7 @@ Evaluate = Callable[[BenchScene, float, FloatArray], FloatArray]
 
 
 class MethodName(StrEnum):
-    """The five methods of issue 5."""
+    """The five methods compared."""
 
     CORE = "rigidrel core"
     TEXTBOOK = "textbook float64"

@@ -8,10 +8,13 @@ see ``rigidrel_core/_motion.py``): no boost of lab coordinates, no root finding.
 
 from __future__ import annotations
 
+import rigidrel_core as rr
+
 from ..scenes import BenchScene
 from . import FloatArray
 
 
 def positions(scene: BenchScene, frame_velocity: float, t: FloatArray) -> FloatArray:
-    """Build the core's scene and sample both ends of each rod at frame times ``t``."""
-    return scene.core().positions(t, frame_velocity)
+    """Build the core's scene and its frame (``rr.Frame.from_velocity``) and sample both ends of each rod
+    at frame times ``t``."""
+    return scene.core().positions(t, rr.Frame.from_velocity(frame_velocity))

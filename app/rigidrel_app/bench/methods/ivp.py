@@ -3,7 +3,7 @@
 What a user without closed forms would write (c = 1):
 
 1. For each accelerated end, integrate the lab equations of motion of a point with
-   constant proper acceleration ``a'`` (paper, before Eq. (ap): ``a' = gamma^3 dv/dt``)::
+   constant proper acceleration ``a'`` (paper Sec. 3, before Eq. (2): ``a' = gamma^3 dv/dt``)::
 
        dx/dt = v,    dv/dt = side * a' * (1 - v^2)^(3/2)
 
@@ -12,7 +12,7 @@ What a user without closed forms would write (c = 1):
    would be the whole rod for a rod of length 1e-6), dense output on, and a terminal event
    when ``v`` reaches the final velocity. ``1 - v^2`` is clipped at 0 so that a stage
    overshooting light speed gives ``dv/dt = 0`` instead of NaN. The start events, proper
-   accelerations and final velocities are the paper's, in float64 (:mod:`app.bench.paper`):
+   accelerations and final velocities are the paper's, in float64 (:mod:`rigidrel_app.bench.paper`):
    the integrator replaces only the closed-form worldlines. Kicked ends jump and need no
    integration. Before the start and after the event the end coasts (straight lines).
 2. Slice at frame times ``t'``: on the straight lines invert ``t' = gamma (t - beta x)`` in
@@ -83,7 +83,7 @@ def integrate(end: PaperEnd, method: IvpMethod, rtol: float, length: float) -> I
     def proper_velocity(v: float) -> float:
         return v * textbook_gamma(v)
 
-    duration = abs(proper_velocity(end.v_after) - proper_velocity(end.v_before)) / a  # Eq. (ap): a' t = gamma v
+    duration = abs(proper_velocity(end.v_after) - proper_velocity(end.v_before)) / a  # Eq. (2): a' t = gamma v
     t_end = end.t_start + 2.0 * duration + math.ulp(end.t_start) * 4
     sol = solve_ivp(
         rhs,
@@ -136,6 +136,6 @@ def end_positions(track: IntegratedEnd, beta: float, t_frame: FloatArray) -> Flo
 def positions(scene: BenchScene, frame_velocity: float, t: FloatArray, method: IvpMethod, rtol: float) -> FloatArray:
     """Both ends of each rod at frame times ``t``; raises :class:`IntegrationFailed`."""
     out = []
-    for rod, length in zip(paper_ends(scene), scene.rest_lengths(), strict=True):
+    for rod, length in zip(paper_ends(scene), scene.rest_lengths, strict=True):
         out.append([end_positions(integrate(end, method, rtol, length), frame_velocity, t) for end in rod])
     return np.array(out)

@@ -1,6 +1,6 @@
 """Method 5: mpmath at 50 digits, the accuracy limit and the reference for all the others.
 
-The paper's lab formulas and scene solutions at 50 digits (:mod:`app.bench.reference`),
+The paper's lab formulas and scene solutions at 50 digits (:mod:`rigidrel_app.bench.reference`),
 each end sliced at every frame time by bracketing root finding on lab time
 (Anderson-Bjorck, bracket below ``1e-48`` of its scale). The values are kept as
 double-double ``hi + lo`` so that the other methods' errors are measured below one
@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..reference import BUILDERS, F, SliceSolver, frame_slice
+from ..reference import BUILDERS, F, SliceSolver, frame_slice, reference_precision
 from ..scenes import BenchScene
 from . import FloatArray
 
@@ -36,16 +36,20 @@ class ReferenceSlices:
 def reference_slices(
     scene: BenchScene, frame_velocity: float, t: FloatArray, solver: SliceSolver = "anderson-bjorck"
 ) -> ReferenceSlices:
-    """The reference at frame times ``t`` (each float taken as exact)."""
-    ref = BUILDERS[scene.kind.value](ENDS, **scene.params)
-    beta = F(frame_velocity)
-    times = [F(s) for s in t.tolist()]
-    values = [[[frame_slice(w, beta, s, solver) for s in times] for w in rod] for rod in ref.worldlines]
-    hi = np.array([[[float(v) for v in end] for end in rod] for rod in values])
-    lo = np.array(
-        [[[float(v - h) for v, h in zip(end, hrow)] for end, hrow in zip(rod, hrod)] for rod, hrod in zip(values, hi)]
-    )
-    lengths = np.array([[float(b - a) for a, b in zip(rod[0], rod[1])] for rod in values])
+    """The reference at frame times ``t`` (each float taken as exact), computed at 50 digits."""
+    with reference_precision():
+        ref = BUILDERS[scene.kind](ENDS, **scene.params)
+        beta = F(frame_velocity)
+        times = [F(s) for s in t.tolist()]
+        values = [[[frame_slice(w, beta, s, solver) for s in times] for w in rod] for rod in ref.worldlines]
+        hi = np.array([[[float(v) for v in end] for end in rod] for rod in values])
+        lo = np.array(
+            [
+                [[float(v - h) for v, h in zip(end, hrow)] for end, hrow in zip(rod, hrod)]
+                for rod, hrod in zip(values, hi)
+            ]
+        )
+        lengths = np.array([[float(b - a) for a, b in zip(rod[0], rod[1])] for rod in values])
     return ReferenceSlices(hi, lo, lengths)
 
 

@@ -1,0 +1,27 @@
+"""The closed vocabularies scenes are described in: what happens at the origin, what obstacles are."""
+
+from __future__ import annotations
+
+from enum import StrEnum
+
+
+class OriginEvent(StrEnum):
+    """What happens at the shared origin (t, x) = (0, 0) of every frame."""
+
+    START = "start"
+    """The rod starts accelerating there (its back end)."""
+    KICK = "kick"
+    """The impulse: the back end jumps to its new velocity."""
+    CONTACT = "contact"
+    """Two bodies touch: the rod and the wall, or the two rods."""
+    REST = "rest"
+    """The decelerating rod's back end comes to rest there."""
+    VERTEX = "vertex"
+    """A general velocity change: the origin is where the rod's left end would be at rest if its
+    hyperbola were continued; nothing need happen there."""
+
+
+class ObstacleKind(StrEnum):
+    """Things in a scene that are not rods: they have inertial worldlines and are drawn, not solved."""
+
+    WALL = "wall"
