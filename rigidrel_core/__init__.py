@@ -31,6 +31,7 @@ from ._registry import default_frame as default_frame
 from ._registry import describe as describe
 from ._registry import register_scene as register_scene
 from ._registry import scene_descriptions as scene_descriptions
+from ._registry import unregister_scene as unregister_scene
 from ._scene import ENDS as ENDS
 from ._scene import EventSpec as EventSpec
 from ._scene import Obstacle as Obstacle
@@ -78,6 +79,7 @@ __all__ = [
     "rod_collision",
     "scene_descriptions",
     "solve_collision",
+    "unregister_scene",
     "velocity_change",
     "wall_collision",
 ]

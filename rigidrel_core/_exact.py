@@ -150,9 +150,14 @@ def compose_velocities(a: ExactVelocity, b: ExactVelocity) -> ExactVelocity:
 
 
 def velocity_from_rapidity(psi: float) -> ExactVelocity:
-    """``tanh psi`` to double-double, its gap ``2/(exp(2|psi|) + 1)`` beside it (60 digits, ``psi`` exact)."""
+    """``tanh psi`` to double-double, its gap ``2/(exp(2|psi|) + 1)`` beside it (60 digits, ``psi`` exact).
+
+    ``exp(2|psi|) - 1`` loses as many digits as ``2|psi|`` has leading zeros: the working
+    precision grows by those, so a tiny rapidity keeps its 60 digits too."""
+    if psi == 0.0:
+        return REST
     with localcontext() as ctx:
-        ctx.prec = DECIMAL_DIGITS
+        ctx.prec = DECIMAL_DIGITS + max(0, -math.floor(math.log10(2.0 * abs(psi))))
         e = (2 * Decimal(abs(psi))).exp()  # exp(2|psi|)
         speed = (e - 1) / (e + 1)
         gap = 2 / (e + 1)

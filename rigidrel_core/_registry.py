@@ -62,6 +62,21 @@ def register_scene(description: SceneDescription) -> SceneDescription:
     return description
 
 
+def unregister_scene(kind: str) -> SceneDescription:
+    """Remove a scene that :func:`register_scene` added (the catalogue's own scenes stay)."""
+    reg = _ensure_loaded()
+    with _lock:
+        if kind in _catalogue_kinds():
+            raise ParameterError("kind", "a scene added with register_scene, not one of the catalogue's", kind)
+        if kind not in reg:
+            raise ParameterError("kind", f"one of the registered scenes: {', '.join(reg)}", kind)
+        return reg.pop(kind)
+
+
+def _catalogue_kinds() -> frozenset[str]:
+    return frozenset(d.kind for d in discover())
+
+
 def build_scene(kind: str, **values: float | None) -> Scene:
     """Build a scene by name; missing parameters take their defaults (the paper's values)."""
     return describe(kind).build(**values)

@@ -17,7 +17,6 @@ from hypothesis import reject
 from hypothesis import strategies as st
 
 import rigidrel_core as rr
-from rigidrel_core import _registry
 
 #: The fastest speed drawn unless asked: the app's sliders stop at 0.99 c.
 DEFAULT_VMAX = 0.99
@@ -149,10 +148,9 @@ def isolated_registry() -> Iterator[None]:
     The registry is global to the process, and other test files list it (the app's menus, the
     command line): a scene a test or an example registers must not outlive that test.
     """
-    registry = _registry._ensure_loaded()
-    saved = dict(registry)
+    before = set(rr.scene_descriptions())
     try:
         yield
     finally:
-        registry.clear()
-        registry.update(saved)
+        for kind in set(rr.scene_descriptions()) - before:
+            rr.unregister_scene(kind)

@@ -113,6 +113,7 @@ def test_bad_out_is_one_line_and_exit_status_2(tmp_path: Path, where: str) -> No
     assert proc.stdout == ""
 
 
+@pytest.mark.slow  # a new interpreter
 def test_missing_out_is_a_usage_error() -> None:
     proc = _bench("--quick")
     assert proc.returncode == 2
@@ -128,6 +129,7 @@ def test_missing_out_is_a_usage_error() -> None:
     ],
 )
 @pytest.mark.parametrize("name", ["", "  "], ids=["empty", "blank"])
+@pytest.mark.slow  # a new interpreter each
 def test_empty_out_is_one_line_naming_out_and_exit_status_2(tmp_path: Path, command: list[str], name: str) -> None:
     """``--out ""`` is a usage error, not the current folder (every command shares
     :func:`rigidrel_app.export.paths.out_dir`)."""

@@ -12,6 +12,8 @@ import pytest
 import rigidrel_core as rr
 
 RIGIDREL = [sys.executable, "-m", "rigidrel_app.cli"]
+#: Every test here starts the command in a new interpreter (test_cli_fuzz.py calls it in-process).
+pytestmark = pytest.mark.slow
 ROOT = Path(__file__).resolve().parents[1]
 
 

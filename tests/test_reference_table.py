@@ -77,3 +77,15 @@ def test_slices_and_boosts_compute_at_50_digits_whatever_the_callers_precision()
         with mp.workdps(REFERENCE_DIGITS):
             assert abs(x - mp.sqrt(17) / 4) < mp.mpf(10) ** -45
             assert abs(t_prime - 2 / (3 * mp.sqrt(5))) < mp.mpf(10) ** -45
+
+
+def test_every_registered_scene_has_an_independent_reference() -> None:
+    """A scene is its constructor, its description and its reference entry: the 50-digit reference
+    has a builder for every scene in the registry, and the committed table has cases of each."""
+    import rigidrel_core as rr
+    from rigidrel_app.bench.reference import BUILDERS
+
+    table = json.loads((Path(__file__).parent / "reference" / "reference.json").read_text())
+    kinds = set(rr.scene_descriptions())
+    assert kinds <= set(BUILDERS), kinds - set(BUILDERS)
+    assert kinds <= {case["kind"] for case in table["cases"]}

@@ -2,7 +2,7 @@
 
     python -m tests.benchmarks.bench_export [--seconds 10] [--fps 30]
 
-Targets (issue 4): the 3-D HTML of a 10 s animation at 30 fps is written in <= 10 s and
+Targets: the 3-D HTML of a 10 s animation at 30 fps is written in <= 10 s and
 stays under 3 MB. Also reports the slider page, PNG/SVG (one kaleido start), GIF, MP4.
 """
 
