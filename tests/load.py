@@ -21,7 +21,6 @@ from pathlib import Path
 
 from rigidrel_app.live.server import App
 from rigidrel_app.view.state import presets
-
 from tests.viser_client import SWARM_WARMUP, client_swarm, swarm_result, wait_until
 
 TARGET_FPS = 25.0

@@ -12,14 +12,13 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import rigidrel_core as rr
 from rigidrel_app.backends.raster import write_gif
 from rigidrel_app.export.figures import write_figures
 from rigidrel_app.export.recording import playback_times
 from rigidrel_app.live.server import App
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, presets
-
-import rigidrel_core as rr
 from tests.browser.conftest import CHROMIUM, VIEWPORT, launch_chromium
 from tests.viser_client import wait_until
 

@@ -11,6 +11,8 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+
+import rigidrel_core as rr
 from rigidrel_app.backends.plotly import SplicedFigure, decode_array
 from rigidrel_app.live.playback import PLAY_SECONDS, Playback
 from rigidrel_app.view import camera as cam
@@ -30,8 +32,6 @@ from rigidrel_app.view.state import (
     settings_for,
 )
 from rigidrel_app.view.vocabulary import Chart, Label, Points, Polyline, Style, event_label
-
-import rigidrel_core as rr
 
 #: Every registered scene at its defaults (the app offers each one).
 ALL_SETTINGS = [Settings(kind) for kind in rr.scene_descriptions()]

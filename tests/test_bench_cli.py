@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 import pytest
 from PIL import Image
+
 from rigidrel_app.bench.cli import run
 from rigidrel_app.bench.config import SMOKE
 from rigidrel_app.bench.methods import MethodName

@@ -14,6 +14,7 @@ import warnings
 
 import numpy as np
 import pytest
+
 from rigidrel_app.bench import scenes as bs
 from rigidrel_app.bench.methods import core, ivp, polyline, textbook
 from rigidrel_app.bench.methods.mpmath_slices import ReferenceSlices, reference_slices, relative_errors

@@ -11,9 +11,9 @@ import math
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from rigidrel_app.cli import main
 
 import rigidrel_core as rr
+from rigidrel_app.cli import main
 
 SCENES = list(rr.scene_descriptions())
 OPTIONS = sorted({"--" + p.name.replace("_", "-") for d in rr.scene_descriptions().values() for p in d.parameters})

@@ -10,14 +10,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 from PIL import Image
+
+import rigidrel_core as rr
 from rigidrel_app.export.diagram_html import diagram_figure
 from rigidrel_app.export.figures import paper_figures
 from rigidrel_app.export.recording import record_lanes_html
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, settings_for
 from rigidrel_app.view.vocabulary import Polyline
-
-import rigidrel_core as rr
 
 ROOT = Path(__file__).resolve().parents[1]
 pytestmark = pytest.mark.slow

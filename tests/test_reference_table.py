@@ -12,8 +12,8 @@ from pathlib import Path
 
 import mpmath as mp
 import pytest
-from rigidrel_app.bench.reference import REFERENCE_DIGITS, REFERENCES, boost_event, frame_slice
 
+from rigidrel_app.bench.reference import REFERENCE_DIGITS, REFERENCES, boost_event, frame_slice
 from tests.reference import make_reference
 
 TABLE = Path(__file__).parent / "reference" / "reference.json"

@@ -20,10 +20,10 @@ from typing import Any
 import pytest
 from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
-from rigidrel_app.live.server import App
-from rigidrel_app.view.state import CUSTOM_FRAME
 
 import rigidrel_core as rr
+from rigidrel_app.live.server import App
+from rigidrel_app.view.state import CUSTOM_FRAME
 from tests.viser_client import ClientLoop, LightClient, wait_until
 
 pytestmark = pytest.mark.slow

@@ -160,7 +160,6 @@ def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
     """``rigidrel serve rod-collision --m2 3 --frame 0.4``: a new tab shows that scene in that frame."""
     from rigidrel_app.cli import build_parser, start_settings
     from rigidrel_app.live.server import App
-
     from tests.viser_client import ClientLoop, LightClient, wait_until
 
     args = build_parser().parse_args(["serve", "rod-collision", "--m2", "3", "--frame", "0.4", "--port", "0"])

@@ -14,8 +14,8 @@ import math
 from typing import Any
 
 import numpy as np
-from rigidrel_app.bench.paper import textbook_collision, textbook_gamma
 
+from rigidrel_app.bench.paper import textbook_collision, textbook_gamma
 from tests.test_accuracy import CASES, build, frame
 
 #: The core holds this (relative) ...

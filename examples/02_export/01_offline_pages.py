@@ -9,13 +9,12 @@ import sys
 import tempfile
 from pathlib import Path
 
+import rigidrel_core as rr
 from rigidrel_app.backends.raster import write_gif
 from rigidrel_app.export.diagram_html import diagram_html
 from rigidrel_app.export.recording import playback_times, record_lanes_html
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, settings_for
-
-import rigidrel_core as rr
 
 
 def export(out: Path) -> list[Path]:

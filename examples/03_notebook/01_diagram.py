@@ -8,9 +8,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from rigidrel_app.notebook import diagram
-
 import rigidrel_core as rr
+from rigidrel_app.notebook import diagram
 
 
 def main() -> None:

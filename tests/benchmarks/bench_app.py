@@ -21,10 +21,10 @@ import time
 from dataclasses import replace
 
 import numpy as np
-from rigidrel_app.live.server import ANIMATION_HZ, App
-from rigidrel_app.view.state import CUSTOM_FRAME, Settings
 
 import rigidrel_core as rr
+from rigidrel_app.live.server import ANIMATION_HZ, App
+from rigidrel_app.view.state import CUSTOM_FRAME, Settings
 from tests import load
 from tests.viser_client import ClientLoop, LightClient, wait_until
 

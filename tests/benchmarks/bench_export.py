@@ -13,9 +13,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from rigidrel_app.export.bundle import export_scene
-
 import rigidrel_core as rr
+from rigidrel_app.export.bundle import export_scene
 
 
 def main() -> None:

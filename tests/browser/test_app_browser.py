@@ -16,6 +16,8 @@ from typing import Any
 import numpy as np
 import pytest
 from PIL import Image
+
+import rigidrel_core as rr
 from rigidrel_app.backends.viser import ROD_DEPTH
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
@@ -24,8 +26,6 @@ from rigidrel_app.view.lanes import lane_geometry
 from rigidrel_app.view.scene_view import FRAME_Z, LAB_Z
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings
 from rigidrel_app.view.vocabulary import ROD_COLORS
-
-import rigidrel_core as rr
 from tests.browser.conftest import VIEWPORT
 from tests.viser_client import wait_until
 

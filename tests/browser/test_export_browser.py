@@ -9,12 +9,12 @@ from typing import Any
 import numpy as np
 import pytest
 from PIL import Image
+
+import rigidrel_core as rr
 from rigidrel_app.export.diagram_html import diagram_html
 from rigidrel_app.export.recording import record_lanes_html
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, Settings
-
-import rigidrel_core as rr
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser

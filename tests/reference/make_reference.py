@@ -34,6 +34,7 @@ from pathlib import Path
 from typing import Any
 
 import mpmath as mp
+
 from rigidrel_app.bench.reference import (
     BUILDERS,
     REFERENCE_DIGITS,

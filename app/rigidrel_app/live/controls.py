@@ -91,10 +91,13 @@ class ParameterControl:
     def handles(self) -> tuple[viser.GuiInputHandle[float], ...]:
         return (self.slider,) if self.box is None else (self.box, self.slider)
 
-    def show(self, visible: bool, value: float | None) -> None:
-        for h in self.handles:
+    def show(self, visible: bool, value: float | None, order: float | None = None) -> None:
+        """Show or hide the control; a shown one holds ``value`` and sits at ``order`` in its folder."""
+        for k, h in enumerate(self.handles):
             if h.visible != visible:
                 h.visible = visible
+            if order is not None and h.order != order + 0.001 * k:
+                h.order = order + 0.001 * k
         if value is None:
             return
         if self.box is None:
@@ -229,11 +232,12 @@ class Controls:
         self.play.on_click(lambda _: a.toggle_play())
 
     def show_settings(self, s: Settings) -> None:
-        """Show the controls of ``s``'s scene with its values; hide the others."""
+        """Show the controls of ``s``'s scene with its values, in its description's order; hide the others."""
         d = s.description
-        mine = {p for p in d.parameters if p.slider is not None}
+        mine = {p: k for k, p in enumerate(d.parameters) if p.slider is not None}
         for p, control in self.parameters.items():
-            control.show(p in mine, s.value(p.name) if p in mine else None)
+            shown = p in mine
+            control.show(shown, s.value(p.name) if shown else None, PARAMETER_ORDER + 0.01 * mine[p] if shown else None)
         self.overlay.visible = d.overlay is not None
         if d.overlay is not None:
             self.overlay.label = d.overlay.label
@@ -241,6 +245,10 @@ class Controls:
             self.overlay.value = s.overlay
         if self.scene.value != d.title:
             self.scene.value = d.title
+
+
+#: Where a scene's parameter controls sit in the Scene folder: after the menus, before the overlay.
+PARAMETER_ORDER = 10.0
 
 
 def scene_titles() -> dict[str, str]:
@@ -256,11 +264,14 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
             [NO_PRESET, *presets()],
             initial_value=NO_PRESET,
             hint="Reproduce one of the paper's figures or worked examples exactly",
+            order=1.0,
         )
-        scene = gui.add_dropdown("Scene", list(scene_titles()), initial_value=settings.description.title)
+        scene = gui.add_dropdown("Scene", list(scene_titles()), initial_value=settings.description.title, order=2.0)
         params = parameter_controls(gui)
-        overlay = gui.add_checkbox("Overlay", settings.overlay, hint="Draw the comparison scene dashed over this one")
-        notice = gui.add_markdown("", visible=False)
+        overlay = gui.add_checkbox(
+            "Overlay", settings.overlay, hint="Draw the comparison scene dashed over this one", order=20.0
+        )
+        notice = gui.add_markdown("", visible=False, order=21.0)
     with gui.add_folder("Frame"):
         frame = gui.add_dropdown(
             "Frame", ["lab", CUSTOM_FRAME], hint="The lower lane and the second diagram are drawn in this frame"

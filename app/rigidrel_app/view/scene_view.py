@@ -179,8 +179,13 @@ def readout_markdown(resolved: Resolved) -> str:
     d = rr.describe(scene)
     params = [f"{d.parameter(k).symbol} = {format_value(v)}" for k, v in scene.parameters.items()]
     v = ", ".join(f"{r.name}: {v:+.4f}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
-    ev = " · ".join(f"{k} ({t:.3f}, {x:.3f})" for k, (t, x) in scene.events.items())
+    ev = " · ".join(f"{k} ({_fixed(t)}, {_fixed(x)})" for k, (t, x) in scene.events.items())
     return (
         f"**Scene** {', '.join(params)}  \n**Final velocities** {v}  \n**Events (lab t, x)** {ev}  \n"
         f"**Frame** {frame_title(frame)}"
     )
+
+
+def _fixed(x: float, digits: int = 3) -> str:
+    """``x`` with ``digits`` decimals, and rounding noise such as -1e-17 shown as 0.000, not -0.000."""
+    return f"{round(x, digits) + 0.0:.{digits}f}"
