@@ -27,6 +27,9 @@ from ..view.vocabulary import Label
 #: Pixel size of the page's plot areas (the diagram and the length plot side by side).
 DIAGRAM_PX = (560.0, 520.0)
 LENGTH_PX = (420.0, 300.0)
+#: Round values per slider (besides the settings' own): every pair is a precomputed frame of the page.
+SLIDER_A_STEPS = 9
+SLIDER_B_STEPS = 5
 #: The frame velocities of slider B for a scene with a single slider parameter.
 FRAME_BETAS = (-0.8, -0.5, 0.0, 0.5, 0.8)
 
@@ -56,18 +59,18 @@ class SliderAxis:
         return self.values.index(own) if own in self.values else 0
 
 
-def page_values(slider: rr.Slider) -> tuple[float, ...]:
-    """Round values across a slider's range: 5 to 11 steps of 1, 2 or 5 times a power of ten
-    (linear), or 1 and 3 per decade (log)."""
+def page_values(slider: rr.Slider, most: int) -> tuple[float, ...]:
+    """At most ``most`` round values across a slider's range: steps of 1, 2, 2.5 or 5 times a power of
+    ten (linear), or powers of ten, thinned evenly (log)."""
     if slider.scale == "log":
-        lo, hi = math.floor(math.log10(slider.lo)), math.ceil(math.log10(slider.hi))
-        grid = [m * 10.0**k for k in range(lo, hi + 1) for m in (1.0, 3.0)]
-        return tuple(round(v, 6) for v in grid if slider.lo <= v <= slider.hi)
-    span = slider.hi - slider.lo
-    for step in (m * 10.0**k for k in range(-3, 4) for m in (1.0, 2.0, 5.0)):
+        lo, hi = math.ceil(math.log10(slider.lo) - 1e-9), math.floor(math.log10(slider.hi) + 1e-9)
+        decades = list(range(lo, hi + 1))
+        stride = max(1, math.ceil((len(decades) - 1) / max(most - 1, 1)))
+        return tuple(10.0**k for k in decades[::stride])
+    for step in (m * 10.0**k for k in range(-3, 4) for m in (1.0, 2.0, 2.5, 5.0)):
         first = math.ceil(slider.lo / step - 1e-9)
         last = math.floor(slider.hi / step + 1e-9)
-        if last - first <= 10 and step >= span / 12:
+        if last - first + 1 <= most:
             return tuple(round(k * step, 6) for k in range(first, last + 1))
     return (slider.lo, slider.hi)
 
@@ -86,10 +89,10 @@ def slider_axes(s: Settings) -> tuple[SliderAxis, SliderAxis]:
     frame's velocity), around the settings' own values."""
     params = [p for p in s.description.parameters if p.slider is not None and s.value(p.name) is not None]
     axes: list[SliderAxis] = []
-    for p in params[:2]:
+    for p, most in zip(params[:2], (SLIDER_A_STEPS, SLIDER_B_STEPS), strict=False):
         assert p.slider is not None
         fmt = (lambda v: f"{v:.3g}") if p.slider.scale == "log" else (lambda v: f"{v:.2f}")
-        axes.append(_axis(p.label, p.name, page_values(p.slider), s, fmt))
+        axes.append(_axis(p.label, p.name, page_values(p.slider, most), s, fmt))
     if len(axes) < 2:
         axes.append(_axis("frame β", None, FRAME_BETAS, s, lambda v: f"{v:+.2f}"))
     return axes[0], axes[1]

@@ -238,8 +238,9 @@ class Controls:
         for p, control in self.parameters.items():
             shown = p in mine
             control.show(shown, s.value(p.name) if shown else None, PARAMETER_ORDER + 0.01 * mine[p] if shown else None)
-        self.overlay.visible = d.overlay is not None
-        if d.overlay is not None:
+        if self.overlay.visible != (d.overlay is not None):
+            self.overlay.visible = d.overlay is not None
+        if d.overlay is not None and self.overlay.label != d.overlay.label:
             self.overlay.label = d.overlay.label
         if self.overlay.value != s.overlay:
             self.overlay.value = s.overlay

@@ -135,10 +135,14 @@ class Session:
         choices = frame_choices(resolved.scene)
         if tuple(c.frame.options) != choices:
             c.frame.options = choices
-        c.frame.value = frame_choice(resolved.scene, resolved.frame)
+        for handle, value in (
+            (c.frame, frame_choice(resolved.scene, resolved.frame)),
+            (c.preset, preset_of(self.settings)),
+        ):
+            if handle.value != value:  # each assignment is a message to the browser
+                handle.value = value
         if c.beta.value != self.settings.beta:
             c.beta.value = self.settings.beta
-        c.preset.value = preset_of(self.settings)
         self.set_playback(self.playback.with_window(d.window))
         c.time.min, c.time.max = d.window
         c.time.step = nice_step(d.window[1] - d.window[0])
