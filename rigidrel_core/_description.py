@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -20,7 +19,7 @@ from typing import TYPE_CHECKING, Literal
 
 from ._kinds import ObstacleKind as ObstacleKind
 from ._kinds import OriginEvent as OriginEvent
-from ._validate import ParameterError
+from ._validate import ParameterError, as_real
 
 if TYPE_CHECKING:
     from ._scene import Scene
@@ -51,10 +50,9 @@ class Interval:
         return f"in {left}{self.lo:g}, {self.hi:g}{right}"
 
 
-#: Speeds (0, 1), velocities (-1, 1), positive numbers, restitution [0, 1].
+#: Speeds (0, 1), velocities (-1, 1), restitution [0, 1].
 SPEED = Interval(0.0, 1.0)
 VELOCITY = Interval(-1.0, 1.0)
-POSITIVE = Interval(0.0, math.inf)
 UNIT_CLOSED = Interval(0.0, 1.0, True, True)
 
 
@@ -111,10 +109,8 @@ class Parameter:
     def check(self, value: object) -> float:
         """``value`` as a float if it lies in :attr:`domain`; else :class:`ParameterError` naming it."""
         allowed = f"a finite number {self.domain.text()}"
-        if isinstance(value, bool) or not isinstance(value, numbers.Real):
-            raise ParameterError(self.name, allowed, value)
-        x = float(value)
-        if not (math.isfinite(x) and x in self.domain):
+        x = as_real(self.name, value, allowed)
+        if x not in self.domain:
             raise ParameterError(self.name, allowed, value)
         return x
 
@@ -182,7 +178,6 @@ class SceneDescription:
     overlay: Overlay | None = None
     order: int = 100
     """Position in the app's menu (teaching order)."""
-    rod_names: tuple[str, ...] = ("rod",)
     parameter_map: Mapping[str, Parameter] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:

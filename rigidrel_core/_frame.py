@@ -54,13 +54,6 @@ class Frame:
         return cls(ExactVelocity.from_float(check_velocity("beta", beta)), name)
 
     @classmethod
-    def from_exact(cls, velocity: ExactVelocity, name: str | None = None) -> Frame:
-        """The frame moving with an exact (double-double) velocity, e.g. a rod's final one."""
-        if not (isinstance(velocity, ExactVelocity) and velocity.gap > 0.0 and math.isfinite(velocity.hi)):
-            raise ParameterError("frame velocity", "an ExactVelocity below light speed", velocity)
-        return cls(velocity, name)
-
-    @classmethod
     def from_rapidity(cls, rapidity: float, name: str | None = None) -> Frame:
         """The frame of rapidity ``psi`` (``beta = tanh psi``), ``|psi| <= 700``, the float ``psi``
         taken as exact: ``tanh psi = expm1(2 psi)/(expm1(2 psi) + 2)`` and ``1 - |tanh psi| =

@@ -20,24 +20,32 @@ from .scenes import discover
 
 _lock = threading.Lock()
 _registry: dict[str, SceneDescription] = {}
-_loaded = False
+_catalogue: frozenset[str] = frozenset()
+_ordered: Mapping[str, SceneDescription] | None = None
+"""The registry in teaching order, kept until a scene is registered or unregistered."""
 
 
 def _ensure_loaded() -> dict[str, SceneDescription]:
-    global _loaded
-    if not _loaded:
+    global _catalogue
+    if not _catalogue:
         with _lock:
-            if not _loaded:
-                for d in discover():
+            if not _catalogue:
+                found = discover()
+                for d in found:
                     _registry.setdefault(d.kind, d)
-                _loaded = True
+                _catalogue = frozenset(d.kind for d in found)
     return _registry
 
 
 def scene_descriptions() -> Mapping[str, SceneDescription]:
     """Every registered scene by name, in teaching order."""
+    global _ordered
     reg = _ensure_loaded()
-    return MappingProxyType(dict(sorted(reg.items(), key=lambda kv: (kv[1].order, kv[0]))))
+    ordered = _ordered
+    if ordered is None:
+        ordered = MappingProxyType(dict(sorted(reg.items(), key=lambda kv: (kv[1].order, kv[0]))))
+        _ordered = ordered
+    return ordered
 
 
 def describe(kind: str | Scene) -> SceneDescription:
@@ -54,27 +62,27 @@ def register_scene(description: SceneDescription) -> SceneDescription:
     """Add a scene to the registry (``ValueError`` if its name is taken by another description)."""
     if not isinstance(description, SceneDescription):
         raise ParameterError("description", "a SceneDescription", description)
+    global _ordered
     reg = _ensure_loaded()
     with _lock:
         if reg.get(description.kind, description) is not description:
             raise ParameterError("description.kind", "a name no other scene has", description.kind)
         reg[description.kind] = description
+        _ordered = None
     return description
 
 
 def unregister_scene(kind: str) -> SceneDescription:
     """Remove a scene that :func:`register_scene` added (the catalogue's own scenes stay)."""
+    global _ordered
     reg = _ensure_loaded()
     with _lock:
-        if kind in _catalogue_kinds():
+        if kind in _catalogue:
             raise ParameterError("kind", "a scene added with register_scene, not one of the catalogue's", kind)
         if kind not in reg:
             raise ParameterError("kind", f"one of the registered scenes: {', '.join(reg)}", kind)
+        _ordered = None
         return reg.pop(kind)
-
-
-def _catalogue_kinds() -> frozenset[str]:
-    return frozenset(d.kind for d in discover())
 
 
 def build_scene(kind: str, **values: float | None) -> Scene:

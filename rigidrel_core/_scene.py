@@ -27,7 +27,6 @@ FloatArray = npt.NDArray[np.float64]
 
 #: The two ends of a rod as material coordinates (fractions of the rest length from the left end).
 ENDS = np.array([0.0, 1.0])
-_ENDS = ENDS
 _MAX_CACHED_PLANS = 64
 
 
@@ -126,7 +125,7 @@ class Scene:
         frame = check_frame(frame)
         out: dict[str, tuple[float, float]] = {}
         for spec in self.event_specs:
-            start, stop = self._plan(frame, _ENDS, spec.rod).switch_events()
+            start, stop = self._plan(frame, ENDS, spec.rod).switch_events()
             e = (start if spec.phase == "start" else stop)[spec.end]
             out[spec.name] = (float(e[0]), float(e[1]))
         return MappingProxyType(out)
@@ -157,7 +156,7 @@ class Scene:
         """
         frame = check_frame(frame)
         tt = check_times("t", t)
-        x = self._plan(frame, _ENDS).positions(tt.ravel())
+        x = self._plan(frame, ENDS).positions(tt.ravel())
         return x.reshape((self.n_rods, 2, *tt.shape))
 
     def material_positions(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike) -> FloatArray:
@@ -171,7 +170,7 @@ class Scene:
         x = self._plan(frame, f).positions(tt.ravel())
         return x.reshape((self.n_rods, f.size, *tt.shape))
 
-    def velocities(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = _ENDS) -> FloatArray:
+    def velocities(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = ENDS) -> FloatArray:
         """dx'/dt' of material points (default: the ends). Shape ``(n_rods, len(fractions), *t.shape)``."""
         frame = check_frame(frame)
         tt = check_times("t", t)
@@ -179,7 +178,7 @@ class Scene:
         v = self._plan(frame, f).velocities(tt.ravel())
         return v.reshape((self.n_rods, f.size, *tt.shape))
 
-    def proper_times(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = _ENDS) -> FloatArray:
+    def proper_times(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = ENDS) -> FloatArray:
         """Clock readings of material points at frame times ``t'``.
 
         Every clock reads 0 where its point starts changing velocity: the clocks are
@@ -221,10 +220,10 @@ class Scene:
         frame = check_frame(frame)
         tt = check_times("t", t)
         rest = np.array([r.motion.length for r in self.rods])
-        lengths = self._plan(frame, _ENDS).equal_time_lengths(tt.ravel(), rest)
+        lengths = self._plan(frame, ENDS).equal_time_lengths(tt.ravel(), rest)
         return lengths.reshape((self.n_rods, *tt.shape))
 
-    def switch_times(self, frame: Frame = LAB, *, fractions: npt.ArrayLike = _ENDS) -> FloatArray:
+    def switch_times(self, frame: Frame = LAB, *, fractions: npt.ArrayLike = ENDS) -> FloatArray:
         """Frame times at which each material point starts and stops changing velocity.
 
         Shape ``(n_rods, len(fractions), 2)``; between them the point is on its hyperbola,
@@ -240,7 +239,7 @@ class Scene:
         frame = check_frame(frame)
         times = [0.0]
         for i in range(self.n_rods):
-            start, stop = self._plan(frame, _ENDS, i).switch_events()
+            start, stop = self._plan(frame, ENDS, i).switch_events()
             times.extend(start[:, 0].tolist())
             times.extend(stop[:, 0].tolist())
         t0, t1 = min(times), max(times)

@@ -21,7 +21,8 @@ class ParameterError(ValueError):
         super().__init__(f"{name} must be {allowed}; got {got!r}")
 
 
-def _as_float(name: str, value: object, allowed: str) -> float:
+def as_real(name: str, value: object, allowed: str) -> float:
+    """``value`` as a finite float (bools, text, complex, NaN and infinities are refused, naming ``name``)."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ParameterError(name, allowed, value)
     x = float(value)
@@ -33,44 +34,8 @@ def _as_float(name: str, value: object, allowed: str) -> float:
 def check_velocity(name: str, value: object) -> float:
     """A velocity in the open interval (-1, 1) (c = 1)."""
     allowed = "a finite number in (-1, 1)"
-    x = _as_float(name, value, allowed)
+    x = as_real(name, value, allowed)
     if not -1.0 < x < 1.0:
-        raise ParameterError(name, allowed, value)
-    return x
-
-
-def check_speed(name: str, value: object) -> float:
-    """A speed in the open interval (0, 1)."""
-    allowed = "a finite number in (0, 1)"
-    x = _as_float(name, value, allowed)
-    if not 0.0 < x < 1.0:
-        raise ParameterError(name, allowed, value)
-    return x
-
-
-def check_positive(name: str, value: object) -> float:
-    """A finite number > 0 (masses, lengths, accelerations)."""
-    allowed = "a finite number > 0"
-    x = _as_float(name, value, allowed)
-    if not x > 0.0:
-        raise ParameterError(name, allowed, value)
-    return x
-
-
-def check_restitution(name: str, value: object) -> float:
-    """A coefficient of restitution in the closed interval [0, 1]."""
-    allowed = "a finite number in [0, 1]"
-    x = _as_float(name, value, allowed)
-    if not 0.0 <= x <= 1.0:
-        raise ParameterError(name, allowed, value)
-    return x
-
-
-def check_open_unit(name: str, value: object) -> float:
-    """A dimensionless number in the open interval (0, 1)."""
-    allowed = "a finite number in (0, 1)"
-    x = _as_float(name, value, allowed)
-    if not 0.0 < x < 1.0:
         raise ParameterError(name, allowed, value)
     return x
 

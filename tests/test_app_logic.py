@@ -67,7 +67,7 @@ def test_invalid_settings_give_a_notice_not_an_exception() -> None:
     assert isinstance(notice, str) and notice.startswith("V2 = 0.7 refused") and "so that the rods collide" in notice
     assert "last valid scene" in notice
     notice = resolve(Settings("wall-collision", frame=CUSTOM_FRAME, beta=1.0))
-    assert isinstance(notice, str) and notice.startswith("β = 1.0 refused") and "(-1, 1)" in notice
+    assert isinstance(notice, str) and notice.startswith("β = 1.0 refused") and "[-0.99, 0.99]" in notice
     notice = resolve(Settings("rod-collision", frame="rod after"))
     assert isinstance(notice, str) and "'barycentric'" in notice  # a frame the scene lacks names those it has
 
@@ -101,6 +101,17 @@ def test_settings_round_trip_and_frames_from_text() -> None:
     assert frame_from_text(scene, None) == scene.frame("barycentric")
     with pytest.raises(ValueError, match="frame must be a velocity in \\(-1, 1\\) or one of 'lab'"):
         frame_from_text(scene, "sideways")
+
+
+def test_settings_keep_an_omitted_optional_parameter_omitted() -> None:
+    """A velocity change built as an impulse (no a′_F) is shown, exported and served as that impulse,
+    not with the slider's default acceleration."""
+    scene = rr.velocity_change(0.2, 0.7, 1.0, None)
+    s = settings_for(scene, rr.default_frame(scene))
+    assert s.value("a_front") is None
+    r = resolve(s)
+    assert isinstance(r, Resolved) and "a_front" not in r.scene.parameters
+    assert r.scene.events == scene.events
 
 
 def test_readout_names_every_parameter_by_its_symbol() -> None:
@@ -195,7 +206,7 @@ def test_lengths_within_half_a_pixel_and_flat_while_coasting() -> None:
 def test_minkowski_diagrams_carry_worldlines_events_cone_and_axes() -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
     lab, bary = rr.LAB, scene.frame("barycentric")
-    chart = minkowski_static(scene, View(lab, bary, "lab", "", "'"), (-1, 1), (-2, 2), 300.0)
+    chart = minkowski_static(scene, View(lab, bary, "", "'"), (-1, 1), (-2, 2), 300.0)
     names = {i.style.name for i in chart.items if i.style.name}
     assert {"rod 1", "rod 2", "light cone of the origin", "events"} <= names
     assert any(n and "axes of barycentric" in n for n in names)
@@ -205,7 +216,7 @@ def test_minkowski_diagrams_carry_worldlines_events_cone_and_axes() -> None:
     pts = next(i for i in chart.items if isinstance(i, Points))
     ev = np.array(list(scene.events.values()))
     assert np.array_equal(pts.y, ev[:, 0]) and np.array_equal(pts.x, ev[:, 1])
-    now = minkowski_now(View(lab, bary, "lab", "", "'"), 0.3, 10.0, scene.positions([0.3])[:, :, 0])
+    now = minkowski_now(View(lab, bary, "", "'"), 0.3, 10.0, scene.positions([0.3])[:, :, 0])
     other_now = next(i for i in now if isinstance(i, Polyline) and i.style.name and "t' = 0.3" in i.style.name)
     # the chosen frame's line of simultaneity t' = 0.3, drawn in the lab
     t_prime = (bary @ np.stack([other_now.y, other_now.x], axis=-1))[:, 0]

@@ -63,6 +63,10 @@ def test_events_json_in_a_preset_frame() -> None:
         (["events"], "required"),
         (["serve", "rod-collision", "--v2", "0.9"], "v2 must be less than v1 = 0.6"),
         (["serve", "wall-collision", "--frame", "barycentric"], "frame must be a velocity in (-1, 1) or one of"),
+        (
+            ["serve", "rod-collision", "--frame", "0.999"],
+            "β must be in [-0.99, 0.99], the custom frame's slider; got 0.999",
+        ),
         (["frobnicate"], "invalid choice"),
     ],
 )

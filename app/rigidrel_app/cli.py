@@ -16,7 +16,7 @@ from typing import Any, NoReturn
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
-from .view.state import CUSTOM_FRAME, Settings, format_value, frame_from_text, resolve
+from .view.state import Settings, build, format_value, frame_from_text, settings_for
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
 
@@ -282,16 +282,11 @@ def start_settings(prog: str, args: argparse.Namespace) -> Settings | None:
     if args.scene is None:
         return None
     scene, frame = scene_from_args(prog, args, None)
-    preset = frame.name if frame.name is not None and scene.frames.get(frame.name) == frame else None
-    settings = Settings(
-        scene.kind,
-        tuple(scene_values(args).items()),
-        preset if preset is not None else CUSTOM_FRAME,
-        0.0 if preset is not None else frame.beta,
-    )
-    checked = resolve(settings)
-    if isinstance(checked, str):
-        fail(prog, checked)
+    settings = settings_for(scene, frame)
+    try:
+        build(settings)  # e.g. a custom frame the β slider cannot hold
+    except ValueError as exc:
+        fail(prog, str(exc))
     return settings
 
 

@@ -221,7 +221,6 @@ ROD_COLLISION = SceneDescription(
         ScenePreset("Fig. 4: collision, M1 = 2 M2", {**_PAPER, "m1": 1.0, "m2": 0.5}),
     ),
     order=60,
-    rod_names=("rod 1", "rod 2"),
 )
 
 SCENES = (ROD_COLLISION,)

@@ -21,7 +21,7 @@ import viser
 import rigidrel_core as rr
 
 from ..view.scene_view import CONTROL_PX, LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX
-from ..view.state import CUSTOM_FRAME, NO_PRESET, Settings, preset_of, presets
+from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, NO_PRESET, Settings, preset_of, presets
 from .playback import Playback
 
 T = TypeVar("T")
@@ -218,7 +218,8 @@ class Controls:
                 act=lambda v: a.change(replace(a.settings, overlay=v)))  # fmt: skip
         checked(self.frame, label="Frame", allowed="one of the listed frames", legal=lambda v: v in self.frame.options,
                 current=a.frame_choice, act=lambda v: a.change(replace(a.settings, frame=v)))  # fmt: skip
-        checked(self.beta, label="β (custom)", allowed="a number in [-0.99, 0.99]", legal=within(-0.99, 0.99),
+        checked(self.beta, label="β (custom)", allowed="a number in [{:g}, {:g}]".format(*CUSTOM_BETA),
+                legal=within(*CUSTOM_BETA),
                 current=lambda: a.settings.beta,
                 act=lambda b: a.change(replace(a.settings, frame=CUSTOM_FRAME, beta=b)))  # fmt: skip
         checked(self.time, label="t, t'", allowed="a time inside the window",
@@ -279,8 +280,7 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
         )
         beta = gui.add_slider(
             "β (custom)",
-            -0.99,
-            0.99,
+            *CUSTOM_BETA,
             0.01,
             settings.beta,
             hint="Velocity of the custom frame, in (-1, 1); moving it selects the custom frame",

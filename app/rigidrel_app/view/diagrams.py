@@ -7,6 +7,7 @@ one unit of each equally long, so light moves at 45 degrees.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -44,17 +45,21 @@ class View:
 
     frame: rr.Frame
     other: rr.Frame
-    name: str
-    """Axis names of this frame: "" for the lab (t, x), "'" for the chosen frame (t', x')."""
     prime: str
+    """Axis names of this frame: "" for the lab (t, x), "'" for the chosen frame (t', x')."""
     other_prime: str
+
+    @functools.cached_property
+    def from_other(self) -> rr.Frame:
+        """This frame seen from the other one (composed once, exactly: the now-lines use it every update)."""
+        return self.frame @ self.other.inverse()
 
     @staticmethod
     def alone(frame: rr.Frame) -> View:
         """A diagram of ``frame`` compared with the lab (or with nothing, if it is the lab)."""
         if frame.same_velocity(rr.LAB):
-            return View(frame, frame, frame_title(frame), "", "")
-        return View(frame, rr.LAB, frame_title(frame), "'", "")
+            return View(frame, frame, "", "")
+        return View(frame, rr.LAB, "'", "")
 
     @property
     def compares(self) -> bool:
@@ -72,7 +77,7 @@ def frame_title(frame: rr.Frame) -> str:
 def _to_view(view: View, events_other: FloatArray) -> FloatArray:
     """Events of the other frame ``(..., 2)`` into this view's frame: one boost by the exactly
     composed relative frame (no round trip through the lab)."""
-    return (view.frame @ view.other.inverse()) @ events_other
+    return view.from_other @ events_other
 
 
 def window_x_range(scene: rr.Scene, frames: tuple[rr.Frame, ...], t_range: tuple[float, float]) -> tuple[float, float]:

@@ -61,6 +61,8 @@ class Drawn:
     lab_chart: Chart
     frame_chart: Chart
     length_chart: Chart
+    views: tuple[View, View]
+    """The lab diagram's view and the chosen frame's (their relative frames composed once)."""
 
     @property
     def x_range(self) -> tuple[float, float]:
@@ -93,7 +95,7 @@ class Drawn:
         The length plot's markers are the core's equal-time lengths in both frames.
         """
         r = self.resolved
-        lab_view, frame_view = _views(r.frame)
+        lab_view, frame_view = self.views
         lengths = [r.scene.lengths(now, f) for f in (_LAB, r.frame)]
         length_top = self.length_chart.y_range[1]
         return (
@@ -105,7 +107,7 @@ class Drawn:
 
 def _views(frame: rr.Frame) -> tuple[View, View]:
     """The lab diagram (compared with ``frame``) and the chosen frame's (compared with the lab)."""
-    return View(_LAB, frame, "lab", "", "'"), View(frame, _LAB, frame_title(frame), "'", "")
+    return View(_LAB, frame, "", "'"), View(frame, _LAB, "'", "")
 
 
 def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
@@ -140,6 +142,7 @@ def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
         lab_chart=lab_chart,
         frame_chart=frame_chart,
         length_chart=length_chart,
+        views=(lab_view, frame_view),
     )
 
 

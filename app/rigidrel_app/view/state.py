@@ -18,6 +18,8 @@ import rigidrel_core as rr
 
 #: The frame dropdown's entry for a frame set by the β slider.
 CUSTOM_FRAME = "custom (β slider)"
+#: The range of the β slider, and so of a custom frame's velocity (the core takes any |β| < 1).
+CUSTOM_BETA = (-0.99, 0.99)
 #: The preset menu's entry when the controls show no paper figure.
 NO_PRESET = "—"
 #: The scene a new tab opens on.
@@ -122,12 +124,9 @@ def frame_choice(scene: rr.Scene, frame: rr.Frame) -> str:
 def settings_for(scene: rr.Scene, frame: rr.Frame) -> Settings:
     """The settings that show ``scene`` in ``frame`` (the inverse of :func:`resolve`)."""
     choice = frame_choice(scene, frame)
-    return Settings(
-        scene.kind,
-        tuple(scene.parameters.items()),
-        choice,
-        frame.beta if choice == CUSTOM_FRAME else 0.0,
-    )
+    # every parameter of the description: an optional one the scene was built without stays None
+    values = tuple((p.name, scene.parameters.get(p.name)) for p in rr.describe(scene).parameters)
+    return Settings(scene.kind, values, choice, frame.beta if choice == CUSTOM_FRAME else 0.0)
 
 
 def frame_from_text(scene: rr.Scene, text: str | None) -> rr.Frame:
@@ -145,23 +144,29 @@ def frame_from_text(scene: rr.Scene, text: str | None) -> rr.Frame:
     return rr.Frame.from_velocity(beta, name="custom")
 
 
+def build(s: Settings) -> Resolved:
+    """The scene and frame the settings mean; a ``ValueError`` names the parameter that makes none."""
+    scene = s.description.build(**s.parameters())
+    if s.frame == CUSTOM_FRAME:
+        lo, hi = CUSTOM_BETA
+        if not lo <= s.beta <= hi:
+            raise rr.ParameterError("β", f"in [{lo:g}, {hi:g}], the custom frame's slider", s.beta)
+        frame = rr.Frame.from_velocity(s.beta, name="custom")
+    elif s.frame is None:
+        frame = rr.default_frame(scene)
+    else:
+        frame = scene.frame(s.frame)
+    d = s.description
+    overlay = d.overlay.build(scene.parameters) if s.overlay and d.overlay is not None else None
+    return Resolved(scene, frame, overlay)
+
+
 def resolve(s: Settings) -> Resolved | str:
-    """The scene and frame, or a one-sentence notice of why they cannot be built."""
+    """The scene and frame, or a one-sentence notice of why they cannot be built (for the app)."""
     try:
-        scene = s.description.build(**s.parameters())
-        if s.frame == CUSTOM_FRAME:
-            frame = rr.Frame.from_velocity(s.beta, name="custom")
-        elif s.frame is None:
-            frame = rr.default_frame(scene)
-        else:
-            frame = scene.frame(s.frame)
-        overlay = None
-        d = s.description
-        if s.overlay and d.overlay is not None:
-            overlay = d.overlay.build(scene.parameters)
+        return build(s)
     except ValueError as exc:
         return notice(s, exc)
-    return Resolved(scene, frame, overlay)
 
 
 def notice(s: Settings, exc: ValueError) -> str:
@@ -173,7 +178,7 @@ def notice(s: Settings, exc: ValueError) -> str:
         value = s.value(name)
         shown = "none" if value is None else f"{value:.6g}"
         return f"{p.label} = {shown} refused: {exc}. The last valid scene stays on screen."
-    if name == "beta":
+    if name in ("beta", "β"):
         return f"β = {s.beta!r} refused: {exc}. The last valid scene stays on screen."
     return f"{exc}. The last valid scene stays on screen."
 
