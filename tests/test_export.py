@@ -139,3 +139,10 @@ def test_every_registered_scene_exports_its_pages(kind: str) -> None:
     assert len(figure["frames"]) >= 4
     html = record_lanes_html(build_drawing(Resolved(scene, frame)), seconds=1.0, fps=5.0)
     assert "__VISER_EMBED_DATA__" in html
+
+
+def test_a_frame_beyond_the_apps_slider_still_exports() -> None:
+    """The app's β slider stops at 0.99, the exports do not: a diagram page in a frame at -0.995."""
+    scene = rr.build_scene("constant-acceleration")
+    figure = diagram_figure(settings_for(scene, rr.Frame.from_velocity(-0.995)))
+    assert "β = -0.995" in figure["layout"]["title"]["text"] and len(figure["frames"]) >= 4

@@ -16,7 +16,7 @@ from typing import Any, NoReturn
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
-from .view.state import Settings, build, format_value, frame_from_text, settings_for
+from .view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, format_value, frame_from_text, settings_for
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
 
@@ -283,10 +283,9 @@ def start_settings(prog: str, args: argparse.Namespace) -> Settings | None:
         return None
     scene, frame = scene_from_args(prog, args, None)
     settings = settings_for(scene, frame)
-    try:
-        build(settings)  # e.g. a custom frame the β slider cannot hold
-    except ValueError as exc:
-        fail(prog, str(exc))
+    lo, hi = CUSTOM_BETA
+    if settings.frame == CUSTOM_FRAME and not lo <= settings.beta <= hi:  # every tab shows it on the β slider
+        fail(prog, f"--frame must be in [{lo:g}, {hi:g}] (the app's β slider) or a preset; got {settings.beta!r}")
     return settings
 
 

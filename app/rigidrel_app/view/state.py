@@ -18,7 +18,7 @@ import rigidrel_core as rr
 
 #: The frame dropdown's entry for a frame set by the β slider.
 CUSTOM_FRAME = "custom (β slider)"
-#: The range of the β slider, and so of a custom frame's velocity (the core takes any |β| < 1).
+#: The range of the app's β slider (the core, the exports and the command line take any |β| < 1).
 CUSTOM_BETA = (-0.99, 0.99)
 #: The preset menu's entry when the controls show no paper figure.
 NO_PRESET = "—"
@@ -148,9 +148,6 @@ def build(s: Settings) -> Resolved:
     """The scene and frame the settings mean; a ``ValueError`` names the parameter that makes none."""
     scene = s.description.build(**s.parameters())
     if s.frame == CUSTOM_FRAME:
-        lo, hi = CUSTOM_BETA
-        if not lo <= s.beta <= hi:
-            raise rr.ParameterError("β", f"in [{lo:g}, {hi:g}], the custom frame's slider", s.beta)
         frame = rr.Frame.from_velocity(s.beta, name="custom")
     elif s.frame is None:
         frame = rr.default_frame(scene)
@@ -178,7 +175,7 @@ def notice(s: Settings, exc: ValueError) -> str:
         value = s.value(name)
         shown = "none" if value is None else f"{value:.6g}"
         return f"{p.label} = {shown} refused: {exc}. The last valid scene stays on screen."
-    if name in ("beta", "β"):
+    if name == "beta":
         return f"β = {s.beta!r} refused: {exc}. The last valid scene stays on screen."
     return f"{exc}. The last valid scene stays on screen."
 
