@@ -87,13 +87,24 @@ class RigidMotion:
 def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatArray) -> MotionPlan:
     """Per-frame constants of every rod's material points ``fractions`` (rows: rod-major).
 
-    Every piece is anchored where it crosses the frame's ``t' = 0`` line, the line through
-    the scene's key event (the origin). Inertial piece of lab velocity ``v``:
-    ``x' = X_0' + tanh(theta') t'`` with ``X_0' = a cosh(theta) / cosh(theta')`` and ``a`` the
-    lab intercept at ``t = 0``: ``a = x_C + sign rho / gamma`` (the tangent's distance from
-    the centre, contracted) or, when the centre lies on the other side,
-    ``a = x_V - sign rho (gamma - 1)/gamma`` with ``gamma - 1 = (gamma v)^2 / (gamma + 1)``.
-    Hyperbola: ``x' = X_h + sign t'(t' - 2 t'_C) / (q + q_0)`` with
+    **Switch events.** A point at rest-distance ``rho`` from its centre ``C = (0, x_C)`` starts and
+    stops changing velocity at the lab events ``C + sign rho (sinh theta, cosh theta)``, ``theta``
+    the lab rapidity before and after. Their light-cone coordinates ``u = t - x`` and ``w = t + x``
+    are each a sum of two terms, anchored at the centre (``u = -x_C - sign rho e^-theta``,
+    ``w = x_C + sign rho e^theta``) or at the point's vertex ``(0, x_V)``
+    (``u = -x_V - sign rho expm1(-theta)``, ``w = x_V + sign rho expm1(theta)``), whichever has the
+    smaller terms. A boost multiplies them, ``u' = e^psi u``, ``w' = e^-psi w``, and
+    ``t' = (u' + w')/2``, ``x' = (w' - u')/2``: no frame-sized terms cancel, so the frame times
+    the clocks are read from are good to the lab's own rounding.
+
+    **Inertial pieces** of lab velocity ``v``: ``x' = X_0' + tanh(theta') t'`` with
+    ``X_0' = a cosh(theta) / cosh(theta')`` and ``a`` the lab intercept at ``t = 0``:
+    ``a = x_C + sign rho / gamma`` (the tangent's distance from the centre, contracted) or, when the
+    centre lies on the other side, ``a = x_V - sign rho (gamma - 1)/gamma`` with
+    ``gamma - 1 = (gamma v)^2 / (gamma + 1)``: a product, good to a few ulp of itself however
+    small, so a point near the frame's origin keeps its relative precision.
+
+    **Hyperbola**: ``x' = X_h + sign t'(t' - 2 t'_C) / (q + q_0)`` with ``t'_C = -x_C sinh psi``,
     ``q = sqrt(rho^2 + (t' - t'_C)^2)``, ``q_0 = sqrt(rho^2 + t'_C^2)`` and ``X_h`` its ``t' = 0``
     crossing ``x'_C + sign q_0``, or, when those two cancel, ``x_V (x_C - sign rho)/(x'_C - sign q_0)``
     (the product of the quadratic's roots). One row of plain float arithmetic per rod and fraction.
@@ -101,6 +112,7 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
     sh = frame.proper_velocity
     chm1 = frame.lorentz_factor_minus_one()
     ch = 1.0 + chm1
+    up, down = frame.doppler_factors()  # exp(psi), exp(-psi)
     fs = fractions.tolist()
     rows: list[tuple[float, ...]] = []
     # Plans have few rows (2 per rod for the ends, 11 for the ticks): float arithmetic on
@@ -120,6 +132,11 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
             g, u = v.lorentz_factor(), v.proper_velocity()
             ends.append((g, u * u / ((g + 1.0) * g), g / math.cosh(th)))
         (g_i, k_i, c_i), (g_f, k_f, c_f) = ends
+        # lab light-cone factors of the two switch rapidities: e^theta, e^-theta, expm1(+-theta)
+        lab_i, lab_f = m.velocity_initial.rapidity(), m.velocity_final.rapidity()
+        factors = [(math.exp(th), math.exp(-th), math.expm1(th), math.expm1(-th)) for th in (lab_i, lab_f)]
+        # proper time the change takes per unit rest-distance: the lab rapidity change (invariant)
+        turn = abs(relative_rapidity(m.velocity_final, m.velocity_initial))
         for f in fs:
             if f == 0.0:
                 rho, x_lab = m.radius_left, m.vertex_left
@@ -133,25 +150,38 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
                 a_i, a_f = xc + sig * rho / g_i, xc + sig * rho / g_f
             else:
                 a_i, a_f = x_lab - sig * rho * k_i, x_lab - sig * rho * k_f
-            s_i, s_f = sig * rho * sinh_i, sig * rho * sinh_f
+            srho = sig * rho
+            events = []
+            for e_plus, e_minus, m_plus, m_minus in factors:
+                # u = t - x and w = t + x of the lab switch event, from the anchor with smaller terms
+                a, b = srho * e_minus, srho * m_minus
+                u = -(xc + a) if abs(xc) + abs(a) <= abs(x_lab) + abs(b) else -(x_lab + b)
+                a, b = srho * e_plus, srho * m_plus
+                w = xc + a if abs(xc) + abs(a) <= abs(x_lab) + abs(b) else x_lab + b
+                u *= up
+                w *= down
+                events.append((0.5 * (u + w), 0.5 * (w - u)))
+            (t_start, x_start), (t_stop, x_stop) = events
             rows.append(
                 (  # in MotionPlan's field order (a NamedTuple with keywords would cost ~1 us a row)
                     sig,
                     rho,
                     t_c,
-                    x_lab + xc * chm1,
                     q0 if (rho > 0.0 or q0 > 0.0) else _TINY,
                     x_hyp,
-                    s_i,
-                    s_f,
-                    t_c + s_i,
-                    t_c + s_f,
+                    srho * sinh_i,
+                    srho * sinh_f,
+                    t_start,
+                    t_stop,
+                    x_start,
+                    x_stop,
                     a_i * c_i,
                     w_i,
                     a_f * c_f,
                     w_f,
                     th_i,
                     th_f,
+                    rho * turn,
                 )
             )
     table = np.array(rows, dtype=np.float64).reshape(-1, len(_PLAN_FIELDS)).T
@@ -170,19 +200,22 @@ class MotionPlan:
     sign: FloatArray
     radius: FloatArray
     t_vertex: FloatArray
-    x_vertex: FloatArray
     q0: FloatArray
     x_hyp: FloatArray
     s_start: FloatArray
     s_stop: FloatArray
     t_start: FloatArray
     t_stop: FloatArray
+    x_start: FloatArray
+    x_stop: FloatArray
     x0_start: FloatArray
     w_start: FloatArray
     x0_stop: FloatArray
     w_stop: FloatArray
     rapidity_start: FloatArray
     rapidity_stop: FloatArray
+    proper_time_change: FloatArray
+    """``rho |theta_f - theta_i|``: the proper time the change takes (lab rapidities, invariant)."""
 
     def column(self, name: str) -> FloatArray:
         return getattr(self, name)[:, None]
@@ -297,30 +330,49 @@ class MotionPlan:
     def proper_times(self, t: FloatArray) -> FloatArray:
         """Proper time of every row at frame times ``t``, zero where the point starts changing velocity.
 
-        Inertial pieces: ``d tau = dt' / cosh(theta')``; hyperbola of radius ``rho``:
-        ``tau = rho * (asinh(s_c/rho) - asinh(s_start/rho))``.
+        Everything is formed from the frame time elapsed since a switch event, ``t' - t'_S`` (the
+        switch events are exact to the lab's rounding, see :func:`plan_motions`), never from two
+        large times subtracted. Inertial pieces: ``tau = (t' - t'_S)/cosh(theta'_i)`` before,
+        ``tau = rho |theta_f - theta_i| + (t' - t'_T)/cosh(theta'_f)`` after. Hyperbola:
+        ``tau = sign rho (asinh a - asinh b)`` with ``b = sinh(theta'_i)``,
+        ``a - b = sign (t' - t'_S)/rho`` and ``a`` itself either ``b + (a - b)`` or
+        ``sign (t' - t'_C)/rho`` (the one with smaller terms), the difference taken as
+        ``asinh(sinh(asinh a - asinh b))``, ``sinh(A - B) = (a - b)(a + b)/(a sqrt(1+b^2) + b sqrt(1+a^2))``
+        when ``a`` and ``b`` share a sign (``a sqrt(1+b^2) - b sqrt(1+a^2)`` otherwise): no cancellation
+        however weak the acceleration (``rho`` large) or fast the frame.
         """
-        s = t[None, :] - self.column("t_vertex")
-        s_start = self.column("s_start")
-        s_stop = self.column("s_stop")
-        rho = self.column("radius")
-        sc = np.clip(s, s_start, s_stop)
-        safe = np.where(rho > 0.0, rho, 1.0)
-        phi = np.arcsinh(sc / safe) - np.arcsinh(s_start / safe)
-        tau = np.where(rho > 0.0, rho * phi, 0.0)
-        tau = tau + np.minimum(s - s_start, 0.0) / np.cosh(self.column("rapidity_start"))
-        return tau + np.maximum(s - s_stop, 0.0) / np.cosh(self.column("rapidity_stop"))
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # rows with rho = 0 are masked
+            return self._proper_times(t)
+
+    def _proper_times(self, t: FloatArray) -> FloatArray:
+        t = t[None, :]
+        t_start, t_stop = self.column("t_start"), self.column("t_stop")
+        rho, sig, t_centre = self.column("radius"), self.column("sign"), self.column("t_vertex")
+        since_start = t - t_start
+        t_change = np.clip(t, t_start, t_stop)
+        b = np.sinh(self.column("rapidity_start"))
+        delta = sig * (t_change - t_start) / rho  # a - b
+        # a = sinh(theta'(t')) from the start (b + delta) or from the centre (sign (t' - t'_C)/rho),
+        # whichever has the smaller terms
+        from_start, from_centre = b + delta, sig * (t_change - t_centre) / rho
+        a = np.where(
+            np.maximum(np.abs(b), np.abs(delta)) * rho <= np.maximum(np.abs(t_change), np.abs(t_centre)),
+            from_start,
+            from_centre,
+        )
+        root_a, root_b = np.sqrt(1.0 + a * a), np.sqrt(1.0 + b * b)
+        same_sign = a * b > 0.0
+        sinh_turn = np.where(same_sign, delta * (a + b) / (a * root_b + b * root_a), a * root_b - b * root_a)
+        during = np.where(rho > 0.0, sig * rho * np.arcsinh(sinh_turn), 0.0)
+        before = since_start / np.cosh(self.column("rapidity_start"))
+        after = self.column("proper_time_change") + (t - t_stop) / np.cosh(self.column("rapidity_stop"))
+        tau = np.where(since_start < 0.0, before, during)
+        return np.where(t > t_stop, after, tau)
 
     def switch_events(self) -> tuple[FloatArray, FloatArray]:
-        """Frame events ``(t', x')`` where each row starts and stops changing velocity; each ``(rows, 2)``.
-
-        ``x' = x'_V + sign rho (cosh(theta') - 1) = x'_V + 2 sign rho sinh^2(theta'/2)``.
-        """
-        out = []
-        for t_key, th_key in (("t_start", "rapidity_start"), ("t_stop", "rapidity_stop")):
-            rise = self.sign * 2.0 * self.radius * np.sinh(0.5 * getattr(self, th_key)) ** 2
-            out.append(np.stack([getattr(self, t_key), self.x_vertex + rise], axis=-1))
-        return out[0], out[1]
+        """Frame events ``(t', x')`` where each row starts and stops changing velocity; each ``(rows, 2)``
+        (formed in light-cone coordinates, see :func:`plan_motions`)."""
+        return np.stack([self.t_start, self.x_start], axis=-1), np.stack([self.t_stop, self.x_stop], axis=-1)
 
 
 #: MotionPlan's fields in declaration order (the columns ``plan_motions`` fills).
