@@ -84,6 +84,90 @@ class RigidMotion:
     velocity_final: ExactVelocity
 
 
+#: A light-cone sum that keeps less than 1/64 of its terms is redone in double-double.
+_CANCELLATION = 64.0
+_SPLITTER = 134217729.0  # 2^27 + 1 (Veltkamp)
+
+
+def _two_sum(a: float, b: float) -> tuple[float, float]:
+    """``a + b`` as ``(s, e)`` with ``s + e`` exact (Knuth)."""
+    s = a + b
+    bb = s - a
+    return s, (a - (s - bb)) + (b - bb)
+
+
+def _two_prod(a: float, b: float) -> tuple[float, float]:
+    """``a * b`` as ``(p, e)`` with ``p + e`` exact (Dekker; no fma in Python 3.11)."""
+    p = a * b
+    c = _SPLITTER * a
+    ah = c - (c - a)
+    al = a - ah
+    c = _SPLITTER * b
+    bh = c - (c - b)
+    bl = b - bh
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _one_plus_dd(sign: float, v: ExactVelocity) -> tuple[float, float]:
+    """``1 + sign v`` to double-double from the velocity's parts."""
+    s, e = _two_sum(1.0, sign * v.hi)
+    return _two_sum(s, e + sign * v.lo)
+
+
+def _sqrt_dd(q1: float, q2: float) -> tuple[float, float]:
+    """``sqrt(q1 + q2)`` to double-double (one Newton step from the float root)."""
+    r = math.sqrt(q1)
+    p, pe = _two_prod(r, r)
+    return _two_sum(r, (((q1 - p) - pe) + q2) / (2.0 * r))
+
+
+def _factor_dd(v: ExactVelocity, sign: float) -> tuple[float, float]:
+    """To double-double: ``1/gamma = sqrt((1 - v)(1 + v))`` for ``sign = 0``, else
+    ``exp(sign theta) = sqrt((1 + sign v)/(1 - sign v))`` (``theta = atanh v``)."""
+    if sign == 0.0:
+        a1, a2 = _one_plus_dd(1.0, v)
+        b1, b2 = _one_plus_dd(-1.0, v)
+        p, pe = _two_prod(a1, b1)
+        return _sqrt_dd(*_two_sum(p, pe + a1 * b2 + a2 * b1))
+    a1, a2 = _one_plus_dd(sign, v)
+    b1, b2 = _one_plus_dd(-sign, v)
+    q1 = a1 / b1
+    p, pe = _two_prod(q1, b1)
+    return _sqrt_dd(*_two_sum(q1, (((a1 - p) - pe) + a2 - q1 * b2) / b1))
+
+
+def _two_anchor_sums(v: ExactVelocity, sign: float) -> tuple[float, float, float, float, ExactVelocity, float]:
+    """``(F, F - 1, |F|, |F - 1|, v, sign)`` for the factor ``F`` of :func:`_factor_dd` in float64.
+
+    A row's tangent intercept and switch-event light-cone coordinates are ``x_C + sign rho F`` (from
+    the centre) or ``x_V + sign rho (F - 1)`` (from the vertex); ``F - 1`` is ``-(gamma v)^2/((gamma +
+    1) gamma)`` for ``1/gamma`` and ``expm1(sign theta)`` for ``exp(sign theta)``, without cancellation.
+    """
+    if sign == 0.0:
+        g, u = v.lorentz_factor(), v.proper_velocity()
+        f, f1 = 1.0 / g, -u * u / ((g + 1.0) * g)
+    else:
+        theta = sign * v.rapidity()
+        f, f1 = math.exp(theta), math.expm1(theta)
+    return f, f1, abs(f), abs(f1), v, sign
+
+
+def _anchored_dd(anchor: float, srho: float, v: ExactVelocity, sign: float, minus_one: bool) -> float:
+    """``anchor + sign_rho (F - [1 if minus_one])`` with ``F`` of :func:`_factor_dd` to double-double.
+
+    Used when the float sum cancels, so that a switch event on (or a hair off) the origin's light
+    cone, or a tangent through the origin, keeps its coordinate to ~1e-32 of the scene's size, and a
+    boost of any ``gamma`` multiplies an exact number.
+    """
+    e1, e2 = _factor_dd(v, sign)
+    if minus_one:
+        e1, e = _two_sum(e1, -1.0)
+        e2 += e
+    p, pe = _two_prod(srho, e1)
+    s, se = _two_sum(anchor, p)
+    return s + (se + (pe + srho * e2))
+
+
 def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatArray) -> MotionPlan:
     """Per-frame constants of every rod's material points ``fractions`` (rows: rod-major).
 
@@ -126,15 +210,10 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
         t_c = -xc * sh
         x_c = xc * ch
         same_side = sig * x_c >= 0.0  # the direct sum x'_C + sign q_0 does not cancel
-        centre_side = sig * xc >= 0.0  # the direct sum x_C + sign rho / gamma does not cancel
-        ends = []
-        for v, th in ((m.velocity_initial, th_i), (m.velocity_final, th_f)):
-            g, u = v.lorentz_factor(), v.proper_velocity()
-            ends.append((g, u * u / ((g + 1.0) * g), g / math.cosh(th)))
-        (g_i, k_i, c_i), (g_f, k_f, c_f) = ends
-        # lab light-cone factors of the two switch rapidities: e^theta, e^-theta, expm1(+-theta)
-        lab_i, lab_f = m.velocity_initial.rapidity(), m.velocity_final.rapidity()
-        factors = [(math.exp(th), math.exp(-th), math.expm1(th), math.expm1(-th)) for th in (lab_i, lab_f)]
+        c_i = m.velocity_initial.lorentz_factor() / math.cosh(th_i)
+        c_f = m.velocity_final.lorentz_factor() / math.cosh(th_f)
+        sums = [_two_anchor_sums(v, sign) for v in (m.velocity_initial, m.velocity_final) for sign in (0.0, -1.0, 1.0)]
+        axc = abs(xc)
         # proper time the change takes per unit rest-distance: the lab rapidity change (invariant)
         turn = abs(relative_rapidity(m.velocity_final, m.velocity_initial))
         for f in fs:
@@ -146,22 +225,25 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
                 rho, x_lab = m.radius_left + sig * (f * length), m.vertex_left + f * length
             q0 = math.hypot(rho, t_c)
             x_hyp = x_c + sig * q0 if same_side else x_lab * (xc - sig * rho) / (x_c - sig * q0)
-            if centre_side:
-                a_i, a_f = xc + sig * rho / g_i, xc + sig * rho / g_f
-            else:
-                a_i, a_f = x_lab - sig * rho * k_i, x_lab - sig * rho * k_f
             srho = sig * rho
-            events = []
-            for e_plus, e_minus, m_plus, m_minus in factors:
-                # u = t - x and w = t + x of the lab switch event, from the anchor with smaller terms
-                a, b = srho * e_minus, srho * m_minus
-                u = -(xc + a) if abs(xc) + abs(a) <= abs(x_lab) + abs(b) else -(x_lab + b)
-                a, b = srho * e_plus, srho * m_plus
-                w = xc + a if abs(xc) + abs(a) <= abs(x_lab) + abs(b) else x_lab + b
-                u *= up
-                w *= down
-                events.append((0.5 * (u + w), 0.5 * (w - u)))
-            (t_start, x_start), (t_stop, x_stop) = events
+            ax = abs(x_lab)
+            # a_i, -u_i, w_i, a_f, -u_f, w_f: each x_C + sign rho F or x_V + sign rho (F - 1),
+            # whichever has the smaller terms, redone in double-double if those cancel
+            values = []
+            for fc, fv, afc, afv, v, sign in sums:
+                by_centre, by_vertex = axc + rho * afc, ax + rho * afv
+                if by_centre <= by_vertex:
+                    total, scale, anchor, minus_one = xc + srho * fc, by_centre, xc, False
+                else:
+                    total, scale, anchor, minus_one = x_lab + srho * fv, by_vertex, x_lab, True
+                if abs(total) * _CANCELLATION < scale:
+                    total = _anchored_dd(anchor, srho, v, sign, minus_one)
+                values.append(total)
+            a_i, minus_u, w, a_f, minus_u_stop, w_stop = values
+            u, w = -minus_u * up, w * down  # t' - x' and t' + x' of the start event
+            t_start, x_start = 0.5 * (u + w), 0.5 * (w - u)
+            u, w = -minus_u_stop * up, w_stop * down
+            t_stop, x_stop = 0.5 * (u + w), 0.5 * (w - u)
             rows.append(
                 (  # in MotionPlan's field order (a NamedTuple with keywords would cost ~1 us a row)
                     sig,
