@@ -40,8 +40,8 @@ from __future__ import annotations
 import functools
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
-from typing import Literal
+from dataclasses import dataclass, field
+from typing import Literal, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -82,6 +82,73 @@ class RigidMotion:
     """Lab x of the left end's vertex: ``horizon_x + sign * radius_left``, stored exactly."""
     velocity_initial: ExactVelocity
     velocity_final: ExactVelocity
+    _lab_rows: dict[bytes, tuple[LabRow, ...]] = field(
+        default_factory=dict[bytes, "tuple[LabRow, ...]"], init=False, repr=False, compare=False
+    )
+
+    def lab_rows(self, fractions: FloatArray) -> tuple[LabRow, ...]:
+        """The frame-independent constants of material points ``fractions`` (see :func:`lab_row`),
+        worked out once per set of fractions."""
+        key = fractions.tobytes()
+        rows = self._lab_rows.get(key)
+        if rows is None:
+            if len(self._lab_rows) >= _MAX_CACHED_FRACTIONS:
+                self._lab_rows.clear()
+            sums = [
+                _two_anchor_sums(v, sign)
+                for v in (self.velocity_initial, self.velocity_final)
+                for sign in (0.0, -1.0, 1.0)
+            ]
+            rows = tuple(lab_row(self, f, sums) for f in fractions.tolist())
+            self._lab_rows[key] = rows
+        return rows
+
+
+#: Sets of fractions whose lab constants a motion keeps (the ends, the ticks, a few more).
+_MAX_CACHED_FRACTIONS = 16
+
+
+class LabRow(NamedTuple):
+    """One material point's lab constants: its radius and vertex, the lab intercepts ``a`` of its
+    two inertial lines, and the light-cone coordinates ``(-u, w) = (x - t, t + x)`` of its two
+    switch events."""
+
+    radius: float
+    x_vertex: float
+    intercept_initial: float
+    minus_u_start: float
+    w_start: float
+    intercept_final: float
+    minus_u_stop: float
+    w_stop: float
+
+
+def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum]) -> LabRow:
+    """The lab constants of fraction ``f`` (``sums``: :func:`_two_anchor_sums` of the motion's
+    ``1/gamma`` and ``exp(-+theta)`` before and after).
+
+    Each is ``x_C + sign rho F`` (from the centre) or ``x_V + sign rho (F - 1)`` (from the vertex),
+    whichever has the smaller terms, redone in double-double (:func:`_anchored_dd`) if those cancel.
+    """
+    sig, xc = float(m.sign), m.horizon_x
+    if f == 0.0:
+        rho, x_lab = m.radius_left, m.vertex_left
+    elif f == 1.0:
+        rho, x_lab = m.radius_right, m.vertex_left + m.length
+    else:
+        rho, x_lab = m.radius_left + sig * (f * m.length), m.vertex_left + f * m.length
+    srho, axc, ax = sig * rho, abs(xc), abs(x_lab)
+    values = []
+    for fc, fv, afc, afv, v, sign in sums:
+        by_centre, by_vertex = axc + rho * afc, ax + rho * afv
+        if by_centre <= by_vertex:
+            total, scale, anchor, minus_one = xc + srho * fc, by_centre, xc, False
+        else:
+            total, scale, anchor, minus_one = x_lab + srho * fv, by_vertex, x_lab, True
+        if abs(total) * _CANCELLATION < scale:
+            total = _anchored_dd(anchor, srho, v, sign, minus_one)
+        values.append(total)
+    return LabRow(rho, x_lab, *values)
 
 
 #: A light-cone sum that keeps less than 1/64 of its terms is redone in double-double.
@@ -136,7 +203,10 @@ def _factor_dd(v: ExactVelocity, sign: float) -> tuple[float, float]:
     return _sqrt_dd(*_two_sum(q1, (((a1 - p) - pe) + a2 - q1 * b2) / b1))
 
 
-def _two_anchor_sums(v: ExactVelocity, sign: float) -> tuple[float, float, float, float, ExactVelocity, float]:
+_AnchorSum = tuple[float, float, float, float, ExactVelocity, float]
+
+
+def _two_anchor_sums(v: ExactVelocity, sign: float) -> _AnchorSum:
     """``(F, F - 1, |F|, |F - 1|, v, sign)`` for the factor ``F`` of :func:`_factor_dd` in float64.
 
     A row's tangent intercept and switch-event light-cone coordinates are ``x_C + sign rho F`` (from
@@ -179,7 +249,9 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
     (``u = -x_V - sign rho expm1(-theta)``, ``w = x_V + sign rho expm1(theta)``), whichever has the
     smaller terms. A boost multiplies them, ``u' = e^psi u``, ``w' = e^-psi w``, and
     ``t' = (u' + w')/2``, ``x' = (w' - u')/2``: no frame-sized terms cancel, so the frame times
-    the clocks are read from are good to the lab's own rounding.
+    the clocks are read from are good to the lab's own rounding. ``u``, ``w`` and the intercepts
+    below depend on no frame: each motion works them out once per set of fractions
+    (:meth:`RigidMotion.lab_rows`), and a new frame costs only the products.
 
     **Inertial pieces** of lab velocity ``v``: ``x' = X_0' + tanh(theta') t'`` with
     ``X_0' = a cosh(theta) / cosh(theta')`` and ``a`` the lab intercept at ``t = 0``:
@@ -197,14 +269,13 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
     chm1 = frame.lorentz_factor_minus_one()
     ch = 1.0 + chm1
     up, down = frame.doppler_factors()  # exp(psi), exp(-psi)
-    fs = fractions.tolist()
     rows: list[tuple[float, ...]] = []
     # Plans have few rows (2 per rod for the ends, 11 for the ticks): float arithmetic on
     # Python floats is many times cheaper here than numpy calls on tiny arrays.
     for m in motions:
         th_i = relative_rapidity(m.velocity_initial, frame.velocity)
         th_f = relative_rapidity(m.velocity_final, frame.velocity)
-        sig, xc, length = float(m.sign), m.horizon_x, m.length
+        sig, xc = float(m.sign), m.horizon_x
         sinh_i, sinh_f = math.sinh(th_i), math.sinh(th_f)
         w_i, w_f = math.tanh(th_i), math.tanh(th_f)
         t_c = -xc * sh
@@ -212,34 +283,12 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
         same_side = sig * x_c >= 0.0  # the direct sum x'_C + sign q_0 does not cancel
         c_i = m.velocity_initial.lorentz_factor() / math.cosh(th_i)
         c_f = m.velocity_final.lorentz_factor() / math.cosh(th_f)
-        sums = [_two_anchor_sums(v, sign) for v in (m.velocity_initial, m.velocity_final) for sign in (0.0, -1.0, 1.0)]
-        axc = abs(xc)
         # proper time the change takes per unit rest-distance: the lab rapidity change (invariant)
         turn = abs(relative_rapidity(m.velocity_final, m.velocity_initial))
-        for f in fs:
-            if f == 0.0:
-                rho, x_lab = m.radius_left, m.vertex_left
-            elif f == 1.0:
-                rho, x_lab = m.radius_right, m.vertex_left + length
-            else:
-                rho, x_lab = m.radius_left + sig * (f * length), m.vertex_left + f * length
+        for rho, x_lab, a_i, minus_u, w, a_f, minus_u_stop, w_stop in m.lab_rows(fractions):
             q0 = math.hypot(rho, t_c)
             x_hyp = x_c + sig * q0 if same_side else x_lab * (xc - sig * rho) / (x_c - sig * q0)
             srho = sig * rho
-            ax = abs(x_lab)
-            # a_i, -u_i, w_i, a_f, -u_f, w_f: each x_C + sign rho F or x_V + sign rho (F - 1),
-            # whichever has the smaller terms, redone in double-double if those cancel
-            values = []
-            for fc, fv, afc, afv, v, sign in sums:
-                by_centre, by_vertex = axc + rho * afc, ax + rho * afv
-                if by_centre <= by_vertex:
-                    total, scale, anchor, minus_one = xc + srho * fc, by_centre, xc, False
-                else:
-                    total, scale, anchor, minus_one = x_lab + srho * fv, by_vertex, x_lab, True
-                if abs(total) * _CANCELLATION < scale:
-                    total = _anchored_dd(anchor, srho, v, sign, minus_one)
-                values.append(total)
-            a_i, minus_u, w, a_f, minus_u_stop, w_stop = values
             u, w = -minus_u * up, w * down  # t' - x' and t' + x' of the start event
             t_start, x_start = 0.5 * (u + w), 0.5 * (w - u)
             u, w = -minus_u_stop * up, w_stop * down
