@@ -37,6 +37,8 @@ from ._scene import EventSpec as EventSpec
 from ._scene import Obstacle as Obstacle
 from ._scene import Rod as Rod
 from ._scene import Scene as Scene
+from ._signals import CausalRelation as CausalRelation
+from ._signals import causal_relation as causal_relation
 from ._validate import ParameterError as ParameterError
 from .scenes.acceleration import constant_acceleration as constant_acceleration
 from .scenes.acceleration import deceleration as deceleration
@@ -50,6 +52,7 @@ from .scenes.wall import wall_collision as wall_collision
 __all__ = [
     "ENDS",
     "LAB",
+    "CausalRelation",
     "CollisionSolution",
     "EventDescription",
     "EventSpec",
@@ -70,6 +73,7 @@ __all__ = [
     "ScenePreset",
     "Slider",
     "build_scene",
+    "causal_relation",
     "constant_acceleration",
     "deceleration",
     "default_frame",

@@ -21,7 +21,8 @@ from ._exact import ExactVelocity, relative_rapidity
 from ._frame import LAB, Frame, check_frame
 from ._kinds import ObstacleKind, OriginEvent
 from ._motion import MotionPlan, RigidMotion, plan_motions
-from ._validate import ParameterError, check_fractions, check_times
+from ._signals import _event, signal_arrival_on
+from ._validate import ParameterError, as_real, check_fractions, check_times
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -273,3 +274,101 @@ class Scene:
             external_source=self.external_source,
             heat=self.heat,
         )
+
+    # ------------------------------------------------------------------ signals
+    def _rod_index(self, rod: object) -> int:
+        if isinstance(rod, bool) or not isinstance(rod, (int, np.integer)) or not 0 <= int(rod) < self.n_rods:
+            raise ParameterError("rod", f"a rod index from 0 to {self.n_rods - 1}", rod)
+        return int(rod)
+
+    def _fraction(self, fraction: object) -> float:
+        f = as_real("fraction", fraction, "a number in [0, 1]")
+        if not 0.0 <= f <= 1.0:
+            raise ParameterError("fraction", "a number in [0, 1]", fraction)
+        return f
+
+    def source_event(self, source: str | npt.ArrayLike, frame: Frame = LAB) -> tuple[float, float]:
+        """An event as frame ``(t', x')``: a named event (``"T_1"``), the scene's origin event by its
+        name (``"contact"``, ``"kick"``, ... which is ``(0, 0)`` in every frame), or a ``(t', x')`` pair."""
+        frame = check_frame(frame)
+        if isinstance(source, str):
+            if source == self.origin_event.value:
+                return (0.0, 0.0)
+            events = self.events_in(frame)
+            if source not in events:
+                names = ", ".join(repr(n) for n in (self.origin_event.value, *events))
+                raise ParameterError("source", f"one of {names} or a (t, x) pair", source)
+            return events[source]
+        return _event("source", source)
+
+    def signal_arrival(
+        self,
+        source: str | npt.ArrayLike,
+        rod: int,
+        fraction: float,
+        *,
+        direction: Literal[1, -1] | None = None,
+        frame: Frame = LAB,
+    ) -> tuple[float, float] | None:
+        """Where a light signal from ``source`` first reaches material point ``fraction`` of ``rod``.
+
+        Returns the arrival as ``(t', x')`` of ``frame``, or ``None`` when the signal never reaches
+        the point (a ray sent away from it). ``source`` is an event name, the origin event's name or
+        a ``(t', x')`` pair of ``frame``; ``direction`` is +1 (toward +x), -1, or ``None`` (toward the
+        point). Closed form on each piece of the worldline, in light-cone coordinates
+        (:mod:`rigidrel_core._signals`): the arrival lies exactly on the source's light cone.
+
+        Example: an elastic wall bounce at V = 0.6, L0 = 1. The signal leaving the contact (0, 0)
+        reaches the far end at lab (2, 2), after that end's change ends at T'_1 = (0.75, 1.25).
+        """
+        frame = check_frame(frame)
+        i = self._rod_index(rod)
+        f = self._fraction(fraction)
+        if direction is not None and direction not in (1, -1):
+            raise ParameterError("direction", "+1, -1 or None (toward the point)", direction)
+        t0, x0 = self.source_event(source, frame)
+        x_now = float(self.material_positions(np.array([t0]), frame, fractions=np.array([f]))[i, 0, 0])
+        return signal_arrival_on(self.rods[i].motion, f, frame, (t0, x0), x_now, direction)
+
+    def comoving_frame(
+        self,
+        rod: int,
+        fraction: float,
+        *,
+        proper_time: float | None = None,
+        t: float | None = None,
+        frame: Frame = LAB,
+    ) -> Frame:
+        """The momentarily comoving inertial frame of material point ``fraction`` of ``rod``, at its
+        clock reading ``proper_time`` or at time ``t`` of ``frame`` (give one).
+
+        Before the change it is the rod's frame before, exactly; from the end of the change on, the
+        frame after; in between the rapidity grows linearly with the point's proper time,
+        ``theta = theta_i + sign tau / rho`` (constant proper acceleration ``1/rho``, Sec. 3, Eq. (15)).
+        The samplers take it like any frame; in it the rod has its rest length at that instant.
+        """
+        frame = check_frame(frame)
+        i = self._rod_index(rod)
+        f = self._fraction(fraction)
+        if (proper_time is None) == (t is None):
+            raise ParameterError("proper_time", "given alone, or t given instead", (proper_time, t))
+        if t is not None:
+            tt = check_times("t", t)
+            if tt.shape != ():
+                raise ParameterError("t", "one time (a real number)", t)
+            tau = float(self.proper_times(tt.reshape(1), frame, fractions=np.array([f]))[i, 0, 0])
+        else:
+            tau = as_real("proper_time", proper_time, "a finite number")
+        motion = self.rods[i].motion
+        name = f"comoving with {self.rods[i].name} at f = {f:g}"
+        rho = (
+            motion.radius_left + motion.sign * f * motion.length
+            if 0.0 < f < 1.0
+            else (motion.radius_left if f == 0.0 else motion.radius_right)
+        )
+        turn = abs(relative_rapidity(motion.velocity_final, motion.velocity_initial))
+        if tau >= rho * turn:
+            return Frame(motion.velocity_final, name)
+        if tau <= 0.0:
+            return Frame(motion.velocity_initial, name)
+        return Frame.from_rapidity(motion.velocity_initial.rapidity() + motion.sign * tau / rho, name)
