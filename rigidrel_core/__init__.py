@@ -38,6 +38,7 @@ from ._scene import Obstacle as Obstacle
 from ._scene import Rod as Rod
 from ._scene import Scene as Scene
 from ._signals import CausalRelation as CausalRelation
+from ._signals import ChangeVerdict as ChangeVerdict
 from ._signals import causal_relation as causal_relation
 from ._validate import ParameterError as ParameterError
 from .scenes.acceleration import constant_acceleration as constant_acceleration
@@ -53,6 +54,7 @@ __all__ = [
     "ENDS",
     "LAB",
     "CausalRelation",
+    "ChangeVerdict",
     "CollisionSolution",
     "EventDescription",
     "EventSpec",

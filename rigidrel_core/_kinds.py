@@ -20,6 +20,20 @@ class OriginEvent(StrEnum):
     """A general velocity change: the origin is where the rod's left end would be at rest if its
     hyperbola were continued; nothing need happen there."""
 
+    @property
+    def phrase(self) -> str:
+        """How a sentence names the event: "the contact", "the back end's stop", ..."""
+        return _PHRASES[self]
+
+
+_PHRASES = {
+    OriginEvent.START: "the start",
+    OriginEvent.KICK: "the kick",
+    OriginEvent.CONTACT: "the contact",
+    OriginEvent.REST: "the back end's stop",
+    OriginEvent.VERTEX: "the vertex",
+}
+
 
 class ObstacleKind(StrEnum):
     """Things in a scene that are not rods: they have inertial worldlines and are drawn, not solved."""

@@ -21,7 +21,7 @@ from ._exact import ExactVelocity, relative_rapidity
 from ._frame import LAB, Frame, check_frame
 from ._kinds import ObstacleKind, OriginEvent
 from ._motion import MotionPlan, RigidMotion, plan_motions
-from ._signals import _event, signal_arrival_on
+from ._signals import ChangeVerdict, _event, change_verdict, signal_arrival_on
 from ._validate import ParameterError, as_real, check_fractions, check_times
 
 FloatArray = npt.NDArray[np.float64]
@@ -372,3 +372,33 @@ class Scene:
         if tau <= 0.0:
             return Frame(motion.velocity_initial, name)
         return Frame.from_rapidity(motion.velocity_initial.rapidity() + motion.sign * tau / rho, name)
+
+    def causal_verdicts(self) -> tuple[ChangeVerdict, ...]:
+        """For every rod end whose change does not begin or end at the origin event: where the change
+        lies relative to the origin event's light cone, and when its first light signal arrives (lab).
+
+        The kinds (timelike, lightlike, spacelike) are invariants, so the verdicts hold in every
+        frame. E.g. a wall crash: "the far end: its whole change, T_1 to T_1', lies outside the light
+        cone of the contact: no signal from the contact can have caused it, in any frame".
+        An origin where nothing happens (a general velocity change's vertex) has no verdicts.
+        """
+        if self.origin_event is OriginEvent.VERTEX:
+            return ()
+        named = {(s.rod, s.end, s.phase): s.name for s in self.event_specs}
+        out: list[ChangeVerdict] = []
+        for i, rod in enumerate(self.rods):
+            start, stop = self._plan(LAB, ENDS, i).switch_events()
+            for end in (0, 1):
+                s_event = (float(start[end, 0]), float(start[end, 1]))
+                t_event = (float(stop[end, 0]), float(stop[end, 1]))
+                if (0.0, 0.0) in (s_event, t_event):
+                    continue  # this end's change begins or ends at the origin event itself
+                side = "left" if end == 0 else "right"
+                label = f"the {side} end" + (f" of {rod.name}" if self.n_rods > 1 else "")
+                names = (
+                    named.get((i, end, "start"), f"(t, x) = ({s_event[0]:.4g}, {s_event[1]:.4g})"),
+                    named.get((i, end, "stop"), f"(t, x) = ({t_event[0]:.4g}, {t_event[1]:.4g})"),
+                )
+                arrival = self.signal_arrival(self.origin_event.value, i, float(end))
+                out.append(change_verdict(i, end, names, s_event, t_event, arrival, self.origin_event.phrase, label))
+        return tuple(out)

@@ -136,3 +136,76 @@ def signal_arrival_on(
         else:
             u, w = u_stop + math.exp(-2.0 * th_f) * (w0 - w_stop), w0
     return (0.5 * (u + w), 0.5 * (w - u))
+
+
+@dataclass(frozen=True)
+class ChangeVerdict:
+    """Where one end's velocity change lies relative to the scene's origin event (the kick, the
+    contact, the start), in words and in numbers; frame-independent (computed from invariants)."""
+
+    rod: int
+    end: Literal[0, 1]
+    start: Event
+    """Lab event where the end starts changing velocity."""
+    stop: Event
+    """Lab event where it has its final velocity."""
+    relation_start: CausalRelation
+    """The start's relation to the origin event."""
+    relation_stop: CausalRelation
+    arrival: Event | None
+    """Lab event where the first light signal from the origin event reaches the end."""
+    text: str
+
+    @property
+    def caused_by_a_signal(self) -> bool:
+        """Whether a signal from the origin event could have started the change."""
+        return self.relation_start.can_signal
+
+
+def _where(relation: CausalRelation, origin: str) -> str:
+    if relation.kind == "spacelike":
+        return f"outside the light cone of {origin}"
+    cone = "future" if relation.order == 1 else "past"
+    if relation.kind == "lightlike":
+        return f"on the {cone} light cone of {origin}"
+    return f"inside the {cone} light cone of {origin}"
+
+
+def change_verdict(
+    rod: int,
+    end: Literal[0, 1],
+    names: tuple[str, str],
+    start: Event,
+    stop: Event,
+    arrival: Event | None,
+    origin: str,
+    end_label: str,
+) -> ChangeVerdict:
+    """The verdict on one end's change ``start -> stop`` (lab events named ``names``) relative to the
+    origin event ``(0, 0)``, which the text calls ``origin`` ("the contact"); ``end_label`` names the end."""
+    r_start = causal_relation((0.0, 0.0), start)
+    r_stop = causal_relation((0.0, 0.0), stop)
+    s, t = names
+    if r_start.kind == "spacelike" and r_stop.kind == "spacelike":
+        text = (
+            f"{end_label}: its whole change, {s} to {t}, lies outside the light cone of {origin}: "
+            f"no signal from {origin} can have caused it, in any frame."
+        )
+    elif r_start.kind == "spacelike":
+        text = (
+            f"{end_label}: its change starts at {s}, outside the light cone of {origin} (no signal "
+            f"from {origin} can have started it), and ends at {t}, {_where(r_stop, origin)}."
+        )
+    elif r_start.order == -1:
+        text = (
+            f"{end_label}: its change starts at {s}, {_where(r_start, origin)}: before {origin} in every "
+            f"frame, and ends at {t}, {_where(r_stop, origin)}."
+        )
+    else:
+        text = (
+            f"{end_label}: its change starts at {s}, {_where(r_start, origin)}: a signal from {origin} "
+            f"could have started it."
+        )
+    if arrival is not None:
+        text += f" The first light signal from {origin} reaches it at (t, x) = ({arrival[0]:.4g}, {arrival[1]:.4g})."
+    return ChangeVerdict(rod, end, start, stop, r_start, r_stop, arrival, text)

@@ -161,3 +161,40 @@ def test_bad_arguments_name_the_parameter(call: object, parameter: str) -> None:
     with pytest.raises(rr.ParameterError) as info:
         call(scene)  # type: ignore[operator]
     assert info.value.parameter == parameter
+
+
+def test_wall_crash_verdict_in_words() -> None:
+    """The paper's Sec. 4 crash: the far end starts decelerating before the front touches the wall in
+    the lab, but its whole change is spacelike to the contact: no signal caused it."""
+    scene = rr.build_scene("wall-collision", v=0.6, length=1.0, eps=0.0)
+    (verdict,) = scene.causal_verdicts()
+    assert verdict.text.startswith(
+        "the right end: its whole change, T_1 to T_1', lies outside the light cone of the contact: "
+        "no signal from the contact can have caused it, in any frame."
+    )
+    assert not verdict.caused_by_a_signal
+    assert verdict.start[0] < 0.0  # before the contact, in the lab
+
+
+def test_fig1_front_stops_exactly_on_the_starts_light_cone() -> None:
+    """V = 0.6, a'_F L0 = 1/2: T_F = (gamma V/a'_F, L0 + (gamma - 1)/a'_F) = (1.5, 1.5), on the light cone
+    of the back end's start, since a'_F L0 = 1 - gamma (1 - V) = 1 - e^-theta exactly here."""
+    scene = rr.build_scene("constant-acceleration", v=0.6, length=1.0, a_front=0.5)
+    (verdict,) = scene.causal_verdicts()
+    assert verdict.relation_start.kind == "spacelike"
+    assert (verdict.relation_stop.kind, verdict.relation_stop.order) == ("lightlike", 1)
+    assert verdict.arrival == (1.5, 1.5)
+
+
+@SETTINGS
+@given(scene_frame=scene_and_frame())
+def test_verdicts_hold_in_every_frame(scene_frame: tuple[rr.Scene, rr.Frame]) -> None:
+    """Each verdict's relations, recomputed from the change's events seen in any frame, are the same."""
+    scene, frame = scene_frame
+    for verdict in scene.causal_verdicts():
+        for event, relation in ((verdict.start, verdict.relation_start), (verdict.stop, verdict.relation_stop)):
+            seen = rr.causal_relation((0.0, 0.0), frame @ np.array(event))
+            if relation.kind != "lightlike" and abs(relation.interval) > 1e-9 * (event[0] ** 2 + event[1] ** 2):
+                assert (seen.kind, seen.order) == (relation.kind, relation.order)
+        if verdict.arrival is not None:
+            assert rr.causal_relation((0.0, 0.0), verdict.arrival).kind == "lightlike"
