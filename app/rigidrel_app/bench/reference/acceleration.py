@@ -31,6 +31,7 @@ from . import (
     log_uniform,
     material_point,
     speed,
+    time_reversed,
 )
 
 
@@ -50,19 +51,19 @@ def ref_constant_acceleration(fractions: Sequence[float], v: float, length: floa
         "T_B": (g * V / aB, (g - 1) / aB),
         "T_F": (g * V / aF, L + (g - 1) / aF),
     }
-    return RefScene([wl], events, [V], [L], {"a_B": aB})
+    return RefScene([wl], events, [mp.mpf(0)], [V], [L], {"a_B": aB})
 
 
 @at_reference_precision
 def ref_deceleration(fractions: Sequence[float], v: float, length: float, a_front: float) -> RefScene:
     """From ``-v`` to rest on ``[0, L0]`` at ``t = 0``: :func:`ref_constant_acceleration` with ``t -> -t``."""
     acc = ref_constant_acceleration(fractions, v, length, a_front)
-    wl = [[(lambda t, w=w: w(-t)) for w in acc.worldlines[0]]]
+    wl = [[time_reversed(w) for w in acc.worldlines[0]]]
     events = {
         "-T_F": (-acc.events["T_F"][0], acc.events["T_F"][1]),
         "-T_B": (-acc.events["T_B"][0], acc.events["T_B"][1]),
     }
-    return RefScene(wl, events, [mp.mpf(0)], acc.lengths_rest, {})
+    return RefScene(wl, events, [-F(v)], [mp.mpf(0)], acc.lengths_rest, {})
 
 
 @at_reference_precision
@@ -87,7 +88,7 @@ def ref_velocity_change(
         for suffix, vel in (("0", Vi), ("", Vf)):
             g = gamma_of(vel)
             events[f"T_{name}{suffix}"] = (side * d * g * vel, centre + side * d * g)
-    return RefScene([wl], events, [Vf], [L], {})
+    return RefScene([wl], events, [Vi], [Vf], [L], {})
 
 
 # ------------------------------------------------------------------ random cases
