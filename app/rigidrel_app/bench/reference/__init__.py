@@ -343,6 +343,21 @@ HORIZON = 300
 """Near the Rindler horizon (``a'_F L0 -> 1``) and far from it."""
 MASS_RATIOS_AND_SIZES = 400
 VELOCITY_CHANGES = 500
+WEAK_ACCELERATION = 600
+"""``a'_F L0 = 1e-3 .. 1e-7``: every point's radius ``rho = 1/a'`` is ``10^3 .. 10^7`` rest lengths,
+so clocks advance ``rho`` times the rapidity change, read in frames far from the lab."""
+#: Each group's name in the committed table (``order // 100 * 100`` is a fixed case's group;
+#: the random cases form the group ``"random"``).
+GROUP_NAMES: Mapping[int, str] = MappingProxyType(
+    {
+        PAPER_EXAMPLES: "paper",
+        ULTRA_RELATIVISTIC: "ultra-relativistic",
+        HORIZON: "horizon",
+        MASS_RATIOS_AND_SIZES: "mass-ratios-sizes",
+        VELOCITY_CHANGES: "velocity-changes",
+        WEAK_ACCELERATION: "weak-acceleration",
+    }
+)
 
 
 @dataclass(frozen=True)
@@ -355,6 +370,11 @@ class ReferenceCase:
     """Sort key of the table's fixed cases (a group above plus a position): the table is
     generated case by case from one random stream (frames and sample times), so the order
     is part of its content."""
+
+    @property
+    def group(self) -> str:
+        """The name of the case's group (:data:`GROUP_NAMES`)."""
+        return GROUP_NAMES[self.order // 100 * 100]
 
 
 #: How a scene kind draws the parameters of a random case from the table's one random stream.

@@ -20,6 +20,7 @@ from . import (
     PAPER_EXAMPLES,
     ULTRA_RELATIVISTIC,
     VELOCITY_CHANGES,
+    WEAK_ACCELERATION,
     F,
     ReferenceCase,
     RefScene,
@@ -113,6 +114,13 @@ def _draw_velocity_change(rng: random.Random) -> dict[str, float | None]:
 
 
 # ------------------------------------------------------------------ fixed cases
+def _weak(kind: str, a_front_length: float, position: int, length: float = 1.0, **velocities: float) -> ReferenceCase:
+    """A case of :data:`WEAK_ACCELERATION`: ``a'_F L0`` given, so every radius is about ``L0 / (a'_F L0)``."""
+    return ReferenceCase(
+        kind, {**velocities, "length": length, "a_front": a_front_length / length}, WEAK_ACCELERATION + position
+    )
+
+
 CONSTANT_ACCELERATION = SceneReference(
     "constant-acceleration",
     10,
@@ -125,6 +133,10 @@ CONSTANT_ACCELERATION = SceneReference(
         ReferenceCase("constant-acceleration", {"v": 0.6, "length": 1.0, "a_front": 1e-6}, HORIZON + 2),
         ReferenceCase("constant-acceleration", {"v": 0.6, "length": 1e-6, "a_front": 2.5e5}, MASS_RATIOS_AND_SIZES + 4),
         ReferenceCase("constant-acceleration", {"v": 0.6, "length": 1e6, "a_front": 2.5e-7}, MASS_RATIOS_AND_SIZES + 5),
+        _weak("constant-acceleration", 1e-3, 0, v=0.1),
+        _weak("constant-acceleration", 1e-5, 1, v=0.6),
+        _weak("constant-acceleration", 1e-7, 2, v=0.99),
+        _weak("constant-acceleration", 1e-5, 3, v=1 - 1e-9, length=1e-3),
     ),
     _draw_acceleration,
 )
@@ -136,6 +148,10 @@ DECELERATION = SceneReference(
     (
         ReferenceCase("deceleration", {"v": 0.6, "length": 1.0, "a_front": 0.5}, PAPER_EXAMPLES + 1),
         ReferenceCase("deceleration", {"v": 0.8, "length": 1.0, "a_front": 1 - 1e-6}, HORIZON + 1),
+        _weak("deceleration", 1e-3, 4, v=0.99),
+        _weak("deceleration", 1e-5, 5, v=0.1),
+        _weak("deceleration", 1e-7, 6, v=0.6),
+        _weak("deceleration", 1e-7, 7, v=1 - 1e-9, length=1e3),
     ),
     _draw_acceleration,
 )
@@ -165,6 +181,10 @@ VELOCITY_CHANGE = SceneReference(
             {"v_initial": 0.5, "v_final": 0.0, "length": 2.0, "a_front": 0.25},
             VELOCITY_CHANGES + 3,
         ),
+        _weak("velocity-change", 1e-3, 8, v_initial=0.1, v_final=0.99),
+        _weak("velocity-change", 1e-5, 9, v_initial=0.6, v_final=-0.3),
+        _weak("velocity-change", 1e-7, 10, v_initial=-0.99, v_final=0.5),
+        _weak("velocity-change", 1e-5, 11, v_initial=0.5, v_final=1 - 1e-9),
     ),
     _draw_velocity_change,
 )
