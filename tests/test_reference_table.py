@@ -121,3 +121,16 @@ def test_clocks_agree_with_quadrature_of_the_worldline(kind: str, params: dict[s
                     tau = w.tau(t)
                     assert abs(tau - proper_time_by_quadrature(w, t)) < mp.mpf(10) ** -25 * max(abs(tau), 1)
                 assert abs(w.tau(w.start)) < mp.mpf(10) ** -25 * span
+
+
+def test_error_report_has_a_line_per_check_and_frame_class() -> None:
+    """The report of the first case (the paper's Fig. 1: every frame class) lists each check in each
+    frame class once, worst error first after the names."""
+    from tests.reference import error_report
+
+    table = json.loads(TABLE.read_text())
+    lines, _ = error_report.report(table["cases"][:1], by_group=False)
+    rows = [line.split()[:3] for line in lines[1:]]
+    assert rows == [[c, f, "all"] for c in error_report.CHECKS for f in error_report.FRAME_CLASSES]
+    for line in lines[1:]:
+        float(line.split()[3])
