@@ -1,11 +1,22 @@
 """rigidrel_core against the independent 50-digit reference (tests/reference/make_reference.py).
 
 The reference (rigidrel_app.bench.reference, which never imports the core) solves each scene
-by the paper's route in mpmath and slices worldlines by bisection on lab time; the core
-evaluates closed forms in the frame. Cases cover the
-paper's examples, V = 1 - 1e-12, frames at |beta| = 0.999999 and each rod's rest frame
-after, a'_F L0 = 1 - 1e-6 and 1e-6, mass ratios 1e-6..1e6, lengths 1e-6..1e6, and times
-1e6 lengths away.
+by the paper's route in mpmath, slices worldlines by bisection on lab time and reads each
+material point's clock there (its proper time, integrated piece by piece in the lab, 0 where
+the point starts changing velocity); the core evaluates closed forms in the frame.
+
+Cases: the paper's examples; V = 1 - 1e-12 and 1 - 1e-9; a'_F L0 = 1 - 1e-6 and 1e-6;
+weak accelerations a'_F L0 = 1e-3, 1e-5 and 1e-7 (constant acceleration, deceleration and
+velocity changes, V from 0.1 to 0.99 and 1 - 1e-9: radii of 1e3..1e7 rest lengths); mass
+ratios 1e-6..1e6; lengths 1e-6..1e6; 36 random scenes. Frames of every case: the lab, a
+random one, beta = +-0.999999, +-(1 - 1e-7) and +-(1 - 1e-9), each rod's rest frame before
+and after (to float64), frames a rapidity of 1e-9 either side of those, and the barycentric
+frame. Times: every event, points between and beside them, and 1e6 lengths away. Checked in
+every frame: positions and clock readings of three material points, equal-time lengths and
+named events; once: final velocities and their gaps to light speed.
+
+The error functions below give errors in units of their tolerance (a check passes at <= 1);
+``python -m tests.reference.error_report`` tabulates the worst of each by frame and case class.
 """
 
 from __future__ import annotations
@@ -16,9 +27,12 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pytest
 
 import rigidrel_core as rr
+
+FloatArray = npt.NDArray[np.float64]
 
 #: Position error, relative to max(|x|, the rod's equal-time length at that time).
 TOL_POSITION = 1e-12
@@ -28,6 +42,10 @@ TOL_LENGTH_REL = 1e-9
 TOL_LENGTH_ULP = 64
 #: Event coordinates, relative to max(|t|, |x|, rest length).
 TOL_EVENT = 1e-12
+#: Clock readings, relative to max(|tau_ref|, |t'|, the rod's rest length): the reading itself;
+#: the frame time it is read at (a clock moving fast in the frame reads tau ~ t'/gamma' << |t'|,
+#: formed from t', so its rounding scales with |t'|); the rod's size (readings near their zero).
+TOL_CLOCK = 1e-12
 #: Final velocities and their gaps 1 - |v| to light speed, relative.
 TOL_VELOCITY = 1e-14
 
@@ -54,44 +72,109 @@ def ids() -> list[str]:
     return [f"{i:02d}-{c['kind']}" for i, c in enumerate(CASES)]
 
 
+def decimals(values: object) -> FloatArray:
+    """The table's decimal strings (nested lists) as a float64 array of the same shape."""
+    return np.asarray(values, dtype=str).astype(np.float64)
+
+
+# ------------------------------------------------------------------ errors in units of the tolerance
+def position_errors(scene: rr.Scene, case: dict[str, Any], fr: dict[str, Any]) -> FloatArray:
+    """``|x' - x'_ref| / (TOL_POSITION max(|x'_ref|, L_ref(t')))`` of every rod, material point and
+    time of the table's frame ``fr``; shape ``(rods, fractions, times)``."""
+    fractions = np.array([float.fromhex(f) for f in case["fractions"]])
+    t = np.array([float.fromhex(x) for x in fr["times"]])
+    ref = decimals(fr["positions"])
+    got = scene.material_positions(t, frame(float.fromhex(fr["beta"])), fractions=fractions)
+    assert got.shape == ref.shape
+    ref_len = decimals(fr["lengths"])  # end-to-end equal-time lengths, reference at 50 digits
+    scale = np.maximum(np.abs(ref), np.abs(ref_len)[:, None, :])
+    return np.abs(got - ref) / (TOL_POSITION * scale)
+
+
+def length_errors(scene: rr.Scene, fr: dict[str, Any]) -> FloatArray:
+    """``|L - L_ref|`` over its bound ``TOL_LENGTH_REL |L_ref| + TOL_LENGTH_ULP ulp(max |x'_end|)``;
+    shape ``(rods, times)``."""
+    t = np.array([float.fromhex(x) for x in fr["times"]])
+    ref = decimals(fr["positions"])
+    ref_len = decimals(fr["lengths"])
+    got = scene.lengths(t, frame(float.fromhex(fr["beta"])))
+    assert got.shape == ref_len.shape
+    ends = np.maximum(np.abs(ref[:, 0]), np.abs(ref[:, -1]))
+    return np.abs(got - ref_len) / (TOL_LENGTH_REL * np.abs(ref_len) + TOL_LENGTH_ULP * np.spacing(ends))
+
+
+def clock_errors(scene: rr.Scene, case: dict[str, Any], fr: dict[str, Any]) -> FloatArray:
+    """``|tau - tau_ref| / (TOL_CLOCK max(|tau_ref|, |t'|, L_rod))`` of every rod, material point and
+    time; shape ``(rods, fractions, times)``."""
+    fractions = np.array([float.fromhex(f) for f in case["fractions"]])
+    t = np.array([float.fromhex(x) for x in fr["times"]])
+    ref = decimals(fr["proper_times"])
+    got = scene.proper_times(t, frame(float.fromhex(fr["beta"])), fractions=fractions)
+    assert got.shape == ref.shape
+    rest = decimals(case["lengths_rest"])[:, None, None]
+    scale = np.maximum(np.maximum(np.abs(ref), np.abs(t)), rest)
+    return np.abs(got - ref) / (TOL_CLOCK * scale)
+
+
+def event_errors(scene: rr.Scene, case: dict[str, Any], beta: float, ref_events: dict[str, Any]) -> dict[str, float]:
+    """Per named event, ``max(|t' - t'_ref|, |x' - x'_ref|) / (TOL_EVENT max(|t'_ref|, |x'_ref|, L))``
+    with ``L`` the largest rest length of the case."""
+    got = scene.events_in(frame(beta))
+    assert set(got) == set(ref_events)
+    scale_len = float(max(decimals(case["lengths_rest"])))
+    out = {}
+    for name, (rt, rx) in ref_events.items():
+        t_ref, x_ref = float(rt), float(rx)
+        scale = max(abs(t_ref), abs(x_ref), scale_len)
+        gt, gx = got[name]
+        out[name] = max(abs(gt - t_ref), abs(gx - x_ref)) / (TOL_EVENT * scale)
+    return out
+
+
+def frames_with_events(case: dict[str, Any]) -> list[tuple[float, dict[str, Any]]]:
+    """``(beta, reference events)``: the lab's events as the reference computed them, then each frame's."""
+    return [(0.0, case["events_lab"])] + [(float.fromhex(f["beta"]), f["events"]) for f in case["frames"]]
+
+
+def where(err: FloatArray, fr: dict[str, Any], case: dict[str, Any]) -> str:
+    """The worst entry of a ``(rods, fractions, times)`` or ``(rods, times)`` error array, in words."""
+    index = np.unravel_index(int(err.argmax()), err.shape)
+    t = float.fromhex(fr["times"][index[-1]])
+    point = f" f={float.fromhex(case['fractions'][index[1]])}" if err.ndim == 3 else ""
+    return f"rod {index[0]}{point} t'={t!r}"
+
+
+# ------------------------------------------------------------------ tests
 @pytest.mark.parametrize("case", CASES, ids=ids())
 def test_positions_and_lengths(case: dict[str, Any]) -> None:
     scene = build(case)
-    fractions = np.array([float.fromhex(f) for f in case["fractions"]])
     for fr in case["frames"]:
         beta = float.fromhex(fr["beta"])
-        t = np.array([float.fromhex(x) for x in fr["times"]])
-        ref = np.array([[[float(v) for v in pt] for pt in rod] for rod in fr["positions"]])
-        got = scene.material_positions(t, frame(beta), fractions=fractions)
-        assert got.shape == ref.shape
-        # end-to-end equal-time lengths, reference at 50 digits
-        ref_len = np.array([[float(v) for v in rod] for rod in fr["lengths"]])
-        scale = np.maximum(np.abs(ref), np.abs(ref_len)[:, None, :])
-        err = np.abs(got - ref) / scale
-        assert err.max() <= TOL_POSITION, (
-            f"beta={beta!r}: position error {err.max():.3g} at index {np.unravel_index(err.argmax(), err.shape)}"
+        err = position_errors(scene, case, fr)
+        assert err.max() <= 1.0, (
+            f"beta={beta!r}: position error {err.max():.3g} x TOL_POSITION at {where(err, fr, case)}"
         )
-        got_len = scene.lengths(t, frame(beta))
-        ends = np.maximum(np.abs(ref[:, 0]), np.abs(ref[:, -1]))
-        allowed = TOL_LENGTH_REL * np.abs(ref_len) + TOL_LENGTH_ULP * np.spacing(ends)
-        excess = np.abs(got_len - ref_len) - allowed
-        assert excess.max() <= 0.0, f"beta={beta!r}: length error exceeds bound by {excess.max():.3g}"
+        err = length_errors(scene, fr)
+        assert err.max() <= 1.0, f"beta={beta!r}: length error {err.max():.3g} x its bound at {where(err, fr, case)}"
+
+
+@pytest.mark.parametrize("case", CASES, ids=ids())
+def test_proper_times(case: dict[str, Any]) -> None:
+    """Clock readings of three material points at every sample time of every frame."""
+    scene = build(case)
+    for fr in case["frames"]:
+        beta = float.fromhex(fr["beta"])
+        err = clock_errors(scene, case, fr)
+        assert err.max() <= 1.0, f"beta={beta!r}: clock error {err.max():.3g} x TOL_CLOCK at {where(err, fr, case)}"
 
 
 @pytest.mark.parametrize("case", CASES, ids=ids())
 def test_events_in_every_frame(case: dict[str, Any]) -> None:
     scene = build(case)
-    scale_len = max(unhex(v) or 0.0 for k, v in case["params"].items() if k.startswith("l"))
-    checks = [(0.0, case["events_lab"])] + [(float.fromhex(f["beta"]), f["events"]) for f in case["frames"]]
-    for beta, ref_events in checks:
-        got = scene.events_in(frame(beta))
-        assert set(got) == set(ref_events)
-        for name, (rt, rx) in ref_events.items():
-            t_ref, x_ref = float(rt), float(rx)
-            scale = max(abs(t_ref), abs(x_ref), scale_len)
-            gt, gx = got[name]
-            assert abs(gt - t_ref) <= TOL_EVENT * scale, (beta, name, gt, t_ref)
-            assert abs(gx - x_ref) <= TOL_EVENT * scale, (beta, name, gx, x_ref)
+    for beta, ref_events in frames_with_events(case):
+        errors = event_errors(scene, case, beta, ref_events)
+        name = max(errors, key=errors.__getitem__)
+        assert errors[name] <= 1.0, f"beta={beta!r}: event {name} off by {errors[name]:.3g} x TOL_EVENT"
 
 
 @pytest.mark.parametrize("case", CASES, ids=ids())

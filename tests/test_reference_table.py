@@ -13,7 +13,14 @@ from pathlib import Path
 import mpmath as mp
 import pytest
 
-from rigidrel_app.bench.reference import REFERENCE_DIGITS, REFERENCES, boost_event, frame_slice
+from rigidrel_app.bench.reference import (
+    REFERENCE_DIGITS,
+    REFERENCES,
+    boost_event,
+    frame_slice,
+    proper_time_by_quadrature,
+    reference_precision,
+)
 from tests.reference import make_reference
 
 TABLE = Path(__file__).parent / "reference" / "reference.json"
@@ -89,3 +96,41 @@ def test_every_registered_scene_has_an_independent_reference() -> None:
     kinds = set(rr.scene_descriptions())
     assert kinds <= set(BUILDERS), kinds - set(BUILDERS)
     assert kinds <= {case["kind"] for case in table["cases"]}
+
+
+@pytest.mark.slow  # about 3 s of 30-digit quadrature
+@pytest.mark.parametrize(
+    ("kind", "params"),
+    [
+        ("constant-acceleration", {"v": 0.6, "length": 1.0, "a_front": 0.5}),
+        ("deceleration", {"v": 0.99, "length": 1.0, "a_front": 1e-3}),
+        ("velocity-change", {"v_initial": -0.99, "v_final": 0.5, "length": 1.0, "a_front": 1e-7}),
+        ("rod-collision", {"v1": 0.6, "v2": 0.0, "m1": 1.0, "m2": 2.0, "l1": 1.0, "l2": 1.0, "eps": 0.5}),
+    ],
+)
+def test_clocks_agree_with_quadrature_of_the_worldline(kind: str, params: dict[str, float]) -> None:
+    """Each worldline's closed-form clock ``tau(t)`` (0 at ``start``) against ``int sqrt(1 - (dx/dt)^2) dt``
+    from its position alone, before, during and after the change, to 1e-25 of max(|tau|, 1)."""
+    with reference_precision():
+        ref = REFERENCES[kind].build((0.0, 0.375, 1.0), **params)
+    with mp.workdps(30):
+        for rod in ref.worldlines:
+            for w in rod:
+                span = max(w.stop - w.start, 1)
+                for t in (w.start - span / 3, w.start + span / 7, (w.start + w.stop) / 2, w.stop + span / 5):
+                    tau = w.tau(t)
+                    assert abs(tau - proper_time_by_quadrature(w, t)) < mp.mpf(10) ** -25 * max(abs(tau), 1)
+                assert abs(w.tau(w.start)) < mp.mpf(10) ** -25 * span
+
+
+def test_error_report_has_a_line_per_check_and_frame_class() -> None:
+    """The report of the first case (the paper's Fig. 1: every frame class) lists each check in each
+    frame class once, worst error first after the names."""
+    from tests.reference import error_report
+
+    table = json.loads(TABLE.read_text())
+    lines, _ = error_report.report(table["cases"][:1], by_group=False)
+    rows = [line.split()[:3] for line in lines[1:]]
+    assert rows == [[c, f, "all"] for c in error_report.CHECKS for f in error_report.FRAME_CLASSES]
+    for line in lines[1:]:
+        float(line.split()[3])

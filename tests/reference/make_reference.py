@@ -5,18 +5,29 @@ Independent of the core by construction: the scenes are those of
 rigidrel_core), which solves each scene by the paper's own route in mpmath at 50 digits,
 follows the paper's lab formulas point by point and finds a slice at frame time ``t'`` by
 bisection on lab time ``t`` of ``gamma (t - beta x(t)) = t'`` (the core never inverts
-anything: it evaluates closed forms in the frame). That package is also the run-time
-reference of ``rigidrel bench``.
+anything: it evaluates closed forms in the frame). At that lab time it also reads each
+point's clock, its proper time ``tau(t)`` integrated in the lab (0 where the point starts
+changing velocity). That package is also the run-time reference of ``rigidrel bench``.
 
-This script knows no scene: it takes every scene family's fixed cases (in their ``order``),
-then draws :data:`RANDOM_CASES` more from one seeded stream (each draw picks a kind in
-teaching order and lets that kind draw its parameters), picks the frames (the lab,
-``beta = +-0.999999``, one random frame, each rod's rest frame after and the barycentric
-frame) and sample times, and writes the table. Floats are stored as ``float.hex`` (exact),
-reference values as 30-digit strings. Adding a scene family to the reference package
-changes the random stream, hence the table: regenerate it.
+This script knows no scene: it takes every scene family's fixed cases (in their ``order``:
+the paper's examples, ultra-relativistic speeds, near and far from the horizon, mass ratios
+and sizes, velocity changes, weak accelerations ``a'_F L0 = 1e-3 .. 1e-7``), then draws
+:data:`RANDOM_CASES` more from one seeded stream (each draw picks a kind in teaching order and
+lets that kind draw its parameters), picks the frames (:func:`frames_for`: the lab, one random
+frame, ``beta = +-0.999999``, ``+-(1 - 1e-7)``, ``+-(1 - 1e-9)``, each rod's rest frame before
+and after, frames a rapidity of :data:`HAIR` either side of those, the barycentric frame) and
+sample times (:func:`sample_times`; fewer for the random cases in the frames added with the
+clocks, to keep the table near 6 MB), and writes the table.
 
-Run from the repository root (a few minutes)::
+Per case: kind, group, parameters, material fractions, rest lengths, final velocities and
+their gaps to light speed, derived numbers, the lab events; per frame: its velocity and role,
+the sample times, and at each time the positions and clock readings (``"proper_times"``) of
+every material point, each rod's end-to-end equal-time length, and the events seen there.
+Floats are stored as ``float.hex`` (exact), reference values as 30-digit strings. Adding a
+scene family or a case to the reference package changes the random stream, hence the table:
+regenerate it.
+
+Run from the repository root (about 8 minutes)::
 
     python -m tests.reference.make_reference                  # writes tests/reference/reference.json
     python -m tests.reference.make_reference --out /tmp/r.json  # elsewhere, e.g. to compare
@@ -43,7 +54,7 @@ from rigidrel_app.bench.reference import (
     Mp,
     RefScene,
     boost_event,
-    frame_slice,
+    frame_slice_and_clock,
     reference_precision,
 )
 
@@ -54,27 +65,43 @@ RANDOM_CASES = 36
 CASES_SEED = 20261121
 #: The seed of the stream the frames and sample times are drawn from, case after case.
 FRAMES_SEED = 7
+#: Fixed frames of every case: ``+-(1 - 10^-6)``, ``+-(1 - 10^-7)``, ``+-(1 - 10^-9)``.
+FAST_FRAMES = (0.999999, -0.999999, 1 - 1e-7, -(1 - 1e-7), 1 - 1e-9, -(1 - 1e-9))
+#: A frame "a hair off" a rod's rest frame: this much rapidity either side of the rod's velocity.
+HAIR = 1e-9
+#: Frame roles whose frames every case samples at all of :func:`sample_times`; the random cases
+#: sample the others (``"fast"``: the :data:`FAST_FRAMES`; ``"rest-before"``; ``"near-rest"``) at
+#: ``few`` times, which keeps the table near 6 MB.
+FULL_ROLES = frozenset({"lab", "random", "rest-after", "barycentric"})
 
 
 def s(x: Mp) -> str:
     return mp.nstr(x, 30, min_fixed=-mp.inf, max_fixed=mp.inf) if x != 0 else "0"
 
 
-def sample_times(events_frame: list[Mp], scale: float, rng: random.Random) -> list[float]:
-    """Event times, midpoints, points just beside each event, a margin, and +-1e6 lengths away."""
+def sample_times(events_frame: list[Mp], scale: float, rng: random.Random, *, few: bool = False) -> list[float]:
+    """Event times, midpoints, points just beside each event (1e-3 rest lengths: where a clock with a
+    large radius has barely started), a margin, and +-1e6 lengths away.
+
+    ``few``: the event times, one random time between the first and the last, and +-1e6 lengths
+    away (about a third as many).
+    """
     ts = sorted({float(t) for t in events_frame} | {0.0})
     out = set(ts)
     span = max(ts[-1] - ts[0], scale)
+    out.add(1e6 * scale)
+    out.add(-1e6 * scale)
+    if few:
+        out.add(ts[0] + rng.random() * (ts[-1] - ts[0]))
+        return sorted(out)
     for a, b in itertools.pairwise(ts):
         out.add(0.5 * (a + b))
         out.add(a + rng.random() * (b - a))
     for t in ts:
-        out.add(t + 1e-3 * span)
-        out.add(t - 1e-3 * span)
+        out.add(t + 1e-3 * scale)
+        out.add(t - 1e-3 * scale)
     out.add(ts[0] - 0.5 * span)
     out.add(ts[-1] + 0.5 * span)
-    out.add(1e6 * scale)
-    out.add(-1e6 * scale)
     return sorted(out)
 
 
@@ -85,49 +112,72 @@ def cases() -> list[dict[str, object]]:
     orders = [c.order for c in fixed]
     if len(set(orders)) != len(orders):
         raise ValueError(f"two reference cases share an order: {orders}")
-    out: list[dict[str, object]] = [{"kind": c.kind, "params": dict(c.params)} for c in fixed]
+    out: list[dict[str, object]] = [{"kind": c.kind, "params": dict(c.params), "group": c.group} for c in fixed]
     rng = random.Random(CASES_SEED)
     drawn = [r for r in REFERENCES.values() if r.draw is not None]
     for _ in range(RANDOM_CASES):
         ref = rng.choice(drawn)
         assert ref.draw is not None
-        out.append({"kind": ref.kind, "params": ref.draw(rng)})
+        out.append({"kind": ref.kind, "params": ref.draw(rng), "group": "random"})
     return out
 
 
-def frames_for(ref: RefScene, rng: random.Random) -> list[float]:
-    betas = [0.0, 0.999999, -0.999999, rng.uniform(-0.9, 0.9)]
-    betas += [float(v) for v in ref.final_velocities]  # each rod's rest frame after (to float64)
+def hair_off(v: Mp, sign: int) -> float:
+    """``tanh(atanh(v) + sign HAIR)`` at 50 digits, rounded to float64 (it rounds back to ``v``
+    itself when ``HAIR`` is below half an ulp of ``v``, i.e. at ``gamma`` of a few thousand)."""
+    with reference_precision():
+        return float(mp.tanh(mp.atanh(v) + sign * F(HAIR)))
+
+
+def frames_for(ref: RefScene, rng: random.Random) -> list[tuple[float, str]]:
+    """``(beta, role)`` of each frame of a case, the first role of a velocity kept: the lab, one
+    random frame, the :data:`FAST_FRAMES`, each rod's rest frame after and before (to float64),
+    frames a hair off those (:func:`hair_off`) and the barycentric frame."""
+    frames = [(0.0, "lab"), (rng.uniform(-0.9, 0.9), "random")]
+    frames += [(b, "fast") for b in FAST_FRAMES]
+    frames += [(float(v), "rest-after") for v in ref.final_velocities]
+    frames += [(float(v), "rest-before") for v in ref.initial_velocities]
+    frames += [
+        (hair_off(v, sign), "near-rest") for v in (*ref.initial_velocities, *ref.final_velocities) for sign in (1, -1)
+    ]
     if "u" in ref.extra:
-        betas.append(float(ref.extra["u"]))
-    return list(dict.fromkeys(betas))
+        frames.append((float(ref.extra["u"]), "barycentric"))
+    first: dict[float, str] = {}
+    for beta, role in frames:
+        first.setdefault(beta, role)
+    return list(first.items())
 
 
 def build_case(case: dict[str, object], rng: random.Random) -> dict[str, object]:
     kind = str(case["kind"])
     params: dict[str, Any] = dict(case["params"])  # type: ignore[arg-type]
+    few = case.get("group") == "random"
     with reference_precision():
         ref = BUILDERS[kind](FRACTIONS, **params)
         frames = []
-        for beta_f in frames_for(ref, rng):
+        for beta_f, role in frames_for(ref, rng):
             beta = F(beta_f)
             ev_frame = {k: boost_event(e, beta) for k, e in ref.events.items()}
             scale = float(max(ref.lengths_rest))
-            times = sample_times([e[0] for e in ev_frame.values()], scale, rng)
-            exact = [[[frame_slice(w, beta, F(t)) for t in times] for w in rod] for rod in ref.worldlines]
+            times = sample_times([e[0] for e in ev_frame.values()], scale, rng, few=few and role not in FULL_ROLES)
+            exact = [[[frame_slice_and_clock(w, beta, F(t)) for t in times] for w in rod] for rod in ref.worldlines]
             frames.append(
                 {
                     "beta": beta_f.hex(),
+                    "role": role,
                     "times": [t.hex() for t in times],
-                    "positions": [[[s(x) for x in pt] for pt in rod] for rod in exact],
-                    "lengths": [[s(b - a) for a, b in zip(rod[0], rod[-1])] for rod in exact],
+                    "positions": [[[s(x) for x, _ in pt] for pt in rod] for rod in exact],
+                    "proper_times": [[[s(tau) for _, tau in pt] for pt in rod] for rod in exact],
+                    "lengths": [[s(b[0] - a[0]) for a, b in zip(rod[0], rod[-1])] for rod in exact],
                     "events": {k: [s(e[0]), s(e[1])] for k, e in ev_frame.items()},
                 }
             )
         return {
             "kind": kind,
+            "group": str(case["group"]),
             "params": {k: (None if v is None else float(v).hex()) for k, v in params.items()},
             "fractions": [f.hex() for f in FRACTIONS],
+            "lengths_rest": [s(v) for v in ref.lengths_rest],
             "final_velocities": [s(v) for v in ref.final_velocities],
             "final_gaps": [s(1 - abs(v)) for v in ref.final_velocities],
             "extra": {k: s(v) for k, v in ref.extra.items()},

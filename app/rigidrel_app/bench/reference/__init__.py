@@ -10,10 +10,16 @@ Independent of :mod:`rigidrel_core` by construction (it never imports it; units 
   ``x = xi + (sqrt(1 + a'^2 t^2) - 1)/a'`` for constant acceleration with each point's own
   ``a' = 1/(xi + 1/a'_B)`` (Eq. (15)), Eq. (20) ``x = sqrt(L0^2 + t^2)`` for impulses,
   ``t -> -t`` for deceleration, Eqs. (22)-(23) for collisions;
+* each worldline carries its clock: the proper time ``tau(t)`` at lab time ``t``, integrated
+  piece by piece in the lab (``d tau = sqrt(1 - v^2) dt``; on a hyperbola of rest-distance
+  ``rho`` from its centre ``tau = rho asinh(t/rho)`` + const), reading 0 at the lab time
+  where the point starts changing velocity (the core's convention);
+  :func:`proper_time_by_quadrature` integrates ``sqrt(1 - (dx/dt)^2)`` from ``x(t)`` alone
+  as a cross-check of those closed forms;
 * a slice at frame time ``t'`` solves ``gamma (t - beta x(t)) = t'`` for the lab time ``t``
   (strictly increasing in ``t``) by bracketing root finding, then boosts:
-  ``x' = gamma (x(t) - beta t)``. The core never inverts anything: it evaluates closed
-  forms in the frame.
+  ``x' = gamma (x(t) - beta t)``, and reads the clock there: ``tau(t)`` (an invariant). The
+  core never inverts anything: it evaluates closed forms in the frame.
 
 One module per scene family holds that family's builders and the cases of the committed
 table (:class:`SceneReference` s in a module-level ``SCENES`` tuple); :func:`discover` finds
@@ -35,6 +41,7 @@ from __future__ import annotations
 
 import functools
 import importlib
+import itertools
 import pkgutil
 import random
 from collections.abc import Callable, Mapping
@@ -50,7 +57,8 @@ REFERENCE_DIGITS = 50
 
 #: An mpmath number (mpmath ships no precise type hints).
 Mp = Any
-Worldline = Callable[[Mp], Mp]
+#: A function of lab time (a position or a clock reading).
+OfTime = Callable[[Mp], Mp]
 #: How a frame slice finds its lab time: plain bisection (the committed table), or the
 #: Anderson-Bjorck bracketing secant (same bracket and tolerance, about 10x fewer steps).
 SliceSolver = Literal["bisection", "anderson-bjorck"]
@@ -93,13 +101,30 @@ def gamma_of(v: Mp) -> Mp:
 
 
 @dataclass(frozen=True)
+class Worldline:
+    """One material point in the lab: its position ``x(t)`` and its clock ``tau(t)`` at lab time ``t``.
+
+    The point is inertial before lab time ``start`` and after ``stop`` and changes velocity in
+    between (``start == stop``: a kink, an impulse). Its clock reads ``tau(start) = 0`` and
+    grows by ``d tau = sqrt(1 - (dx/dt)^2) dt``: negative before the change, whatever frame
+    it is read from.
+    """
+
+    x: OfTime
+    tau: OfTime
+    start: Mp
+    stop: Mp
+
+
+@dataclass(frozen=True)
 class RefScene:
     """Reference description: per rod, a lab worldline for each material fraction."""
 
     worldlines: list[list[Worldline]]
-    """``[rod][fraction] -> x(t)``."""
+    """``[rod][fraction]``: position and clock of that material point."""
     events: dict[str, tuple[Mp, Mp]]
     """Named events as lab ``(t, x)``, in the paper's notation (the core's names)."""
+    initial_velocities: list[Mp]
     final_velocities: list[Mp]
     lengths_rest: list[Mp]
     extra: dict[str, Mp]
@@ -110,9 +135,16 @@ class RefScene:
 @at_reference_precision
 def accelerating_point(xi: Mp, alpha: Mp, V: Mp) -> Worldline:
     """Sec. 3, Eq. (4): a point at rest at xi for t <= 0, proper acceleration alpha until speed V,
-    reached at ``T = gamma V / alpha`` and ``X = xi + (gamma - 1)/alpha`` (Eqs. (9), (8))."""
+    reached at ``T = gamma V / alpha`` and ``X = xi + (gamma - 1)/alpha`` (Eqs. (9), (8)).
+
+    Its clock: ``d tau = dt / gamma`` with ``gamma = sqrt(1 + alpha^2 t^2)`` (Eq. (7)), so
+    ``tau = asinh(alpha t)/alpha`` while it accelerates, ``tau = t`` at rest before and
+    ``tau = asinh(alpha T)/alpha + (t - T) sqrt(1 - V^2)`` after.
+    """
     T = gamma_of(V) * V / alpha
     X = xi + (gamma_of(V) - 1) / alpha
+    tau_T = mp.asinh(alpha * T) / alpha
+    slow = mp.sqrt(1 - V * V)
 
     def x(t: Mp) -> Mp:
         if t <= 0:
@@ -121,7 +153,14 @@ def accelerating_point(xi: Mp, alpha: Mp, V: Mp) -> Worldline:
             return xi + (mp.sqrt(1 + alpha * alpha * t * t) - 1) / alpha
         return X + V * (t - T)
 
-    return x
+    def tau(t: Mp) -> Mp:
+        if t <= 0:
+            return t
+        if t <= T:
+            return mp.asinh(alpha * t) / alpha
+        return tau_T + (t - T) * slow
+
+    return Worldline(x, tau, mp.mpf(0), T)
 
 
 @at_reference_precision
@@ -129,7 +168,11 @@ def hyperbola_point(centre: Mp, d: Mp, side: int, v_before: Mp, v_after: Mp) -> 
     """A point at rest-distance d from a centre event (0, centre) on side +1/-1.
 
     Sec. 5, Eq. (23): x = centre + side sqrt(d^2 + t^2) between the times where its velocity
-    is v_before and v_after; the tangent lines outside.
+    is v_before and v_after, ``t_0 = side d gamma_0 v_before`` and ``t_1 = side d gamma_1 v_after``;
+    the tangent lines outside. Its clock: ``d tau = sqrt(1 - (dx/dt)^2) dt = d dt/sqrt(d^2 + t^2)``
+    on the hyperbola, so ``tau = d (asinh(t/d) - asinh(t_0/d))`` there (0 for ``d = 0``: a
+    kink), ``(t - t_0) sqrt(1 - v_before^2)`` before and ``tau(t_1) + (t - t_1) sqrt(1 - v_after^2)``
+    after.
     """
 
     def t_at(v: Mp) -> Mp:  # dx/dt = side t / sqrt(d^2 + t^2) = v
@@ -138,6 +181,7 @@ def hyperbola_point(centre: Mp, d: Mp, side: int, v_before: Mp, v_after: Mp) -> 
     t0, t1 = t_at(v_before), t_at(v_after)
     x0 = centre + side * d * gamma_of(v_before)
     x1 = centre + side * d * gamma_of(v_after)
+    slow0, slow1 = mp.sqrt(1 - v_before * v_before), mp.sqrt(1 - v_after * v_after)
 
     def x(t: Mp) -> Mp:
         if t < t0:
@@ -146,7 +190,46 @@ def hyperbola_point(centre: Mp, d: Mp, side: int, v_before: Mp, v_after: Mp) -> 
             return x1 + v_after * (t - t1)
         return centre + side * mp.sqrt(d * d + t * t)
 
-    return x
+    def on_hyperbola(t: Mp) -> Mp:
+        return d * (mp.asinh(t / d) - mp.asinh(t0 / d)) if d != 0 else mp.mpf(0)
+
+    tau1 = on_hyperbola(t1)
+
+    def tau(t: Mp) -> Mp:
+        if t < t0:
+            return (t - t0) * slow0
+        if t > t1:
+            return tau1 + (t - t1) * slow1
+        return on_hyperbola(t)
+
+    return Worldline(x, tau, t0, t1)
+
+
+@at_reference_precision
+def time_reversed(w: Worldline) -> Worldline:
+    """``w`` run backwards in lab time (deceleration is acceleration with ``t -> -t``):
+    ``x_r(t) = x(-t)``; its change starts at ``-stop``, where its clock reads 0:
+    ``tau_r(t) = tau(stop) - tau(-t)``."""
+    tau_stop = w.tau(w.stop)
+    return Worldline(lambda t: w.x(-t), lambda t: tau_stop - w.tau(-t), -w.stop, -w.start)
+
+
+@at_reference_precision
+def proper_time_by_quadrature(w: Worldline, t: Mp) -> Mp:
+    """The clock at lab time ``t`` from the position alone: ``int_start^t sqrt(1 - (dx/dt)^2) dt``
+    (negative before ``start``), ``dx/dt`` by mpmath's numerical differentiation of ``w.x`` and
+    the integral by ``mp.quad`` split at ``start`` and ``stop`` (where ``dx/dt`` jumps or bends).
+    An independent check of the closed forms in ``w.tau``; slow (seconds a reading)."""
+
+    def rate(s: Mp) -> Mp:
+        v = mp.diff(w.x, s)
+        return mp.sqrt(1 - v * v)
+
+    nodes = sorted({w.start, w.stop, t})
+    lo, hi = (w.start, t) if t >= w.start else (t, w.start)
+    pieces = [p for p in nodes if lo <= p <= hi]
+    total = mp.fsum(mp.quad(rate, [a, b]) for a, b in itertools.pairwise(pieces) if b > a)
+    return total if t >= w.start else -total
 
 
 @at_reference_precision
@@ -157,8 +240,9 @@ def material_point(f: float, length: Mp) -> Mp:
 
 # ------------------------------------------------------------------ frame slices
 @at_reference_precision
-def frame_slice(x: Worldline, beta: Mp, t_frame: Mp, solver: SliceSolver = "bisection") -> Mp:
-    """x' at frame time t': solve gamma (t - beta x(t)) = t' for lab t, then x' = gamma (x(t) - beta t).
+def lab_time(x: OfTime, beta: Mp, t_frame: Mp, solver: SliceSolver = "bisection") -> Mp:
+    """The lab time ``t`` where a worldline ``x(t)`` crosses frame time ``t'``: the root of
+    ``gamma (t - beta x(t)) = t'``.
 
     The left side is strictly increasing in ``t`` (|dx/dt| < 1). The root is bracketed by
     quadrupling ``[-1, 1]`` and narrowed until the bracket is below ``10^-(digits - 2)`` of
@@ -177,17 +261,30 @@ def frame_slice(x: Worldline, beta: Mp, t_frame: Mp, solver: SliceSolver = "bise
         hi *= 4
     scale = max(abs(lo), abs(hi), mp.mpf(1))
     tol = scale * mp.mpf(10) ** (-(REFERENCE_DIGITS - 2))
-    if solver == "bisection":
-        while hi - lo > tol:
-            mid = (lo + hi) / 2
-            if f(mid) < 0:
-                lo = mid
-            else:
-                hi = mid
-        t = (lo + hi) / 2
-    else:
-        t = _anderson_bjorck(f, lo, hi, tol)
-    return g * (x(t) - beta * t)
+    if solver == "anderson-bjorck":
+        return _anderson_bjorck(f, lo, hi, tol)
+    while hi - lo > tol:
+        mid = (lo + hi) / 2
+        if f(mid) < 0:
+            lo = mid
+        else:
+            hi = mid
+    return (lo + hi) / 2
+
+
+@at_reference_precision
+def frame_slice(w: Worldline, beta: Mp, t_frame: Mp, solver: SliceSolver = "bisection") -> Mp:
+    """x' at frame time t': the lab time ``t`` of :func:`lab_time`, then x' = gamma (x(t) - beta t)."""
+    t = lab_time(w.x, beta, t_frame, solver)
+    return gamma_of(beta) * (w.x(t) - beta * t)
+
+
+@at_reference_precision
+def frame_slice_and_clock(w: Worldline, beta: Mp, t_frame: Mp, solver: SliceSolver = "bisection") -> tuple[Mp, Mp]:
+    """``(x', tau)`` at frame time t': one lab time ``t`` of :func:`lab_time`, then
+    ``x' = gamma (x(t) - beta t)`` and the clock ``tau(t)`` (the same in every frame)."""
+    t = lab_time(w.x, beta, t_frame, solver)
+    return gamma_of(beta) * (w.x(t) - beta * t), w.tau(t)
 
 
 def _anderson_bjorck(f: Callable[[Mp], Mp], lo: Mp, hi: Mp, tol: Mp) -> Mp:
@@ -246,6 +343,21 @@ HORIZON = 300
 """Near the Rindler horizon (``a'_F L0 -> 1``) and far from it."""
 MASS_RATIOS_AND_SIZES = 400
 VELOCITY_CHANGES = 500
+WEAK_ACCELERATION = 600
+"""``a'_F L0 = 1e-3 .. 1e-7``: every point's radius ``rho = 1/a'`` is ``10^3 .. 10^7`` rest lengths,
+so clocks advance ``rho`` times the rapidity change, read in frames far from the lab."""
+#: Each group's name in the committed table (``order // 100 * 100`` is a fixed case's group;
+#: the random cases form the group ``"random"``).
+GROUP_NAMES: Mapping[int, str] = MappingProxyType(
+    {
+        PAPER_EXAMPLES: "paper",
+        ULTRA_RELATIVISTIC: "ultra-relativistic",
+        HORIZON: "horizon",
+        MASS_RATIOS_AND_SIZES: "mass-ratios-sizes",
+        VELOCITY_CHANGES: "velocity-changes",
+        WEAK_ACCELERATION: "weak-acceleration",
+    }
+)
 
 
 @dataclass(frozen=True)
@@ -258,6 +370,11 @@ class ReferenceCase:
     """Sort key of the table's fixed cases (a group above plus a position): the table is
     generated case by case from one random stream (frames and sample times), so the order
     is part of its content."""
+
+    @property
+    def group(self) -> str:
+        """The name of the case's group (:data:`GROUP_NAMES`)."""
+        return GROUP_NAMES[self.order // 100 * 100]
 
 
 #: How a scene kind draws the parameters of a random case from the table's one random stream.

@@ -20,6 +20,7 @@ from . import (
     PAPER_EXAMPLES,
     ULTRA_RELATIVISTIC,
     VELOCITY_CHANGES,
+    WEAK_ACCELERATION,
     F,
     ReferenceCase,
     RefScene,
@@ -31,6 +32,7 @@ from . import (
     log_uniform,
     material_point,
     speed,
+    time_reversed,
 )
 
 
@@ -50,19 +52,19 @@ def ref_constant_acceleration(fractions: Sequence[float], v: float, length: floa
         "T_B": (g * V / aB, (g - 1) / aB),
         "T_F": (g * V / aF, L + (g - 1) / aF),
     }
-    return RefScene([wl], events, [V], [L], {"a_B": aB})
+    return RefScene([wl], events, [mp.mpf(0)], [V], [L], {"a_B": aB})
 
 
 @at_reference_precision
 def ref_deceleration(fractions: Sequence[float], v: float, length: float, a_front: float) -> RefScene:
     """From ``-v`` to rest on ``[0, L0]`` at ``t = 0``: :func:`ref_constant_acceleration` with ``t -> -t``."""
     acc = ref_constant_acceleration(fractions, v, length, a_front)
-    wl = [[(lambda t, w=w: w(-t)) for w in acc.worldlines[0]]]
+    wl = [[time_reversed(w) for w in acc.worldlines[0]]]
     events = {
         "-T_F": (-acc.events["T_F"][0], acc.events["T_F"][1]),
         "-T_B": (-acc.events["T_B"][0], acc.events["T_B"][1]),
     }
-    return RefScene(wl, events, [mp.mpf(0)], acc.lengths_rest, {})
+    return RefScene(wl, events, [-F(v)], [mp.mpf(0)], acc.lengths_rest, {})
 
 
 @at_reference_precision
@@ -87,7 +89,7 @@ def ref_velocity_change(
         for suffix, vel in (("0", Vi), ("", Vf)):
             g = gamma_of(vel)
             events[f"T_{name}{suffix}"] = (side * d * g * vel, centre + side * d * g)
-    return RefScene([wl], events, [Vf], [L], {})
+    return RefScene([wl], events, [Vi], [Vf], [L], {})
 
 
 # ------------------------------------------------------------------ random cases
@@ -112,6 +114,13 @@ def _draw_velocity_change(rng: random.Random) -> dict[str, float | None]:
 
 
 # ------------------------------------------------------------------ fixed cases
+def _weak(kind: str, a_front_length: float, position: int, length: float = 1.0, **velocities: float) -> ReferenceCase:
+    """A case of :data:`WEAK_ACCELERATION`: ``a'_F L0`` given, so every radius is about ``L0 / (a'_F L0)``."""
+    return ReferenceCase(
+        kind, {**velocities, "length": length, "a_front": a_front_length / length}, WEAK_ACCELERATION + position
+    )
+
+
 CONSTANT_ACCELERATION = SceneReference(
     "constant-acceleration",
     10,
@@ -124,6 +133,10 @@ CONSTANT_ACCELERATION = SceneReference(
         ReferenceCase("constant-acceleration", {"v": 0.6, "length": 1.0, "a_front": 1e-6}, HORIZON + 2),
         ReferenceCase("constant-acceleration", {"v": 0.6, "length": 1e-6, "a_front": 2.5e5}, MASS_RATIOS_AND_SIZES + 4),
         ReferenceCase("constant-acceleration", {"v": 0.6, "length": 1e6, "a_front": 2.5e-7}, MASS_RATIOS_AND_SIZES + 5),
+        _weak("constant-acceleration", 1e-3, 0, v=0.1),
+        _weak("constant-acceleration", 1e-5, 1, v=0.6),
+        _weak("constant-acceleration", 1e-7, 2, v=0.99),
+        _weak("constant-acceleration", 1e-5, 3, v=1 - 1e-9, length=1e-3),
     ),
     _draw_acceleration,
 )
@@ -135,6 +148,10 @@ DECELERATION = SceneReference(
     (
         ReferenceCase("deceleration", {"v": 0.6, "length": 1.0, "a_front": 0.5}, PAPER_EXAMPLES + 1),
         ReferenceCase("deceleration", {"v": 0.8, "length": 1.0, "a_front": 1 - 1e-6}, HORIZON + 1),
+        _weak("deceleration", 1e-3, 4, v=0.99),
+        _weak("deceleration", 1e-5, 5, v=0.1),
+        _weak("deceleration", 1e-7, 6, v=0.6),
+        _weak("deceleration", 1e-7, 7, v=1 - 1e-9, length=1e3),
     ),
     _draw_acceleration,
 )
@@ -164,6 +181,10 @@ VELOCITY_CHANGE = SceneReference(
             {"v_initial": 0.5, "v_final": 0.0, "length": 2.0, "a_front": 0.25},
             VELOCITY_CHANGES + 3,
         ),
+        _weak("velocity-change", 1e-3, 8, v_initial=0.1, v_final=0.99),
+        _weak("velocity-change", 1e-5, 9, v_initial=0.6, v_final=-0.3),
+        _weak("velocity-change", 1e-7, 10, v_initial=-0.99, v_final=0.5),
+        _weak("velocity-change", 1e-5, 11, v_initial=0.5, v_final=1 - 1e-9),
     ),
     _draw_velocity_change,
 )

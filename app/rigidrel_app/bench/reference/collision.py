@@ -76,7 +76,7 @@ def ref_rod_collision(
         "T_2": (g2 * V2 * L2, g2 * L2),
         "T_2'": (gp2 * Vp2 * L2, gp2 * L2),
     }
-    return RefScene([rod1, rod2], events, [Vp1, Vp2], [L1, L2], sol)
+    return RefScene([rod1, rod2], events, [V1, V2], [Vp1, Vp2], [L1, L2], sol)
 
 
 def _draw(rng: random.Random) -> dict[str, float | None]:

@@ -35,7 +35,7 @@ def ref_impulsive_start(fractions: Sequence[float], v: float, length: float) -> 
     V, L = F(v), F(length)
     wl = [hyperbola_point(mp.mpf(0), material_point(f, L), +1, mp.mpf(0), V) for f in fractions]
     g = gamma_of(V)
-    return RefScene([wl], {"T_F": (V * g * L, g * L)}, [V], [L], {})
+    return RefScene([wl], {"T_F": (V * g * L, g * L)}, [mp.mpf(0)], [V], [L], {})
 
 
 def _draw(rng: random.Random) -> dict[str, float | None]:

@@ -40,7 +40,7 @@ def ref_wall_collision(fractions: Sequence[float], v: float, length: float, eps:
     wl = [hyperbola_point(mp.mpf(0), material_point(f, L), +1, -V, Vp) for f in fractions]
     g, gp = gamma_of(V), gamma_of(Vp)
     events = {"T_1": (-g * V * L, g * L), "T_1'": (gp * Vp * L, gp * L)}
-    return RefScene([wl], events, [Vp], [L], {"heat": g - gp})
+    return RefScene([wl], events, [-V], [Vp], [L], {"heat": g - gp})
 
 
 def _draw(rng: random.Random) -> dict[str, float | None]:
