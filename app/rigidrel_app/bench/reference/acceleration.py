@@ -3,7 +3,8 @@
 Each material point at rest-distance ``xi`` from the back end has its own proper
 acceleration ``a' = 1/(xi + 1/a'_B)`` with ``a'_B = a'_F / (1 - a'_F L0)`` (Eq. (15)) and
 follows Eq. (4) ``x = xi + (sqrt(1 + a'^2 t^2) - 1)/a'`` until it reaches ``V``, at
-``T = gamma V / a'`` (Eq. (9)); deceleration is the same worldlines with ``t -> -t`` (Eq. (35)).
+``T = gamma V / a'`` (Eq. (9)); deceleration is the same worldlines with ``t -> -t`` (Sec. 3:
+Eqs. (5)-(6) with ``t -> -t``).
 A general change ``V_i -> V_f`` is a family of hyperbolas about one centre (Eq. (23)).
 """
 
