@@ -121,38 +121,52 @@ class LabRow(NamedTuple):
     intercept_final: float
     minus_u_stop: float
     w_stop: float
+    low: tuple[float, float, float, float, float, float]
+    """The double-double low parts of the six values above from ``intercept_initial`` on: the
+    light-cone coordinates of two switch events differ by far less than each can be (a light ray
+    chasing an ultra-relativistic point), and their difference is then exact."""
 
 
 def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum]) -> LabRow:
     """The lab constants of fraction ``f`` (``sums``: :func:`_two_anchor_sums` of the motion's
-    ``1/gamma`` and ``exp(-+theta)`` before and after).
+    ``1/gamma`` and ``exp(-+theta)`` before and after), each to double-double.
 
     Each is ``x_C + sign rho F`` (from the centre) or ``x_V + sign rho (F - 1)`` (from the vertex),
-    whichever has the smaller terms, redone in double-double (:func:`_anchored_dd`) if those cancel.
+    whichever has the smaller terms, with ``F`` to double-double from the velocity's exact parts
+    (:func:`_factor_dd`): an exact product and an exact sum, so that a switch event on (or a hair
+    off) the origin's light cone, or a tangent through the origin, keeps its coordinate to ~1e-32
+    of the scene's size, and a boost of any ``gamma`` multiplies an exact number.
     """
     sig, xc = float(m.sign), m.horizon_x
+    # the point's rest-distance from the centre and its vertex, to double-double: the ends are
+    # exactly L0 apart (rho_right - rho_left = L0), which float radii rounded apart would not be
     if f == 0.0:
-        rho, x_lab = m.radius_left, m.vertex_left
+        along, along_lo = 0.0, 0.0
     elif f == 1.0:
-        rho, x_lab = m.radius_right, m.vertex_left + m.length
+        along, along_lo = m.length, 0.0
     else:
-        rho, x_lab = m.radius_left + sig * (f * m.length), m.vertex_left + f * m.length
-    srho, axc, ax = sig * rho, abs(xc), abs(x_lab)
-    values = []
-    for fc, fv, afc, afv, v, sign in sums:
-        by_centre, by_vertex = axc + rho * afc, ax + rho * afv
-        if by_centre <= by_vertex:
-            total, scale, anchor, minus_one = xc + srho * fc, by_centre, xc, False
+        along, along_lo = _two_prod(f, m.length)
+    rho, rho_lo = _two_sum(m.radius_left, sig * along)
+    rho_lo += sig * along_lo
+    x_lab, x_lo = _two_sum(m.vertex_left, along)
+    x_lo += along_lo
+    if rho < 0.0:  # a point beyond the centre cannot be (radii are >= 0); only rounding gets here
+        rho, rho_lo = 0.0, 0.0
+    srho, srho_lo, axc, ax = sig * rho, sig * rho_lo, abs(xc), abs(x_lab)
+    highs, lows = [], []
+    for f_hi, f_lo, g_hi, g_lo, abs_f, abs_g in sums:
+        if axc + rho * abs_f <= ax + rho * abs_g:
+            anchor, anchor_lo, hi, lo = xc, 0.0, f_hi, f_lo
         else:
-            total, scale, anchor, minus_one = x_lab + srho * fv, by_vertex, x_lab, True
-        if abs(total) * _CANCELLATION < scale:
-            total = _anchored_dd(anchor, srho, v, sign, minus_one)
-        values.append(total)
-    return LabRow(rho, x_lab, *values)
+            anchor, anchor_lo, hi, lo = x_lab, x_lo, g_hi, g_lo
+        p, pe = _two_prod(srho, hi)
+        s, se = _two_sum(anchor, p)
+        s, e = _two_sum(s, se + (pe + (srho * lo + srho_lo * hi) + anchor_lo))
+        highs.append(s)
+        lows.append(e)
+    return LabRow(rho, x_lab, *highs, low=tuple(lows))  # type: ignore[arg-type]
 
 
-#: A light-cone sum that keeps less than 1/64 of its terms is redone in double-double.
-_CANCELLATION = 64.0
 _SPLITTER = 134217729.0  # 2^27 + 1 (Veltkamp)
 
 
@@ -203,39 +217,20 @@ def _factor_dd(v: ExactVelocity, sign: float) -> tuple[float, float]:
     return _sqrt_dd(*_two_sum(q1, (((a1 - p) - pe) + a2 - q1 * b2) / b1))
 
 
-_AnchorSum = tuple[float, float, float, float, ExactVelocity, float]
+_AnchorSum = tuple[float, float, float, float, float, float]
 
 
 def _two_anchor_sums(v: ExactVelocity, sign: float) -> _AnchorSum:
-    """``(F, F - 1, |F|, |F - 1|, v, sign)`` for the factor ``F`` of :func:`_factor_dd` in float64.
+    """``(F, F - 1)`` to double-double for the factor ``F`` of :func:`_factor_dd`, and their float
+    magnitudes: ``F_hi, F_lo, (F-1)_hi, (F-1)_lo, |F|, |F - 1|``.
 
     A row's tangent intercept and switch-event light-cone coordinates are ``x_C + sign rho F`` (from
-    the centre) or ``x_V + sign rho (F - 1)`` (from the vertex); ``F - 1`` is ``-(gamma v)^2/((gamma +
-    1) gamma)`` for ``1/gamma`` and ``expm1(sign theta)`` for ``exp(sign theta)``, without cancellation.
+    the centre) or ``x_V + sign rho (F - 1)`` (from the vertex).
     """
-    if sign == 0.0:
-        g, u = v.lorentz_factor(), v.proper_velocity()
-        f, f1 = 1.0 / g, -u * u / ((g + 1.0) * g)
-    else:
-        theta = sign * v.rapidity()
-        f, f1 = math.exp(theta), math.expm1(theta)
-    return f, f1, abs(f), abs(f1), v, sign
-
-
-def _anchored_dd(anchor: float, srho: float, v: ExactVelocity, sign: float, minus_one: bool) -> float:
-    """``anchor + sign_rho (F - [1 if minus_one])`` with ``F`` of :func:`_factor_dd` to double-double.
-
-    Used when the float sum cancels, so that a switch event on (or a hair off) the origin's light
-    cone, or a tangent through the origin, keeps its coordinate to ~1e-32 of the scene's size, and a
-    boost of any ``gamma`` multiplies an exact number.
-    """
-    e1, e2 = _factor_dd(v, sign)
-    if minus_one:
-        e1, e = _two_sum(e1, -1.0)
-        e2 += e
-    p, pe = _two_prod(srho, e1)
-    s, se = _two_sum(anchor, p)
-    return s + (se + (pe + srho * e2))
+    f_hi, f_lo = _factor_dd(v, sign)
+    g_hi, g_lo = _two_sum(f_hi, -1.0)
+    g_hi, g_lo = _two_sum(g_hi, g_lo + f_lo)
+    return f_hi, f_lo, g_hi, g_lo, abs(f_hi), abs(g_hi)
 
 
 def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatArray) -> MotionPlan:
@@ -285,7 +280,7 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
         c_f = m.velocity_final.lorentz_factor() / math.cosh(th_f)
         # proper time the change takes per unit rest-distance: the lab rapidity change (invariant)
         turn = abs(relative_rapidity(m.velocity_final, m.velocity_initial))
-        for rho, x_lab, a_i, minus_u, w, a_f, minus_u_stop, w_stop in m.lab_rows(fractions):
+        for rho, x_lab, a_i, minus_u, w, a_f, minus_u_stop, w_stop, _ in m.lab_rows(fractions):
             q0 = math.hypot(rho, t_c)
             x_hyp = x_c + sig * q0 if same_side else x_lab * (xc - sig * rho) / (x_c - sig * q0)
             srho = sig * rho

@@ -21,7 +21,7 @@ from ._exact import ExactVelocity, relative_rapidity
 from ._frame import LAB, Frame, check_frame
 from ._kinds import ObstacleKind, OriginEvent
 from ._motion import MotionPlan, RigidMotion, plan_motions
-from ._signals import ChangeVerdict, _event, change_verdict, signal_arrival_on
+from ._signals import ChangeVerdict, Exact, _event, change_verdict, signal_arrival_on
 from ._validate import ParameterError, as_real, check_fractions, check_times
 
 FloatArray = npt.NDArray[np.float64]
@@ -326,9 +326,21 @@ class Scene:
         f = self._fraction(fraction)
         if direction is not None and direction not in (1, -1):
             raise ParameterError("direction", "+1, -1 or None (toward the point)", direction)
-        t0, x0 = self.source_event(source, frame)
-        x_now = float(self.material_positions(np.array([t0]), frame, fractions=np.array([f]))[i, 0, 0])
-        return signal_arrival_on(self.rods[i].motion, f, frame, (t0, x0), x_now, direction)
+        return signal_arrival_on(self.rods[i].motion, f, frame, self._light_cone(source, frame), direction)
+
+    def _light_cone(self, source: str | npt.ArrayLike, frame: Frame) -> tuple[Exact, Exact]:
+        """The lab ``(t - x, t + x)`` of a source to double-double: exact for the scene's own events
+        (the motion's lab rows), from the given frame pair (boosted back) otherwise."""
+        if isinstance(source, str) and source != self.origin_event.value:
+            self.source_event(source, frame)  # names the valid sources if this one is not
+            spec = next(s for s in self.event_specs if s.name == source)
+            row = self.rods[spec.rod].motion.lab_rows(ENDS)[spec.end]
+            if spec.phase == "start":
+                return (-row.minus_u_start, -row.low[1]), (row.w_start, row.low[2])
+            return (-row.minus_u_stop, -row.low[4]), (row.w_stop, row.low[5])
+        t, x = self.source_event(source, frame)
+        up, down = frame.doppler_factors()
+        return ((t - x) / up, 0.0), ((t + x) / down, 0.0)
 
     def comoving_frame(
         self,

@@ -97,44 +97,93 @@ def causal_relation(a: npt.ArrayLike, b: npt.ArrayLike) -> CausalRelation:
     return CausalRelation("lightlike", 0.0, 1 if du + dw > 0.0 else -1)
 
 
+#: A lab light-cone coordinate to double-double: ``(hi, lo)``.
+Exact = tuple[float, float]
+
+
+def _minus(a: Exact, b: Exact) -> float:
+    """``a - b`` of two double-double numbers, rounded once: exact however close they are."""
+    return (a[0] - b[0]) + (a[1] - b[1])
+
+
 def signal_arrival_on(
-    motion: RigidMotion, fraction: float, frame: Frame, source: Event, x_now: float, direction: int | None
+    motion: RigidMotion, fraction: float, frame: Frame, source: tuple[Exact, Exact], direction: int | None
 ) -> Event | None:
-    """Where a light ray leaving ``source`` (frame ``(t, x)``) meets material point ``fraction`` of
-    ``motion``, as frame ``(t, x)``; ``None`` if it never does. ``x_now`` is the point's frame x at the
-    source's time; ``direction`` is +1 (ray toward +x), -1, or ``None`` (toward the point)."""
-    t0, x0 = source
-    ahead = x_now - x0
-    if direction is None:
-        if ahead == 0.0:
-            return (t0, x0)
-        direction = 1 if ahead > 0.0 else -1
-    if direction * ahead < 0.0:
-        return None  # the ray leaves the point behind: it never meets it
+    """Where a light ray leaving ``source`` meets material point ``fraction`` of ``motion``, as frame
+    ``(t, x)``; ``None`` if it never does.
+
+    ``source`` is given by its *lab* light-cone coordinates ``(u_0, w_0) = (t - x, t + x)`` to
+    double-double: exact for the scene's own events, so a source a hair off (or on) a worldline,
+    or a ray chasing an ultra-relativistic point, is not blurred by rounding. Every difference of
+    light-cone coordinates is taken in the lab to double-double and then scaled by the frame's
+    Doppler factor (``u' = e^psi u``, ``w' = e^-psi w``).
+
+    ``direction`` +1 is a ray toward +x (it keeps ``u_0``; it meets the point in the source's future
+    iff the meeting's ``w >= w_0``), -1 toward -x (keeps ``w_0``, needs ``u >= u_0``); ``None`` takes
+    the one that meets the point in the future (both do, at the source, when it is on the worldline).
+    On the hyperbola ``(u - u_C)(w - w_C) = -rho^2`` the ray keeping ``u_0`` meets it at
+    ``w = w_s - W_s (u_0 - u_s)/(u_0 - u_C)`` from any point ``s`` of it (``W_s = w_s - w_C``): the
+    switch events or the lab vertex, whichever gives the smaller terms.
+    """
+    u0, w0 = source
     up, down = frame.doppler_factors()
     row = motion.lab_rows(np.array([fraction]))[0]
-    u_start, w_start = -row.minus_u_start * up, row.w_start * down
-    u_stop, w_stop = -row.minus_u_stop * up, row.w_stop * down
+    lo = row.low
+    u_start, w_start = (-row.minus_u_start, -lo[1]), (row.w_start, lo[2])
+    u_stop, w_stop = (-row.minus_u_stop, -lo[4]), (row.w_stop, lo[5])
     th_i = relative_rapidity(motion.velocity_initial, frame.velocity)
     th_f = relative_rapidity(motion.velocity_final, frame.velocity)
-    u_centre, w_centre = -motion.horizon_x * up, motion.horizon_x * down
-    rho2 = row.radius * row.radius
-    if direction == 1:  # the ray keeps u = u0; solve for w
-        u0 = t0 - x0
-        if u_start >= u0:
-            u, w = u0, w_start + math.exp(2.0 * th_i) * (u0 - u_start)
-        elif u_stop >= u0 and u0 != u_centre:
-            u, w = u0, w_centre - rho2 / (u0 - u_centre)
-        else:
-            u, w = u0, w_stop + math.exp(2.0 * th_f) * (u0 - u_stop)
-    else:  # the ray keeps w = w0; solve for u
-        w0 = t0 + x0
-        if w_start >= w0:
-            u, w = u_start + math.exp(-2.0 * th_i) * (w0 - w_start), w0
-        elif w_stop >= w0 and w0 != w_centre:
-            u, w = u_centre - rho2 / (w0 - w_centre), w0
-        else:
-            u, w = u_stop + math.exp(-2.0 * th_f) * (w0 - w_stop), w0
+    srho = motion.sign * row.radius
+    centre_u, centre_w = (-motion.horizon_x, 0.0), (motion.horizon_x, 0.0)
+    # points of the hyperbola (lab u, lab w) with their frame offsets from the centre,
+    # U' = -sign rho e^-theta', W' = sign rho e^theta': the switch events and the lab vertex
+    anchors = (
+        (u_start, w_start, -srho * math.exp(-th_i), srho * math.exp(th_i)),
+        (u_stop, w_stop, -srho * math.exp(-th_f), srho * math.exp(th_f)),
+        ((-row.x_vertex, 0.0), (row.x_vertex, 0.0), -srho * up, srho * down),
+    )
+
+    def on_hyperbola(kept: Exact, centre: Exact, points: list[tuple[Exact, Exact, float]], scale: float) -> float:
+        offset = _minus(kept, centre)
+        best, best_size = math.nan, math.inf
+        for a_s, b_s, big_b in points:
+            d = _minus(kept, a_s)
+            step = big_b * d / offset if d != 0.0 else 0.0
+            b_frame = scale * b_s[0]
+            size = abs(b_frame) + abs(step)
+            if size < best_size:
+                best, best_size = b_frame - step, size
+        return best
+
+    def rightward() -> float:  # the ray keeps u0: the meeting's frame w'
+        if _minus(u_start, u0) >= 0.0:
+            return down * w_start[0] + math.exp(2.0 * th_i) * up * _minus(u0, u_start)
+        if _minus(u_stop, u0) >= 0.0 and _minus(u0, centre_u) != 0.0:
+            return on_hyperbola(u0, centre_u, [(a[0], a[1], a[3]) for a in anchors], down)
+        return down * w_stop[0] + math.exp(2.0 * th_f) * up * _minus(u0, u_stop)
+
+    def leftward() -> float:  # the ray keeps w0: the meeting's frame u'
+        if _minus(w_start, w0) >= 0.0:
+            return up * u_start[0] + math.exp(-2.0 * th_i) * down * _minus(w0, w_start)
+        if _minus(w_stop, w0) >= 0.0 and _minus(w0, centre_w) != 0.0:
+            return on_hyperbola(w0, centre_w, [(a[1], a[0], a[2]) for a in anchors], up)
+        return up * u_stop[0] + math.exp(-2.0 * th_f) * down * _minus(w0, w_stop)
+
+    u0_frame, w0_frame = up * (u0[0] + u0[1]), down * (w0[0] + w0[1])
+    found = []
+    if direction != -1:
+        w = rightward()
+        if w >= w0_frame:  # a ray toward +x meets the point in its future
+            found.append((u0_frame, w))
+    if direction != 1:
+        u = leftward()
+        if u >= u0_frame:
+            found.append((u, w0_frame))
+    if not found:
+        if direction is None:  # both a hair in the past: the source is on the worldline (to rounding)
+            return (0.5 * (u0_frame + w0_frame), 0.5 * (w0_frame - u0_frame))
+        return None
+    u, w = min(found, key=lambda e: e[0] + e[1])
     return (0.5 * (u + w), 0.5 * (w - u))
 
 

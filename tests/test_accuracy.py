@@ -12,8 +12,10 @@ ratios 1e-6..1e6; lengths 1e-6..1e6; 36 random scenes. Frames of every case: the
 random one, beta = +-0.999999, +-(1 - 1e-7) and +-(1 - 1e-9), each rod's rest frame before
 and after (to float64), frames a rapidity of 1e-9 either side of those, and the barycentric
 frame. Times: every event, points between and beside them, and 1e6 lengths away. Checked in
-every frame: positions and clock readings of three material points, equal-time lengths and
-named events; once: final velocities and their gaps to light speed.
+every frame: positions and clock readings of three material points, equal-time lengths, named
+events, and where a light signal from the origin and from each named event reaches each of the
+three points (the reference's lab arrival, found by bisection, boosted at 50 digits); once:
+final velocities and their gaps to light speed.
 
 The error functions below give errors in units of their tolerance (a check passes at <= 1);
 ``python -m tests.reference.error_report`` tabulates the worst of each by frame and case class.
@@ -26,6 +28,7 @@ import math
 from pathlib import Path
 from typing import Any
 
+import mpmath
 import numpy as np
 import numpy.typing as npt
 import pytest
@@ -46,6 +49,8 @@ TOL_EVENT = 1e-12
 #: the frame time it is read at (a clock moving fast in the frame reads tau ~ t'/gamma' << |t'|,
 #: formed from t', so its rounding scales with |t'|); the rod's size (readings near their zero).
 TOL_CLOCK = 1e-12
+#: Light-signal arrivals, relative to max(|t'|, |x'|, rest length) (as events).
+TOL_SIGNAL = 1e-12
 #: Final velocities and their gaps 1 - |v| to light speed, relative.
 TOL_VELOCITY = 1e-14
 
@@ -131,6 +136,31 @@ def event_errors(scene: rr.Scene, case: dict[str, Any], beta: float, ref_events:
     return out
 
 
+def signal_errors(scene: rr.Scene, case: dict[str, Any], beta: float) -> dict[str, float]:
+    """Per source, the worst ``|arrival - arrival_ref| / (TOL_SIGNAL max(|t'_ref|, |x'_ref|, L))`` over
+    every rod and material point; the reference's lab arrival is boosted at 50 digits."""
+    fractions = [float.fromhex(f) for f in case["fractions"]]
+    scale_len = float(max(decimals(case["lengths_rest"])))
+    fr = frame(beta)
+    out: dict[str, float] = {}
+    with mpmath.workdps(50):
+        b = mpmath.mpf(beta)
+        g = 1 / mpmath.sqrt((1 - b) * (1 + b))
+        for name, rods in case["signals_lab"].items():
+            source = scene.origin_event.value if name == "origin" else name
+            worst = 0.0
+            for rod, points in enumerate(rods):
+                for f, (rt, rx) in zip(fractions, points, strict=True):
+                    t, x = mpmath.mpf(rt), mpmath.mpf(rx)
+                    t_ref, x_ref = float(g * (t - b * x)), float(g * (x - b * t))
+                    got = scene.signal_arrival(source, rod, f, frame=fr)
+                    assert got is not None, (name, rod, f)
+                    scale = max(abs(t_ref), abs(x_ref), scale_len)
+                    worst = max(worst, abs(got[0] - t_ref) / scale, abs(got[1] - x_ref) / scale)
+            out[name] = worst / TOL_SIGNAL
+    return out
+
+
 def frames_with_events(case: dict[str, Any]) -> list[tuple[float, dict[str, Any]]]:
     """``(beta, reference events)``: the lab's events as the reference computed them, then each frame's."""
     return [(0.0, case["events_lab"])] + [(float.fromhex(f["beta"]), f["events"]) for f in case["frames"]]
@@ -175,6 +205,17 @@ def test_events_in_every_frame(case: dict[str, Any]) -> None:
         errors = event_errors(scene, case, beta, ref_events)
         name = max(errors, key=errors.__getitem__)
         assert errors[name] <= 1.0, f"beta={beta!r}: event {name} off by {errors[name]:.3g} x TOL_EVENT"
+
+
+@pytest.mark.parametrize("case", CASES, ids=ids())
+def test_signal_arrivals(case: dict[str, Any]) -> None:
+    """Where a light signal from the origin event and from each named event first reaches each
+    material point, in every frame of the case."""
+    scene = build(case)
+    for beta, _ in frames_with_events(case):
+        errors = signal_errors(scene, case, beta)
+        name = max(errors, key=errors.__getitem__)
+        assert errors[name] <= 1.0, f"beta={beta!r}: signal from {name} off by {errors[name]:.3g} x TOL_SIGNAL"
 
 
 @pytest.mark.parametrize("case", CASES, ids=ids())

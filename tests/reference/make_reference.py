@@ -20,9 +20,12 @@ sample times (:func:`sample_times`; fewer for the random cases in the frames add
 clocks, to keep the table near 6 MB), and writes the table.
 
 Per case: kind, group, parameters, material fractions, rest lengths, final velocities and
-their gaps to light speed, derived numbers, the lab events; per frame: its velocity and role,
-the sample times, and at each time the positions and clock readings (``"proper_times"``) of
-every material point, each rod's end-to-end equal-time length, and the events seen there.
+their gaps to light speed, derived numbers, the lab events, and the lab arrival of a light
+signal from the origin and from each named event at every material point (``"signals_lab"``,
+:func:`~rigidrel_app.bench.reference.signal_arrival`; a frame's arrival is the boosted one);
+per frame: its velocity and role, the sample times, and at each time the positions and clock
+readings (``"proper_times"``) of every material point, each rod's end-to-end equal-time length,
+and the events seen there.
 Floats are stored as ``float.hex`` (exact), reference values as 30-digit strings. Adding a
 scene family or a case to the reference package changes the random stream, hence the table:
 regenerate it.
@@ -56,6 +59,7 @@ from rigidrel_app.bench.reference import (
     boost_event,
     frame_slice_and_clock,
     reference_precision,
+    signal_arrival,
 )
 
 OUT = Path(__file__).with_name("reference.json")
@@ -182,6 +186,10 @@ def build_case(case: dict[str, object], rng: random.Random) -> dict[str, object]
             "final_gaps": [s(1 - abs(v)) for v in ref.final_velocities],
             "extra": {k: s(v) for k, v in ref.extra.items()},
             "events_lab": {k: [s(e[0]), s(e[1])] for k, e in ref.events.items()},
+            "signals_lab": {
+                name: [[[s(c) for c in signal_arrival(w, source)] for w in rod] for rod in ref.worldlines]
+                for name, source in {"origin": (mp.mpf(0), mp.mpf(0)), **ref.events}.items()
+            },
             "frames": frames,
         }
 

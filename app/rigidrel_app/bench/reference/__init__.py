@@ -334,6 +334,39 @@ def boost_event(e: tuple[Mp, Mp], beta: Mp) -> tuple[Mp, Mp]:
     return g * (t - beta * x), g * (x - beta * t)
 
 
+@at_reference_precision
+def signal_arrival(w: Worldline, source: tuple[Mp, Mp]) -> tuple[Mp, Mp]:
+    """Lab event where a light ray from ``source`` sent toward the point first meets worldline ``w``.
+
+    With ``d = sign(x(t_0) - x_0)`` (the ray's direction) the arrival is the root of
+    ``h(t) = (t - t_0) - d (x(t) - x_0)``, which increases with ``t`` (the point is slower than
+    light) and is ``<= 0`` at ``t_0``: bracketed by doubling and narrowed by bisection to
+    ``10^-(digits - 2)`` of its scale. A source on the worldline is its own arrival.
+    """
+    t0, x0 = source
+    ahead = w.x(t0) - x0
+    if ahead == 0:
+        return t0, x0
+    d = 1 if ahead > 0 else -1
+
+    def h(t: Mp) -> Mp:
+        return (t - t0) - d * (w.x(t) - x0)
+
+    step = max(abs(t0), abs(x0), mp.mpf(1))
+    lo, hi = t0, t0 + step
+    while h(hi) < 0:
+        lo, hi = hi, hi + 2 * (hi - t0)
+    tol = max(abs(lo), abs(hi), mp.mpf(1)) * mp.mpf(10) ** (-(REFERENCE_DIGITS - 2))
+    while hi - lo > tol:
+        mid = (lo + hi) / 2
+        if h(mid) < 0:
+            lo = mid
+        else:
+            hi = mid
+    t = (lo + hi) / 2
+    return t, x0 + d * (t - t0)
+
+
 # ------------------------------------------------------------------ the cases of the committed table
 #: The committed table lists its fixed cases group by group; a case's ``order`` is its group
 #: plus its position in the group (the random cases follow all fixed ones).
