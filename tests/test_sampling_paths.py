@@ -11,6 +11,8 @@ included.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import numpy.typing as npt
 import pytest
@@ -190,3 +192,18 @@ def test_each_path_keeps_its_own_square_of_the_radius(a_front: float) -> None:
     assert scene.positions(shuffled).tobytes() == reference_branch_free(plan, shuffled).reshape(1, 2, -1).tobytes()
     for n in (1, 5, 300):
         assert scene.positions(t[:n]).tobytes() == branch_free[:, :n].reshape(1, 2, -1).tobytes()
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -float("inf"), 1e301, -1e301])
+@pytest.mark.parametrize("where", [0, 2500, -1])
+def test_a_bad_time_in_a_long_sorted_input_is_refused(bad: float, where: int) -> None:
+    """Sorted times are checked through their ends; a NaN anywhere breaks the order, an
+    out-of-range value is an end: either way the call is refused, naming the value."""
+    scene = rr.build_scene("rod-collision")
+    t = np.linspace(-1.0, 1.0, 5000)
+    t[where] = bad
+    if not math.isnan(bad):
+        t.sort()  # still sorted, the bad value at an end
+    with pytest.raises(rr.ParameterError, match="t must be finite real numbers") as caught:
+        scene.positions(t)
+    assert repr(bad) in str(caught.value)
