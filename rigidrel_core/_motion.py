@@ -440,6 +440,11 @@ class MotionPlan:
         selection by mask branches on every sample, which shuffled times make unpredictable).
         A row whose start is after its stop takes the branch-free form's precedence instead:
         after the stop, else before the start, else curved.
+
+        Sorting instead (argsort, the sorted path, a scatter back; bitwise the same results)
+        took 0.9 to 1 times as long at 4096 times and 1.6 to 8 times as long from 16384 to 1e6
+        (4 and 22 rows): numpy's float64 argsort is not vectorised, and the scatter of every
+        row back costs about as much again.
         """
         n = t.size
         out = np.empty((self.radius.size, n))
