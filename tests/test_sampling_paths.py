@@ -129,6 +129,8 @@ fraction_sets = st.one_of(
 def test_every_path_matches_the_sampler_as_it_was(
     scene_frame: tuple[rr.Scene, rr.Frame], fractions: FloatArray, data: st.DataObject
 ) -> None:
+    """Through the plan and through the scene's samplers (which pass the order their time check
+    found): the path chosen, whichever it is, gives what the sampler gave before."""
     scene, frame = scene_frame
     plan = plan_motions([r.motion for r in scene.rods], frame, fractions)
     t = data.draw(time_sets(scene, frame, fractions))
