@@ -20,9 +20,9 @@ from ._budget import ExternalSource, FourMomentumBudget
 from ._exact import ExactVelocity, relative_rapidity
 from ._frame import LAB, Frame, check_frame
 from ._kinds import ObstacleKind, OriginEvent
-from ._motion import MotionPlan, RigidMotion, plan_motions
+from ._motion import PIECEWISE_MIN, MotionPlan, RigidMotion, plan_motions
 from ._signals import ChangeVerdict, Exact, _event, change_verdict, signal_arrival_on
-from ._validate import ParameterError, as_real, check_fractions, check_times
+from ._validate import ParameterError, as_real, check_fractions, check_times, check_times_ordered
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -156,8 +156,8 @@ class Scene:
         Shape ``(n_rods, 2, *t.shape)``. Closed form, see :mod:`rigidrel_core._motion`.
         """
         frame = check_frame(frame)
-        tt = check_times("t", t)
-        x = self._plan(frame, ENDS).positions(tt.ravel())
+        tt, ordered = check_times_ordered("t", t, PIECEWISE_MIN)
+        x = self._plan(frame, ENDS).positions(tt.ravel(), ordered=ordered)
         return x.reshape((self.n_rods, 2, *tt.shape))
 
     def material_positions(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike) -> FloatArray:
@@ -166,9 +166,9 @@ class Scene:
         Shape ``(n_rods, len(fractions), *t.shape)``.
         """
         frame = check_frame(frame)
-        tt = check_times("t", t)
+        tt, ordered = check_times_ordered("t", t, PIECEWISE_MIN)
         f = check_fractions("fractions", fractions)
-        x = self._plan(frame, f).positions(tt.ravel())
+        x = self._plan(frame, f).positions(tt.ravel(), ordered=ordered)
         return x.reshape((self.n_rods, f.size, *tt.shape))
 
     def velocities(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = ENDS) -> FloatArray:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 import numbers
 
@@ -53,18 +54,48 @@ def _real_array(name: str, allowed: str, value: npt.ArrayLike) -> npt.NDArray[np
     return raw.astype(np.float64, copy=False)
 
 
+#: Up to this many times are checked as Python floats: cheaper than numpy's two reductions.
+_FEW_TIMES = 16
+
+
+@functools.cache
+def _times_allowed(name: str) -> str:
+    return f"finite real numbers with |{name}| <= {MAX_ABS_TIME:g}"
+
+
 def check_times(name: str, t: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Finite real times with ``|t| <= 1e300``; any shape."""
-    allowed = f"finite real numbers with |{name}| <= {MAX_ABS_TIME:g}"
+    return check_times_ordered(name, t, None)[0]
+
+
+def check_times_ordered(
+    name: str, t: npt.ArrayLike, order_from: int | None
+) -> tuple[npt.NDArray[np.float64], bool | None]:
+    """:func:`check_times`, and whether the times are sorted (for a sampler with a faster path for them).
+
+    The order is found for 1-D input of at least ``order_from`` times (``None`` otherwise).
+    A non-decreasing array holds no NaN (every comparison with NaN is false), so its bounds
+    are its ends: one pass over the times instead of the two of ``min`` and ``max``.
+    """
+    allowed = _times_allowed(name)
     arr = _real_array(name, allowed, t)
-    if arr.size:
-        lo = arr.min()
-        hi = arr.max()
-        # NaN propagates through min/max; inf fails the bound.
-        if not (lo >= -MAX_ABS_TIME and hi <= MAX_ABS_TIME):
-            bad = arr[~(np.abs(arr) <= MAX_ABS_TIME)].ravel()[0]
-            raise ParameterError(name, allowed, float(bad))
-    return arr
+    ordered: bool | None = None
+    if arr.size <= _FEW_TIMES:
+        for x in arr.ravel().tolist():
+            if not -MAX_ABS_TIME <= x <= MAX_ABS_TIME:
+                raise ParameterError(name, allowed, float(x))
+        return arr, ordered
+    if order_from is not None and arr.ndim == 1 and arr.size >= order_from:
+        ordered = non_decreasing(arr)
+    if ordered:
+        lo, hi = arr[0], arr[-1]
+    else:  # the ufuncs' own reductions: arr.min() and arr.max() add a Python layer (~10 % here)
+        lo, hi = np.minimum.reduce(arr, axis=None), np.maximum.reduce(arr, axis=None)
+    # NaN propagates through min/max; inf fails the bound.
+    if not (lo >= -MAX_ABS_TIME and hi <= MAX_ABS_TIME):
+        bad = arr[~(np.abs(arr) <= MAX_ABS_TIME)].ravel()[0]
+        raise ParameterError(name, allowed, float(bad))
+    return arr, ordered
 
 
 def check_fractions(name: str, f: npt.ArrayLike) -> npt.NDArray[np.float64]:
@@ -74,3 +105,14 @@ def check_fractions(name: str, f: npt.ArrayLike) -> npt.NDArray[np.float64]:
     if arr.ndim != 1 or not np.all((arr >= 0.0) & (arr <= 1.0)):
         raise ParameterError(name, allowed, f)
     return arr
+
+
+#: Times compared first when checking an order: a shuffled input fails here, at little cost.
+_ORDER_PROBE = 1024
+
+
+def non_decreasing(t: npt.NDArray[np.float64]) -> bool:
+    """Whether the 1-D ``t`` is sorted (``t[i] <= t[i + 1]``; false wherever a NaN is). Its first
+    ``_ORDER_PROBE`` times are compared first, so a shuffled input costs almost nothing."""
+    head = t[:_ORDER_PROBE]
+    return bool(np.all(head[1:] >= head[:-1])) and bool(np.all(t[1:] >= t[:-1]))
