@@ -43,11 +43,12 @@ from tests.test_accuracy import (
     event_errors,
     length_errors,
     position_errors,
+    signal_errors,
     where,
 )
 
 TABLE = Path(__file__).with_name("reference.json")
-CHECKS = ("positions", "lengths", "events", "clocks")
+CHECKS = ("positions", "lengths", "events", "clocks", "signals")
 FRAME_CLASSES = ("lab", "moderate", ">=1-1e-6", ">=1-1e-7", ">=1-1e-9", "chasing")
 #: Frame roles of the table that chase a rod (its rest frame, or a hair off it).
 CHASING = frozenset({"rest-before", "rest-after", "near-rest"})
@@ -100,15 +101,19 @@ def worst_errors(cases: list[dict[str, Any]]) -> dict[tuple[str, str, str], Wors
         err = np.where(np.isnan(err), np.inf, err)
         record(check, cls, group, Worst(float(err.max()), i, float.fromhex(fr["beta"]), where(err, fr, cases[i])))
 
-    def record_events(cls: str, group: str, errors: dict[str, float], i: int, beta: float) -> None:
+    def record_events(
+        cls: str, group: str, errors: dict[str, float], i: int, beta: float, check: str = "events"
+    ) -> None:
         name = max(errors, key=lambda k: np.nan_to_num(errors[k], nan=np.inf))
-        record("events", cls, group, Worst(float(np.nan_to_num(errors[name], nan=np.inf)), i, beta, f"event {name}"))
+        what = f"event {name}" if check == "events" else f"signal from {name}"
+        record(check, cls, group, Worst(float(np.nan_to_num(errors[name], nan=np.inf)), i, beta, what))
 
     with np.errstate(all="ignore"):
         for i, case in enumerate(cases):
             scene = build(case)
             group = case["group"]
             record_events("lab", group, event_errors(scene, case, 0.0, case["events_lab"]), i, 0.0)
+            record_events("lab", group, signal_errors(scene, case, 0.0), i, 0.0, "signals")
             for fr in case["frames"]:
                 beta = float.fromhex(fr["beta"])
                 cls = frame_class(beta, fr["role"])
@@ -116,6 +121,7 @@ def worst_errors(cases: list[dict[str, Any]]) -> dict[tuple[str, str, str], Wors
                 record_array("lengths", cls, group, length_errors(scene, fr), i, fr)
                 record_array("clocks", cls, group, clock_errors(scene, case, fr), i, fr)
                 record_events(cls, group, event_errors(scene, case, beta, fr["events"]), i, beta)
+                record_events(cls, group, signal_errors(scene, case, beta), i, beta, "signals")
     return worst
 
 
