@@ -1,17 +1,17 @@
-"""What every scene constructor shares: the 60-digit context, the Born-rigid change of one rod,
-the frame presets, the shared parameters and the check that a scene fits in float64."""
+"""What every scene constructor shares: the Born-rigid change of one rod (its Rindler radii in
+double-double), the frame presets, the shared parameters and the check that a scene fits in float64."""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from contextlib import AbstractContextManager
-from decimal import Context, Decimal, localcontext
 from types import MappingProxyType
-from typing import Literal, TypeVar
+from typing import Literal
 
+from . import _dd
+from ._dd import DD
 from ._description import SPEED, UNIT_CLOSED, Interval, Parameter, Slider
-from ._exact import DECIMAL_DIGITS, ExactVelocity
+from ._exact import ExactVelocity
 from ._frame import LAB, Frame
 from ._motion import RigidMotion
 from ._scene import Scene
@@ -62,48 +62,40 @@ EPS = Parameter(
 SINGLE_ROD_FRAMES = ("lab", "rod before", "rod after")
 
 
-# ---------------------------------------------------------------------- arithmetic
-def decimal_context() -> AbstractContextManager[Context]:
-    """A 60-digit decimal context for the scalar scene solution."""
-    return localcontext(prec=DECIMAL_DIGITS)
-
-
-_Num = TypeVar("_Num", float, Decimal)
-
-
-def horizon_and_radii(sign: Literal[1, -1], vertex_left: _Num, near: _Num, far: _Num) -> tuple[_Num, _Num, _Num]:
-    """Centre x and the left and right ends' radii of a family at rest on ``[vertex_left, vertex_left
-    + length]``, its ends ``near`` and ``far = near + length`` from the centre: the centre lies behind
-    the rod (on the left when it speeds up to the right, ``sign = 1``)."""
-    if sign == 1:
-        return vertex_left - near, near, far
-    return vertex_left + far, far, near
+# ---------------------------------------------------------------------- one rod's change
+#: ``rho_near`` of an impulse (Sec. 4): the near end is at the centre.
+IMPULSE: DD = (0.0, 0.0)
 
 
 def rigid_motion(
     v_initial: ExactVelocity,
     v_final: ExactVelocity,
     length: float,
-    rho_near: Decimal,
+    rho_near: DD,
     vertex_left: float,
 ) -> RigidMotion:
     """Born-rigid change ``v_initial -> v_final``; at lab t = 0 the (extended) family is at rest on
-    ``[vertex_left, vertex_left + length]``; the end nearest the centre is ``rho_near`` from it
-    (``rho_near = 0``: the impulsive limit of Sec. 4)."""
+    ``[vertex_left, vertex_left + length]``; the end nearest the centre is ``rho_near`` (a
+    double-double) from it (``rho_near = 0``: the impulsive limit of Sec. 4).
+
+    The centre lies behind the rod: at ``vertex_left - rho_near`` when it speeds up to the
+    right (``sign = 1``), at ``vertex_left + rho_near + length`` otherwise; the far end's radius
+    is ``rho_near + length``. Each is summed in double-double and rounded once, so the
+    floats stored are the exact sums correctly rounded."""
     sign: Literal[1, -1] = 1 if (v_final.hi, v_final.lo) > (v_initial.hi, v_initial.lo) else -1
-    if rho_near == 0:  # an impulse: single float operations, each correctly rounded, suffice
-        horizon, r_left, r_right = horizon_and_radii(sign, vertex_left, 0.0, length)
+    far = _dd.add_float(rho_near, length)
+    if sign == 1:
+        horizon = _dd.add_float((-rho_near[0], -rho_near[1]), vertex_left)[0]
+        r_left, r_right = rho_near[0], far[0]
     else:
-        with decimal_context():
-            horizon, r_left, r_right = horizon_and_radii(
-                sign, Decimal(vertex_left), rho_near, rho_near + Decimal(length)
-            )
+        horizon = _dd.add_float(far, vertex_left)[0]
+        r_left, r_right = far[0], rho_near[0]
     return RigidMotion(
         length=length,
         sign=sign,
-        horizon_x=float(horizon),
-        radius_left=float(r_left),
-        radius_right=float(r_right),
+        horizon_x=horizon,
+        radius_left=r_left,
+        radius_right=r_right,
         vertex_left=vertex_left,
         velocity_initial=v_initial,
         velocity_final=v_final,
@@ -114,17 +106,24 @@ def rigid_motion(
 BELOW_HORIZON = Interval(0.0, 1.0)
 
 
-def near_radius(a_front: float, length: float, allowed: Interval = BELOW_HORIZON) -> Decimal:
-    """``a_front * length`` in ``allowed`` (evaluated exactly); returns ``rho_near = (1 - a L)/a``.
+def near_radius(a_front: float, length: float, allowed: Interval = BELOW_HORIZON) -> DD:
+    """``a_front * length`` in ``allowed`` (the product taken exactly, as a double-double);
+    returns ``rho_near = (1 - a L)/a`` in double-double.
 
     Sec. 3, Eq. (15): ``a'_B = a'_F / (1 - a'_F L0)``, so the near (back) end sits at
     ``1/a'_B = (1 - a'_F L0)/a'_F`` from the centre; ``a'_F L0 = 1`` is the impulsive limit.
     """
-    with decimal_context():
-        aL = Decimal(a_front) * Decimal(length)
-        if not (aL > 0 and (aL < 1 or (allowed.hi_closed and aL == 1))):
-            raise ParameterError("a_front * length", f"a finite number {allowed.text()}", float(aL))
-        return (1 - aL) / Decimal(a_front)
+    # an acceleration beyond 2**500 is scaled by a power of 2 (exactly) so that splitting it cannot overflow
+    k = 0 if a_front < 2.0**500 else 600
+    a = math.ldexp(a_front, -k)
+    aL = _dd.two_prod(a, length)  # a L 2**-k; positive, since both are
+    one = math.ldexp(1.0, -k)
+    below_one = aL[0] < one or (aL[0] == one and aL[1] < 0.0)
+    if not (below_one or (allowed.hi_closed and aL == (one, 0.0))):
+        raise ParameterError("a_front * length", f"a finite number {allowed.text()}", math.ldexp(aL[0], k))
+    one_minus_aL = _dd.add_float((-math.ldexp(aL[0], k), -math.ldexp(aL[1], k)), 1.0)
+    rho = _dd.div(one_minus_aL, (a, 0.0))
+    return math.ldexp(rho[0], -k), math.ldexp(rho[1], -k)
 
 
 def single_rod_frames(motion: RigidMotion) -> Mapping[str, Frame]:

@@ -3,12 +3,22 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from decimal import Decimal
 from types import MappingProxyType
 from typing import Literal
 
-from .._build import A_FRONT, LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, near_radius, rigid_motion
+from .._build import (
+    A_FRONT,
+    IMPULSE,
+    LENGTH,
+    MASS,
+    SINGLE_ROD_FRAMES,
+    V,
+    checked_scene,
+    near_radius,
+    rigid_motion,
+)
 from .._build import single_rod_frames as _frames
+from .._dd import DD
 from .._description import (
     VELOCITY,
     EventDescription,
@@ -35,7 +45,7 @@ def _velocity_change_scene(
     v_initial: ExactVelocity,
     v_final: ExactVelocity,
     length: float,
-    rho_near: Decimal,
+    rho_near: DD,
     mass: float,
     event_names: Mapping[tuple[Which, Phase], str],
     origin_event: OriginEvent,
@@ -221,7 +231,7 @@ def velocity_change(
     length = LENGTH.check(length)
     mass = MASS.check(mass)
     if a_front is None:
-        rho_near = Decimal(0)
+        rho_near = IMPULSE
     else:
         rho_near = near_radius(A_FRONT_OR_IMPULSE.check(a_front), length, _IMPULSIVE_ALLOWED)
     params = {"v_initial": vi, "v_final": vf, "length": length, "mass": mass}

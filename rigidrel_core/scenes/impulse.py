@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-from decimal import Decimal
 from types import MappingProxyType
 
-from .._build import LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, rigid_motion, single_rod_frames
+from .._build import IMPULSE, LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, rigid_motion, single_rod_frames
 from .._description import EventDescription, OriginEvent, SceneDescription
 from .._exact import REST, ExactVelocity
 from .._scene import EventSpec, Rod, Scene
@@ -21,7 +20,7 @@ def impulsive_start(v: float, length: float, mass: float = 1.0) -> Scene:
     v = V.check(v)
     length = LENGTH.check(length)
     mass = MASS.check(mass)
-    motion = rigid_motion(REST, ExactVelocity.from_float(v), length, Decimal(0), 0.0)
+    motion = rigid_motion(REST, ExactVelocity.from_float(v), length, IMPULSE, 0.0)
     return checked_scene(
         Scene(
             kind=IMPULSIVE_START.kind,
