@@ -83,6 +83,9 @@ def rigid_motion(
     is ``rho_near + length``. Each is summed in double-double and rounded once, so the
     floats stored are the exact sums correctly rounded."""
     sign: Literal[1, -1] = 1 if (v_final.hi, v_final.lo) > (v_initial.hi, v_initial.lo) else -1
+    if rho_near == IMPULSE:  # single float operations, each correctly rounded
+        horizon, r_left, r_right = (vertex_left, 0.0, length) if sign == 1 else (vertex_left + length, length, 0.0)
+        return RigidMotion(length, sign, horizon, r_left, r_right, vertex_left, v_initial, v_final)
     far = _dd.add_float(rho_near, length)
     if sign == 1:
         horizon = _dd.add_float((-rho_near[0], -rho_near[1]), vertex_left)[0]
@@ -113,17 +116,19 @@ def near_radius(a_front: float, length: float, allowed: Interval = BELOW_HORIZON
     Sec. 3, Eq. (15): ``a'_B = a'_F / (1 - a'_F L0)``, so the near (back) end sits at
     ``1/a'_B = (1 - a'_F L0)/a'_F`` from the centre; ``a'_F L0 = 1`` is the impulsive limit.
     """
-    # an acceleration beyond 2**500 is scaled by a power of 2 (exactly) so that splitting it cannot overflow
-    k = 0 if a_front < 2.0**500 else 600
-    a = math.ldexp(a_front, -k)
-    aL = _dd.two_prod(a, length)  # a L 2**-k; positive, since both are
-    one = math.ldexp(1.0, -k)
-    below_one = aL[0] < one or (aL[0] == one and aL[1] < 0.0)
-    if not (below_one or (allowed.hi_closed and aL == (one, 0.0))):
-        raise ParameterError("a_front * length", f"a finite number {allowed.text()}", math.ldexp(aL[0], k))
-    one_minus_aL = _dd.add_float((-math.ldexp(aL[0], k), -math.ldexp(aL[1], k)), 1.0)
-    rho = _dd.div(one_minus_aL, (a, 0.0))
-    return math.ldexp(rho[0], -k), math.ldexp(rho[1], -k)
+    if a_front > 2.0**500:  # scaled by 2**-600 (exactly), so that splitting it cannot overflow
+        a = a_front * 2.0**-600
+        aL = _dd.two_prod(a, length)
+        aL = (aL[0] * 2.0**600, aL[1] * 2.0**600)
+        rho = _dd.div(_dd.add_float((-aL[0], -aL[1]), 1.0), (a, 0.0))
+        rho = (rho[0] * 2.0**-600, rho[1] * 2.0**-600)
+    else:
+        aL = _dd.two_prod(a_front, length)
+        rho = _dd.div(_dd.add_float((-aL[0], -aL[1]), 1.0), (a_front, 0.0))
+    # positive, as both factors are; below 1, or (the impulsive limit, where allowed) exactly 1
+    if not (aL[0] < 1.0 or (aL[0] == 1.0 and (aL[1] < 0.0 or (allowed.hi_closed and aL[1] == 0.0)))):
+        raise ParameterError("a_front * length", f"a finite number {allowed.text()}", aL[0])
+    return rho
 
 
 def single_rod_frames(motion: RigidMotion) -> Mapping[str, Frame]:
@@ -138,15 +143,20 @@ def single_rod_frames(motion: RigidMotion) -> Mapping[str, Frame]:
 
 def checked_scene(scene: Scene) -> Scene:
     """Reject parameter combinations whose derived numbers leave the representable range."""
-    allowed = f"such that every lab event and Rindler radius lies within {MAX_SCENE_COORDINATE:g} of the origin"
+    bound = MAX_SCENE_COORDINATE
     for r in scene.rods:
         m = r.motion
-        nums = [m.horizon_x, m.radius_left, m.radius_right, r.mass_after]
-        for v in (m.velocity_initial, m.velocity_final):
-            if not v.gap > 0.0:
-                below_light = "such that every velocity stays below light speed"
-                raise ParameterError("parameters", below_light, dict(scene.parameters))
-            nums.append(max(m.radius_left, m.radius_right) * v.proper_velocity())
-        if not all(math.isfinite(x) and abs(x) <= MAX_SCENE_COORDINATE for x in nums):
-            raise ParameterError("parameters", allowed, dict(scene.parameters))
+        v_i, v_f = m.velocity_initial, m.velocity_final
+        if not (v_i.gap > 0.0 and v_f.gap > 0.0):
+            below_light = "such that every velocity stays below light speed"
+            raise ParameterError("parameters", below_light, dict(scene.parameters))
+        # the lab events of the ends: the centre, the radii, the mass, radius times gamma v (NaN fails too)
+        reach = max(m.radius_left, m.radius_right) * max(abs(v_i.proper_velocity()), abs(v_f.proper_velocity()))
+        if not (abs(m.horizon_x) <= bound and m.radius_left <= bound and m.radius_right <= bound):
+            raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
+        if not (r.mass_after <= bound and reach <= bound):
+            raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
     return scene
+
+
+_OUT_OF_RANGE = f"such that every lab event and Rindler radius lies within {MAX_SCENE_COORDINATE:g} of the origin"

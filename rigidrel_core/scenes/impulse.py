@@ -9,6 +9,9 @@ from .._description import EventDescription, OriginEvent, SceneDescription
 from .._exact import REST, ExactVelocity
 from .._scene import EventSpec, Rod, Scene
 
+#: The front end reaching V (Eq. (21)); the same in every scene.
+_EVENTS = (EventSpec("T_F", 0, 1, "stop"),)
+
 
 def impulsive_start(v: float, length: float, mass: float = 1.0) -> Scene:
     """Impulsive acceleration (Sec. 4, Fig. 1 dashed curve).
@@ -26,7 +29,7 @@ def impulsive_start(v: float, length: float, mass: float = 1.0) -> Scene:
             kind=IMPULSIVE_START.kind,
             parameters=MappingProxyType({"v": v, "length": length, "mass": mass}),
             rods=(Rod("rod", motion, mass, mass),),
-            event_specs=(EventSpec("T_F", 0, 1, "stop"),),
+            event_specs=_EVENTS,
             frames=single_rod_frames(motion),
             external_source="drive",
             heat=0.0,

@@ -10,6 +10,10 @@ from .._description import EventDescription, ObstacleKind, OriginEvent, SceneDes
 from .._exact import REST, ExactVelocity
 from .._scene import EventSpec, Obstacle, Rod, Scene
 
+#: The far end's switches (Eqs. (22)-(24)) and the wall at rest at x = 0; the same in every scene.
+_EVENTS = (EventSpec("T_1", 0, 1, "start"), EventSpec("T_1'", 0, 1, "stop"))
+_OBSTACLES = (Obstacle("wall", ObstacleKind.WALL, 0.0, REST),)
+
 
 def bounce(v: float, eps: float, mass: float) -> tuple[ExactVelocity, float]:
     """Velocity after the bounce and the heat (c = 1): the proper velocity ``gamma v`` becomes
@@ -53,18 +57,17 @@ def wall_collision(v: float, length: float, eps: float, mass: float = 1.0) -> Sc
     mass = MASS.check(mass)
     v_after, heat = bounce(v, eps, mass)
     motion = rigid_motion(ExactVelocity.from_float(-v), v_after, length, IMPULSE, 0.0)
-    specs = (EventSpec("T_1", 0, 1, "start"), EventSpec("T_1'", 0, 1, "stop"))
     return checked_scene(
         Scene(
             kind=WALL_COLLISION.kind,
             parameters=MappingProxyType({"v": v, "length": length, "eps": eps, "mass": mass}),
             rods=(Rod("rod", motion, mass, mass),),
-            event_specs=specs,
+            event_specs=_EVENTS,
             frames=single_rod_frames(motion),
             external_source="wall",
             heat=heat,
             origin_event=OriginEvent.CONTACT,
-            obstacles=(Obstacle("wall", ObstacleKind.WALL, 0.0, REST),),
+            obstacles=_OBSTACLES,
         )
     )
 
