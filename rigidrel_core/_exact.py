@@ -114,14 +114,14 @@ def relative_rapidity(v: ExactVelocity, frame: ExactVelocity) -> float:
     return -0.5 * math.log1p(-2.0 * d / (v.one_plus() * frame.one_minus()))
 
 
-#: Below this gap the stored ``gap`` is a better ``1 - |v|`` than ``1 - (hi + lo)``, whose absolute
-#: error (~1e-33) is then no longer small against it.
-_TINY_GAP = 2.0**-50
+#: Below this gap the stored ``gap`` (good to half an ulp) is a better ``1 - |v|`` than
+#: ``1 - (hi + lo)``, whose absolute error (a few 1e-33) is then no longer small against it.
+_TINY_GAP = 2.0**-53
 
 
 def _one_minus(v: ExactVelocity) -> DD:
     """``1 - v`` as a double-double: from ``hi + lo`` (exactly), or the stored gap where that is the
-    more accurate (``v`` within 2**-50 of light)."""
+    more accurate (``v`` within 2**-53 of light)."""
     if v.hi >= 0.5 and v.gap < _TINY_GAP:
         return v.gap, 0.0
     return _dd.add_float((-v.hi, -v.lo), 1.0)

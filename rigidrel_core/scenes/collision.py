@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 
 from .._build import EPS, IMPULSE, SIZE, checked_scene, rigid_motion
-from .._dd import NOISE, SPLITTER
+from .._dd import NOISE, SPLITTER, add, div, mul
 from .._description import (
     VELOCITY,
     EventDescription,
@@ -166,12 +166,11 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     a1_lo = ((m1_h * c2_h - a1) + m1_h * c2_t + m1_t * c2_h) + m1_t * c2_t + m1 * c2_lo
     a2 = m2 * c1
     a2_lo = ((m2_h * c1_h - a2) + m2_h * c1_t + m2_t * c1_h) + m2_t * c1_t + m2 * c1_lo
-    # ---- energy E = a1 + a2 (two_sum, normalised)
-    s = a1 + a2
-    t = s - a1
-    e = ((a1 - (s - t)) + (a2 - t)) + (a1_lo + a2_lo)
-    en = s + e
-    en_lo = e - (en - s)
+    # ---- energy E = a1 + a2 (two_sum; like the other intermediate sums of positive terms below,
+    # not renormalised: its low part stays within a few ulp of the high one)
+    en = a1 + a2
+    t = en - a1
+    en_lo = ((a1 - (en - t)) + (a2 - t)) + (a1_lo + a2_lo)
     # ---- momentum P = v1 a1 + v2 a2; below the noise of its terms: exactly 0
     t = S * a1
     a1_h = t - (t - a1)
@@ -201,8 +200,7 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         big = en - mo
         e = (-mo - (big - en)) + (en_lo - mo_lo)
         mo_abs, mo_abs_lo = -mo, -mo_lo
-    big_hi = big + e
-    big_lo = e - (big_hi - big)
+    big_hi, big_lo = big, e
     if mo_abs + mo_abs <= en:
         small = en - mo_abs
         e = ((en - small) - mo_abs) + (en_lo - mo_abs_lo)
@@ -227,13 +225,10 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         small = q1 + q2
         t = small - q1
         e = ((q1 - (small - t)) + (q2 - t)) + (q1_lo + q2_lo)
-    t = small + e
-    small_lo = e - (t - small)
-    small = t
     if mo >= 0.0:
-        pp, pp_lo, pm, pm_lo = big_hi, big_lo, small, small_lo
+        pp, pp_lo, pm, pm_lo = big_hi, big_lo, small, e
     else:
-        pp, pp_lo, pm, pm_lo = small, small_lo, big_hi, big_lo
+        pp, pp_lo, pm, pm_lo = small, e, big_hi, big_lo
     # ---- M^2 = P+ P- (two_prod plus the low parts)
     t = S * pp
     pp_h = t - (t - pp)
@@ -244,17 +239,17 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     mm = pp * pm
     mm_lo = ((pp_h * pm_h - mm) + pp_h * pm_t + pp_t * pm_h) + pp_t * pm_t + (pp * pm_lo + pp_lo * pm)
     # ---- u = P / E: q = fl(P/E) plus the exact residual (P - q E)/E
-    q = mo / en
-    t = S * q
-    u_h = t - (t - q)
-    u_t = q - u_h
+    uq = mo / en
+    t = S * uq
+    u_h = t - (t - uq)
+    u_t = uq - u_h
     t = S * en
     en_h = t - (t - en)
     en_t = en - en_h
-    p = q * en
-    u_lo = (((mo - p) - (((u_h * en_h - p) + u_h * en_t + u_t * en_h) + u_t * en_t)) + mo_lo - q * en_lo) / en
-    u = q + u_lo
-    u_lo -= u - q
+    p = uq * en
+    uq_lo = (((mo - p) - (((u_h * en_h - p) + u_h * en_t + u_t * en_h) + u_t * en_t)) + mo_lo - uq * en_lo) / en
+    u = uq + uq_lo  # normalised for the barycentric frame; (uq, uq_lo) and its split serve below
+    u_lo = uq_lo - (u - uq)
     if not mo:
         bary = REST
     elif 0.0 <= u < _NEAR_LIGHT:  # 1 - |u| from u itself, rounded once
@@ -264,7 +259,7 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         g = 1.0 + u
         bary = ExactVelocity(u, u_lo, g + (((1.0 - g) + u) + u_lo))
     else:  # 1 -+ u = P-+/E
-        bary = ExactVelocity(u, u_lo, (pm if u > 0.0 else pp) / en)
+        bary = ExactVelocity(u, u_lo, div((pm, pm_lo) if u > 0.0 else (pp, pp_lo), (en, en_lo))[0])
     s = v1 - v2
     if eps == 0.0:  # perfectly inelastic: both move on with the barycentre; k - 1 = sum m_i (g_i - 1) / M
         mc = sqrt(mm)
@@ -288,9 +283,6 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     t = S * kk
     kk_h = t - (t - kk)
     kk_t = kk - kk_h
-    t = S * u
-    u_h = t - (t - u)
-    u_t = u - u_h
     after = [REST, REST]
     radii = [0.0, 0.0]
     # rod 1 (sign -1) leaves the barycentre with w_1 = -k_1/R_1, rod 2 (sign +1) with w_2 = k_2/R_2
@@ -312,9 +304,11 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         r_t = r - r_h
         p = r * r
         r_lo = (((r2 - p) - (((r_h * r_h - p) + 2.0 * r_h * r_t) + r_t * r_t)) + r2_lo) / (r + r)
-        w = k / r  # |w_i|
-        uw = sign * u * w
-        light_cone = uw < 0.0 and (u if u > 0.0 else -u) + w > _TANH_ONE * (1.0 - uw)
+        if sign * u < 0.0:  # u and w_i of opposite signs: tanh(|U| + |theta'|) = (|u| + |w|)/(1 + |u w|)
+            w = k / r
+            light_cone = (u if u > 0.0 else -u) + w > _TANH_ONE * (1.0 - sign * u * w)
+        else:
+            light_cone = False
         if light_cone:
             # V' = (X^2 - Y^2)/(X^2 + Y^2) with X/Y = P+/(R + k) (rod 1), (R + k)/P- (rod 2)
             qq = r + k
@@ -341,11 +335,11 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             t = NOISE * dn
         else:
             # composition: V' = (u R + sign k)/(R + sign u k)
-            x2 = y2 = 0.0
-            ur = u * r
-            ur_lo = ((u_h * r_h - ur) + u_h * r_t + u_t * r_h) + u_t * r_t + (u * r_lo + u_lo * r)
-            uk = u * k
-            uk_lo = ((u_h * k_h - uk) + u_h * k_t + u_t * k_h) + u_t * k_t + (u * k_lo + u_lo * k)
+            x2 = x2_lo = y2 = y2_lo = 0.0
+            ur = uq * r
+            ur_lo = ((u_h * r_h - ur) + u_h * r_t + u_t * r_h) + u_t * r_t + (uq * r_lo + uq_lo * r)
+            uk = uq * k
+            uk_lo = ((u_h * k_h - uk) + u_h * k_t + u_t * k_h) + u_t * k_t + (uq * k_lo + uq_lo * k)
             if sign < 0.0:
                 k, k_lo, uk, uk_lo = -k, -k_lo, -uk, -uk_lo
             n = ur + k
@@ -359,9 +353,6 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         n = t_
         if -t <= n <= t:
             continue
-        t = dn + dn_lo
-        dn_lo -= t - dn
-        dn = t
         # V' = n / dn: q = fl(n / dn) plus the exact residual
         q = n / dn
         t = S * q
@@ -380,20 +371,24 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             g = 1.0 + v
             gap = g + (((1.0 - g) + v) + v_lo)
         elif light_cone:  # 1 - V' = 2 Y^2/(X^2 + Y^2), 1 + V' = 2 X^2/(X^2 + Y^2)
-            gap = 2.0 * (y2 if v > 0.0 else x2) / dn
-        elif (v > 0.0) == (sign < 0.0):
-            # 1 - V' = (1 - u)(1 - w)/(1 + u w) and 1 + V' = (1 + u)(1 + w)/(1 + u w), with
-            # 1 - w_1 = 1 + w_2 = Q/R, 1 + w_1 = 1 - w_2 = M^2/(R Q), 1 + u w = D/R (Q = R + |k|)
-            gap = (pm if v > 0.0 else pp) * (r + abs(k)) / (en * dn)
+            gap = 2.0 * div((y2, y2_lo) if v > 0.0 else (x2, x2_lo), (dn, dn_lo))[0]
         else:
-            gap = (pm if v > 0.0 else pp) * mm / (en * (r + abs(k)) * dn)
+            # 1 - V' = (1 - u)(1 - w)/(1 + u w) and 1 + V' = (1 + u)(1 + w)/(1 + u w), with
+            # 1 -+ u = P-+/E, 1 - w_1 = 1 + w_2 = Q/R, 1 + w_1 = 1 - w_2 = M^2/(R Q), 1 + u w = D/R,
+            # Q = R + |k|: products of positive factors, in double-double (this is rare)
+            q_dd = add((r, r_lo), (k, k_lo) if k > 0.0 else (-k, -k_lo))
+            one_minus_u = (pm, pm_lo) if v > 0.0 else (pp, pp_lo)
+            if (v > 0.0) == (sign < 0.0):
+                gap = div(mul(one_minus_u, q_dd), mul((en, en_lo), (dn, dn_lo)))[0]
+            else:
+                gap = div(mul(one_minus_u, (mm, mm_lo)), mul(mul((en, en_lo), q_dd), (dn, dn_lo)))[0]
         after[i] = ExactVelocity(v, v_lo, gap)
     if eps == 1.0:
         gain = 0.0
     else:  # k - 1 = (1 - eps^2) sum_i m_i b_i^2/(g_i + g'_i) / (m1 g'_1 + m2 g'_2)
-        mc = sqrt(mm)
-        b1, b2 = m2 * s / mc, m1 * s / mc
-        g1, g2 = radii[0] / mc, radii[1] / mc
+        inv_m = 1.0 / sqrt(mm)
+        b1, b2 = m2 * s * inv_m, m1 * s * inv_m
+        g1, g2 = radii[0] * inv_m, radii[1] * inv_m
         gain = (
             (1.0 - eps)
             * (1.0 + eps)
@@ -401,6 +396,15 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             / (m1 * g1 + m2 * g2)
         )
     return CollisionSolution(bary, (after[0], after[1]), gain, gain * mass_sum, (v1, v2))
+
+
+#: The far ends' switches (Eqs. (22)-(25)); the same in every collision.
+_EVENTS = (
+    EventSpec("T_1", 0, 0, "start"),
+    EventSpec("T_1'", 0, 0, "stop"),
+    EventSpec("T_2", 1, 1, "start"),
+    EventSpec("T_2'", 1, 1, "stop"),
+)
 
 
 def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float) -> Scene:
@@ -437,18 +441,12 @@ def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: flo
             "barycentric": Frame(sol.u, "barycentric"),
         }
     )
-    specs = (
-        EventSpec("T_1", 0, 0, "start"),
-        EventSpec("T_1'", 0, 0, "stop"),
-        EventSpec("T_2", 1, 1, "start"),
-        EventSpec("T_2'", 1, 1, "stop"),
-    )
     return checked_scene(
         Scene(
             kind=ROD_COLLISION.kind,
             parameters=MappingProxyType({"v1": v1, "v2": v2, "m1": m1, "m2": m2, "l1": l1, "l2": l2, "eps": eps}),
             rods=(Rod("rod 1", rod1, m1, m1_after), Rod("rod 2", rod2, m2, m2_after)),
-            event_specs=specs,
+            event_specs=_EVENTS,
             frames=frames,
             external_source="none",
             heat=sol.heat,
