@@ -150,8 +150,9 @@ def checked_scene(scene: Scene) -> Scene:
         if not (v_i.gap > 0.0 and v_f.gap > 0.0):
             below_light = "such that every velocity stays below light speed"
             raise ParameterError("parameters", below_light, dict(scene.parameters))
-        # the lab events of the ends: the centre, the radii, the mass, radius times gamma v (NaN fails too)
-        reach = max(m.radius_left, m.radius_right) * max(abs(v_i.proper_velocity()), abs(v_f.proper_velocity()))
+        # the lab events of the ends: the centre, the radii, the mass, radius times gamma v of the
+        # faster velocity (the smaller gap); NaN fails too
+        reach = max(m.radius_left, m.radius_right) * abs((v_i if v_i.gap < v_f.gap else v_f).proper_velocity())
         if not (abs(m.horizon_x) <= bound and m.radius_left <= bound and m.radius_right <= bound):
             raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
         if not (r.mass_after <= bound and reach <= bound):

@@ -65,8 +65,13 @@ class CollisionSolution:
         heat: float,
         before: tuple[float, float],
     ) -> None:
-        # the fields at once, not one object.__setattr__ each (a frozen dataclass's own __init__)
-        self.__dict__.update(u=u, after=after, mass_gain=mass_gain, heat=heat, before=before)
+        # into the instance's dict, not through one object.__setattr__ call each (the generated __init__)
+        fields = self.__dict__
+        fields["u"] = u
+        fields["after"] = after
+        fields["mass_gain"] = mass_gain
+        fields["heat"] = heat
+        fields["before"] = before
 
     @property
     def mass_factor(self) -> float:
@@ -311,6 +316,7 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             light_cone = False
         if light_cone:
             # V' = (X^2 - Y^2)/(X^2 + Y^2) with X/Y = P+/(R + k) (rod 1), (R + k)/P- (rod 2)
+            ur = 0.0
             qq = r + k
             qq_lo = (k - (qq - r)) + (r_lo + k_lo)
             t = S * qq
@@ -332,14 +338,15 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             dn = x2 + y2
             t = dn - x2
             dn_lo = ((x2 - (dn - t)) + (y2 - t)) + (x2_lo + y2_lo)
-            t = NOISE * dn
+            bound = NOISE * dn
+            squares = (x2, x2_lo, y2, y2_lo)
         else:
             # composition: V' = (u R + sign k)/(R + sign u k)
-            x2 = x2_lo = y2 = y2_lo = 0.0
             ur = uq * r
             ur_lo = ((u_h * r_h - ur) + u_h * r_t + u_t * r_h) + u_t * r_t + (uq * r_lo + uq_lo * r)
             uk = uq * k
             uk_lo = ((u_h * k_h - uk) + u_h * k_t + u_t * k_h) + u_t * k_t + (uq * k_lo + uq_lo * k)
+            bound = NOISE * (r + k)  # above the noise of the terms |u R| + |k|
             if sign < 0.0:
                 k, k_lo, uk, uk_lo = -k, -k_lo, -uk, -uk_lo
             n = ur + k
@@ -347,12 +354,15 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             e = ((ur - (n - t)) + (k - t)) + (ur_lo + k_lo)
             dn = r + uk  # |u k| < R
             dn_lo = (uk - (dn - r)) + (r_lo + uk_lo)
-            t = NOISE * ((ur if ur > 0.0 else -ur) + (k if k > 0.0 else -k))
+            squares = None
         t_ = n + e  # normalised numerator: below the noise of its terms, V' = 0 exactly
         e -= t_ - n
         n = t_
-        if -t <= n <= t:
-            continue
+        if -bound <= n <= bound:
+            if not light_cone:  # the bound was coarse there: the terms are |u R| + |k|
+                bound = NOISE * (abs(ur) + abs(k))
+            if -bound <= n <= bound:
+                continue
         # V' = n / dn: q = fl(n / dn) plus the exact residual
         q = n / dn
         t = S * q
@@ -360,8 +370,9 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         q_t = q - q_h
         t = S * dn
         d = t - (t - dn)
+        t = dn - d
         p = q * dn
-        v_lo = (((n - p) - (((q_h * d - p) + q_h * (dn - d) + q_t * d) + q_t * (dn - d))) + e - q * dn_lo) / dn
+        v_lo = (((n - p) - (((q_h * d - p) + q_h * t + q_t * d) + q_t * t)) + e - q * dn_lo) / dn
         v = q + v_lo
         v_lo -= v - q
         if 0.0 <= v < _NEAR_LIGHT:  # 1 - |V'| from V' itself, rounded once
@@ -370,7 +381,8 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         elif -_NEAR_LIGHT < v < 0.0:
             g = 1.0 + v
             gap = g + (((1.0 - g) + v) + v_lo)
-        elif light_cone:  # 1 - V' = 2 Y^2/(X^2 + Y^2), 1 + V' = 2 X^2/(X^2 + Y^2)
+        elif squares is not None:  # 1 - V' = 2 Y^2/(X^2 + Y^2), 1 + V' = 2 X^2/(X^2 + Y^2)
+            x2, x2_lo, y2, y2_lo = squares
             gap = 2.0 * div((y2, y2_lo) if v > 0.0 else (x2, x2_lo), (dn, dn_lo))[0]
         else:
             # 1 - V' = (1 - u)(1 - w)/(1 + u w) and 1 + V' = (1 + u)(1 + w)/(1 + u w), with
