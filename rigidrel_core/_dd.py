@@ -7,8 +7,8 @@ built from error-free transformations of single float64 operations (Python 3.11 
 
 * :func:`two_sum`: ``s = fl(a + b)`` and ``e = (a + b) - s`` exactly (Knuth, 6 operations);
 * :func:`fast_two_sum`: the same for ``|a| >= |b|`` (Dekker, 3 operations);
-* :func:`split`: ``a = ah + al``, each half with at most 26 significant bits (Veltkamp,
-  multiplier ``2**27 + 1``), so that products of halves are exact;
+* Veltkamp's split ``a = ah + al``, each half with at most 26 significant bits (multiplier
+  ``2**27 + 1``), so that products of halves are exact;
 * :func:`two_prod`: ``p = fl(a b)`` and ``e = a b - p`` exactly (Dekker, from the splits).
 
 One operation on double-doubles is good to a few ``2**-104`` (5e-32) of its result; a chain
@@ -26,6 +26,7 @@ inline, naming them in comments.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 #: A double-double ``(hi, lo)``: the value ``hi + lo``.
 DD = tuple[float, float]
@@ -34,7 +35,7 @@ DD = tuple[float, float]
 SPLITTER = 134217729.0
 #: Where double-double cancellation stops meaning anything: a sum below ``NOISE`` times the
 #: sum of its terms' magnitudes is rounding noise of the terms (a few ``2**-104`` each, after
-#: about ten operations) and is taken as exactly zero.
+#: about ten operations; symmetric collisions leave at most ``2**-104``) and is taken as exactly zero.
 NOISE = 2.0**-100
 #: ``ln 2`` as a double-double (to ~1e-33).
 LN2 = (0.6931471805599453, 2.3190468138462996e-17)
@@ -51,13 +52,6 @@ def fast_two_sum(a: float, b: float) -> DD:
     """``(s, e)`` with ``s = fl(a + b)``, ``s + e == a + b`` exactly, given ``|a| >= |b|`` (Dekker)."""
     s = a + b
     return s, b - (s - a)
-
-
-def split(a: float) -> DD:
-    """``(ah, al)`` with ``ah + al == a`` and at most 26 significant bits in each (Veltkamp)."""
-    t = SPLITTER * a
-    ah = t - (t - a)
-    return ah, a - ah
 
 
 def two_prod(a: float, b: float) -> DD:
@@ -114,26 +108,60 @@ def sqrt(a: DD) -> DD:
     return fast_two_sum(r, (((a[0] - p) - e) + a[1]) / (2.0 * r))
 
 
-def is_noise(total: float, magnitude: float) -> bool:
-    """Whether a computed sum ``total`` is rounding noise of terms whose magnitudes add to ``magnitude``."""
-    return abs(total) <= NOISE * magnitude
+def _exact_dd(x: Fraction) -> DD:
+    hi = float(x)
+    return hi, float(x - Fraction(hi))
+
+
+#: ``1/(n+1)!`` for n = 0..10 as double-doubles: ``expm1(y) = y sum_n y^n/(n+1)!``; the first
+#: term left out, ``y^11/12!``, is below ``2**-110 y`` for ``|y| <= 1/256``.
+_EXPM1_TERMS = tuple(_exact_dd(Fraction(1, math.factorial(n + 1))) for n in range(11))
 
 
 def expm1_small(x: DD) -> DD:
     """``exp(x) - 1`` for ``|x| <= 1``, to a few ``2**-104`` of itself (also for tiny ``x``).
 
-    Taylor series of ``y = x / 2**k`` (``k = 5`` halvings, ``|y| < 1/32``, terms to ``y**14/14!``), then
-    ``k`` doublings ``e(2y) = e(y) (e(y) + 2)``, which keep the relative error.
+    Taylor series of ``y = x / 2**k`` (``k = 8`` halvings, ``|y| <= 1/256``; none for
+    ``|x| <= 2**-20``) by Horner's rule, then ``k`` doublings ``e(2y) = e(y) (e(y) + 2)``,
+    which keep the relative error. Written out (two_prod and two_sum inline): it runs
+    for every frame made from a rapidity.
     """
-    halvings = 5 if abs(x[0]) > 2.0**-20 else 0
-    y = (math.ldexp(x[0], -halvings), math.ldexp(x[1], -halvings))
-    s: DD = (1.0, 0.0)  # Horner: 1 + y/2 (1 + y/3 (1 + ...)), then times y
-    for n in range(14, 1, -1):
-        s = add_float(div(mul(s, y), (float(n), 0.0)), 1.0)
-    s = mul(s, y)
-    for _ in range(halvings):
-        s = mul(s, add_float(s, 2.0))
-    return s
+    k = 8 if abs(x[0]) > 2.0**-20 else 0
+    yh, yl = math.ldexp(x[0], -k), math.ldexp(x[1], -k)
+    t = SPLITTER * yh
+    y_h = t - (t - yh)
+    y_t = yh - y_h
+    sh, sl = _EXPM1_TERMS[10]
+    for ch, cl in _EXPM1_TERMS[9::-1]:  # s = s y + 1/(n+1)!
+        p = sh * yh
+        t = SPLITTER * sh
+        s_h = t - (t - sh)
+        s_t = sh - s_h
+        e = ((s_h * y_h - p) + s_h * y_t + s_t * y_h) + s_t * y_t + (sh * yl + sl * yh)
+        sh = p + ch
+        t = sh - p
+        sl = ((p - (sh - t)) + (ch - t)) + (e + cl)
+    p = sh * yh  # e = s y
+    t = SPLITTER * sh
+    s_h = t - (t - sh)
+    s_t = sh - s_h
+    e = ((s_h * y_h - p) + s_h * y_t + s_t * y_h) + s_t * y_t + (sh * yl + sl * yh)
+    eh = p + e
+    el = e - (eh - p)
+    for _ in range(k):  # e = e (e + 2)
+        fh = eh + 2.0  # |e| < 2 for |y| <= 1: fast_two_sum(2, e)
+        fl = (eh - (fh - 2.0)) + el
+        p = eh * fh
+        t = SPLITTER * eh
+        a_h = t - (t - eh)
+        a_t = eh - a_h
+        t = SPLITTER * fh
+        b_h = t - (t - fh)
+        b_t = fh - b_h
+        e = ((a_h * b_h - p) + a_h * b_t + a_t * b_h) + a_t * b_t + (eh * fl + el * fh)
+        eh = p + e
+        el = e - (eh - p)
+    return eh, el
 
 
 def exp_negative(x: float) -> DD:

@@ -31,8 +31,8 @@ from .._validate import ParameterError
 #: solving, so that no product of the solution overflows or underflows (only their ratio matters).
 _MASS_MIN, _MASS_MAX = 2.0**-200, 2.0**200
 #: Below this speed ``1 - |v|`` is taken from the double-double ``v`` itself (its error, ~1e-31,
-#: is below 2**-70 of the gap, so the gap is correctly rounded); nearer light, from products of
-#: positive factors (to a few ulp), since ``1 - v`` would cancel.
+#: is below 2**-70 of the gap, so the gap is correctly rounded); nearer light, where ``1 - v``
+#: would cancel, from double-double products of positive factors, rounded once.
 _NEAR_LIGHT = 1.0 - 2.0**-30
 #: ``tanh(1)``: composing rapidities ``U`` and ``theta'`` of opposite signs with ``|U| + |theta'| > 1``
 #: goes through light-cone components (see :func:`solve_collision`).
@@ -114,8 +114,9 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     * else, in light-cone form, ``exp(theta'_1) = P+/(R_1 + k_1)``, ``exp(-theta'_2) = P-/(R_2 + k_2)``,
       ``V' = (X^2 - Y^2)/(X^2 + Y^2)``, which does not cancel when both are near light.
 
-    Gaps to light speed are products of those positive factors, e.g. ``1 - V'_1 =
-    (1 - u)(R_1 + k_1)/(R_1 - u k_1)``, to a few ulp. 4-momentum is conserved with both rest
+    Gaps to light speed are ``1 - |V'|`` from the double-double ``V'``, or, within 2**-30 of light,
+    products of those positive factors, e.g. ``1 - V'_1 = (1 - u)(R_1 + k_1)/(R_1 - u k_1)``;
+    either way rounded once from double-double. 4-momentum is conserved with both rest
     masses scaled by ``k = M / (m1 g'_1 + m2 g'_2)``, ``g'_i = R_i/M``; ``k - 1 = (1 - eps^2)
     sum_i m_i b_i^2/(g_i + g'_i) / (m1 g'_1 + m2 g'_2)`` (``b_i``, ``g_i``: barycentric proper
     velocity and gamma before), without cancellation.
@@ -123,7 +124,8 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     A velocity whose terms cancel to below double-double's noise (``NOISE``, 2**-100 of the
     terms) is exactly 0: equal masses with V1 = -V2 have the lab as barycentric frame; an
     elastic hit on an equal rod at rest, or ``eps = M1/M2`` on a heavier one, stops rod 1 dead.
-    ``eps = 0``: both rods move on with ``u`` itself.
+    ``eps = 0``: both rods move on with ``u`` itself. Speeds below ~1e-292 c, where a low part is
+    subnormal, keep an absolute error of a few 1e-323 instead of a relative one.
     """
     S = SPLITTER
     sqrt = math.sqrt
