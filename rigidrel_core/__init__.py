@@ -1,9 +1,9 @@
 """rigidrel_core: exact, Lorentz-covariant worldlines of Born-rigid rods (Franklin 2012).
 
 Units c = 1. A frame of velocity ``beta`` has ``x' = gamma (x - beta t)``,
-``t' = gamma (t - beta x)``, sharing the lab's origin. Pure numpy (plus the standard
-library's ``decimal`` for the one-off scalar solution of each scene); it never imports
-the app, viser or plotly.
+``t' = gamma (t - beta x)``, sharing the lab's origin. Pure numpy (each scene's one-off
+scalar solution is double-double arithmetic on Python floats); it never imports the app,
+viser or plotly.
 
     import rigidrel_core as rr
     scene = rr.build_scene("rod-collision", m2=2.0)          # Fig. 3, case I

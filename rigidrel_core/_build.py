@@ -1,17 +1,17 @@
-"""What every scene constructor shares: the 60-digit context, the Born-rigid change of one rod,
-the frame presets, the shared parameters and the check that a scene fits in float64."""
+"""What every scene constructor shares: the Born-rigid change of one rod (its Rindler radii in
+double-double), the frame presets, the shared parameters and the check that a scene fits in float64."""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from contextlib import AbstractContextManager
-from decimal import Context, Decimal, localcontext
 from types import MappingProxyType
-from typing import Literal, TypeVar
+from typing import Literal
 
+from . import _dd
+from ._dd import DD
 from ._description import SPEED, UNIT_CLOSED, Interval, Parameter, Slider
-from ._exact import DECIMAL_DIGITS, ExactVelocity
+from ._exact import ExactVelocity
 from ._frame import LAB, Frame
 from ._motion import RigidMotion
 from ._scene import Scene
@@ -62,48 +62,43 @@ EPS = Parameter(
 SINGLE_ROD_FRAMES = ("lab", "rod before", "rod after")
 
 
-# ---------------------------------------------------------------------- arithmetic
-def decimal_context() -> AbstractContextManager[Context]:
-    """A 60-digit decimal context for the scalar scene solution."""
-    return localcontext(prec=DECIMAL_DIGITS)
-
-
-_Num = TypeVar("_Num", float, Decimal)
-
-
-def horizon_and_radii(sign: Literal[1, -1], vertex_left: _Num, near: _Num, far: _Num) -> tuple[_Num, _Num, _Num]:
-    """Centre x and the left and right ends' radii of a family at rest on ``[vertex_left, vertex_left
-    + length]``, its ends ``near`` and ``far = near + length`` from the centre: the centre lies behind
-    the rod (on the left when it speeds up to the right, ``sign = 1``)."""
-    if sign == 1:
-        return vertex_left - near, near, far
-    return vertex_left + far, far, near
+# ---------------------------------------------------------------------- one rod's change
+#: ``rho_near`` of an impulse (Sec. 4): the near end is at the centre.
+IMPULSE: DD = (0.0, 0.0)
 
 
 def rigid_motion(
     v_initial: ExactVelocity,
     v_final: ExactVelocity,
     length: float,
-    rho_near: Decimal,
+    rho_near: DD,
     vertex_left: float,
 ) -> RigidMotion:
     """Born-rigid change ``v_initial -> v_final``; at lab t = 0 the (extended) family is at rest on
-    ``[vertex_left, vertex_left + length]``; the end nearest the centre is ``rho_near`` from it
-    (``rho_near = 0``: the impulsive limit of Sec. 4)."""
+    ``[vertex_left, vertex_left + length]``; the end nearest the centre is ``rho_near`` (a
+    double-double) from it (``rho_near = 0``: the impulsive limit of Sec. 4).
+
+    The centre lies behind the rod: at ``vertex_left - rho_near`` when it speeds up to the
+    right (``sign = 1``), at ``vertex_left + rho_near + length`` otherwise; the far end's radius
+    is ``rho_near + length``. Each is summed in double-double and rounded once, so the
+    floats stored are the exact sums correctly rounded."""
     sign: Literal[1, -1] = 1 if (v_final.hi, v_final.lo) > (v_initial.hi, v_initial.lo) else -1
-    if rho_near == 0:  # an impulse: single float operations, each correctly rounded, suffice
-        horizon, r_left, r_right = horizon_and_radii(sign, vertex_left, 0.0, length)
+    if rho_near == IMPULSE:  # single float operations, each correctly rounded
+        horizon, r_left, r_right = (vertex_left, 0.0, length) if sign == 1 else (vertex_left + length, length, 0.0)
+        return RigidMotion(length, sign, horizon, r_left, r_right, vertex_left, v_initial, v_final)
+    far = _dd.add_float(rho_near, length)
+    if sign == 1:
+        horizon = _dd.add_float((-rho_near[0], -rho_near[1]), vertex_left)[0]
+        r_left, r_right = rho_near[0], far[0]
     else:
-        with decimal_context():
-            horizon, r_left, r_right = horizon_and_radii(
-                sign, Decimal(vertex_left), rho_near, rho_near + Decimal(length)
-            )
+        horizon = _dd.add_float(far, vertex_left)[0]
+        r_left, r_right = far[0], rho_near[0]
     return RigidMotion(
         length=length,
         sign=sign,
-        horizon_x=float(horizon),
-        radius_left=float(r_left),
-        radius_right=float(r_right),
+        horizon_x=horizon,
+        radius_left=r_left,
+        radius_right=r_right,
         vertex_left=vertex_left,
         velocity_initial=v_initial,
         velocity_final=v_final,
@@ -114,17 +109,26 @@ def rigid_motion(
 BELOW_HORIZON = Interval(0.0, 1.0)
 
 
-def near_radius(a_front: float, length: float, allowed: Interval = BELOW_HORIZON) -> Decimal:
-    """``a_front * length`` in ``allowed`` (evaluated exactly); returns ``rho_near = (1 - a L)/a``.
+def near_radius(a_front: float, length: float, allowed: Interval = BELOW_HORIZON) -> DD:
+    """``a_front * length`` in ``allowed`` (the product taken exactly, as a double-double);
+    returns ``rho_near = (1 - a L)/a`` in double-double.
 
     Sec. 3, Eq. (15): ``a'_B = a'_F / (1 - a'_F L0)``, so the near (back) end sits at
     ``1/a'_B = (1 - a'_F L0)/a'_F`` from the centre; ``a'_F L0 = 1`` is the impulsive limit.
     """
-    with decimal_context():
-        aL = Decimal(a_front) * Decimal(length)
-        if not (aL > 0 and (aL < 1 or (allowed.hi_closed and aL == 1))):
-            raise ParameterError("a_front * length", f"a finite number {allowed.text()}", float(aL))
-        return (1 - aL) / Decimal(a_front)
+    if a_front > 2.0**500:  # scaled by 2**-600 (exactly), so that splitting it cannot overflow
+        a = a_front * 2.0**-600
+        aL = _dd.two_prod(a, length)
+        aL = (aL[0] * 2.0**600, aL[1] * 2.0**600)
+        rho = _dd.div(_dd.add_float((-aL[0], -aL[1]), 1.0), (a, 0.0))
+        rho = (rho[0] * 2.0**-600, rho[1] * 2.0**-600)
+    else:
+        aL = _dd.two_prod(a_front, length)
+        rho = _dd.div(_dd.add_float((-aL[0], -aL[1]), 1.0), (a_front, 0.0))
+    # positive, as both factors are; below 1, or (the impulsive limit, where allowed) exactly 1
+    if not (aL[0] < 1.0 or (aL[0] == 1.0 and (aL[1] < 0.0 or (allowed.hi_closed and aL[1] == 0.0)))):
+        raise ParameterError("a_front * length", f"a finite number {allowed.text()}", aL[0])
+    return rho
 
 
 def single_rod_frames(motion: RigidMotion) -> Mapping[str, Frame]:
@@ -139,15 +143,21 @@ def single_rod_frames(motion: RigidMotion) -> Mapping[str, Frame]:
 
 def checked_scene(scene: Scene) -> Scene:
     """Reject parameter combinations whose derived numbers leave the representable range."""
-    allowed = f"such that every lab event and Rindler radius lies within {MAX_SCENE_COORDINATE:g} of the origin"
+    bound = MAX_SCENE_COORDINATE
     for r in scene.rods:
         m = r.motion
-        nums = [m.horizon_x, m.radius_left, m.radius_right, r.mass_after]
-        for v in (m.velocity_initial, m.velocity_final):
-            if not v.gap > 0.0:
-                below_light = "such that every velocity stays below light speed"
-                raise ParameterError("parameters", below_light, dict(scene.parameters))
-            nums.append(max(m.radius_left, m.radius_right) * v.proper_velocity())
-        if not all(math.isfinite(x) and abs(x) <= MAX_SCENE_COORDINATE for x in nums):
-            raise ParameterError("parameters", allowed, dict(scene.parameters))
+        v_i, v_f = m.velocity_initial, m.velocity_final
+        if not (v_i.gap > 0.0 and v_f.gap > 0.0):
+            below_light = "such that every velocity stays below light speed"
+            raise ParameterError("parameters", below_light, dict(scene.parameters))
+        # the lab events of the ends: the centre, the radii, the mass, radius times gamma v of the
+        # faster velocity (the smaller gap); NaN fails too
+        reach = max(m.radius_left, m.radius_right) * abs((v_i if v_i.gap < v_f.gap else v_f).proper_velocity())
+        if not (abs(m.horizon_x) <= bound and m.radius_left <= bound and m.radius_right <= bound):
+            raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
+        if not (r.mass_after <= bound and reach <= bound):
+            raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
     return scene
+
+
+_OUT_OF_RANGE = f"such that every lab event and Rindler radius lies within {MAX_SCENE_COORDINATE:g} of the origin"

@@ -108,6 +108,8 @@ class Parameter:
 
     def check(self, value: object) -> float:
         """``value`` as a float if it lies in :attr:`domain`; else :class:`ParameterError` naming it."""
+        if type(value) is float and -math.inf < value < math.inf and value in self.domain:
+            return value  # the common case, without composing the message
         allowed = f"a finite number {self.domain.text()}"
         x = as_real(self.name, value, allowed)
         if x not in self.domain:

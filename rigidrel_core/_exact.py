@@ -9,23 +9,24 @@ difference is tiny, and two float64 rapidities subtracted lose everything they h
 common. Storing each velocity as ``hi + lo`` (about 32 significant digits) together with
 its gap to light speed ``1 - |v|`` (correctly rounded on its own, so that even
 ``1 - 1e-30`` is represented) lets :func:`relative_rapidity` return the difference to a
-few ulp of *itself*, for any pair of velocities.
+few ulp of *itself*, for any pair of velocities. The velocities themselves are computed in
+double-double arithmetic (:mod:`rigidrel_core._dd`).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from decimal import Decimal, localcontext
 
-#: Working precision (decimal digits) of the scalar scene construction.
-DECIMAL_DIGITS = 60
+from . import _dd
+from ._dd import DD
+
 #: The largest float64 below 1 (``1 - 2**-53``): a speed closer to light than float64 can show
 #: is reported as this, so that every float velocity the core returns has ``|v| < 1``.
 BELOW_ONE = math.nextafter(1.0, 0.0)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, init=False)
 class ExactVelocity:
     """A velocity ``v = hi + lo`` (c = 1) with ``gap = 1 - |v|`` kept separately.
 
@@ -37,21 +38,19 @@ class ExactVelocity:
     lo: float
     gap: float
 
+    def __init__(self, hi: float, lo: float, gap: float) -> None:
+        # A frozen dataclass's generated __init__ sets each field through object.__setattr__;
+        # the slots' own descriptors do the same in a third less time (velocities are made on
+        # every scene change).
+        _SET_HI(self, hi)
+        _SET_LO(self, lo)
+        _SET_GAP(self, gap)
+
     @classmethod
     def from_float(cls, v: float) -> ExactVelocity:
         """The float ``v`` taken as exact. ``1 - |v|`` is exact for ``|v| >= 1/2`` (Sterbenz)."""
         v = float(v)
         return cls(v, 0.0, 1.0 - abs(v))
-
-    @classmethod
-    def from_decimal(cls, v: Decimal) -> ExactVelocity:
-        """Round a high-precision velocity to ``hi + lo`` and its gap to light speed."""
-        with localcontext() as ctx:
-            ctx.prec = DECIMAL_DIGITS
-            hi = float(v)
-            lo = float(v - Decimal(hi))
-            gap = float(1 - abs(v))
-        return cls(hi, lo, gap)
 
     @property
     def value(self) -> float:
@@ -59,10 +58,6 @@ class ExactVelocity:
         (``gap < 5.6e-17``, which would round to 1) is rounded toward zero, to :data:`BELOW_ONE`:
         ``|value| < 1`` always, one ulp from the exact speed at most. ``gap`` keeps the exact distance."""
         return math.copysign(min(abs(self.hi), BELOW_ONE), self.hi)
-
-    def as_decimal(self) -> Decimal:
-        """``hi + lo`` as an exact decimal (the gap is not used)."""
-        return Decimal(self.hi) + Decimal(self.lo)
 
     def one_minus(self) -> float:
         """``1 - v`` to a few ulp, also when ``v`` is within 1e-30 of 1."""
@@ -95,6 +90,7 @@ class ExactVelocity:
         return ExactVelocity(-self.hi, -self.lo, self.gap)
 
 
+_SET_HI, _SET_LO, _SET_GAP = (ExactVelocity.__dict__[name].__set__ for name in ("hi", "lo", "gap"))
 REST = ExactVelocity(0.0, 0.0, 1.0)
 
 
@@ -118,66 +114,72 @@ def relative_rapidity(v: ExactVelocity, frame: ExactVelocity) -> float:
     return -0.5 * math.log1p(-2.0 * d / (v.one_plus() * frame.one_minus()))
 
 
-def _one_minus_decimal(v: ExactVelocity) -> Decimal:
-    """``1 - v`` as an exact decimal, using the stored gap where it is the accurate part."""
-    return Decimal(v.gap) if v.hi >= 0.5 else 1 - v.as_decimal()
+#: Below this gap the stored ``gap`` (good to half an ulp) is a better ``1 - |v|`` than
+#: ``1 - (hi + lo)``, whose absolute error (a few 1e-33) is then no longer small against it.
+_TINY_GAP = 2.0**-53
 
 
-def _one_plus_decimal(v: ExactVelocity) -> Decimal:
-    return Decimal(v.gap) if v.hi <= -0.5 else 1 + v.as_decimal()
+def _one_minus(v: ExactVelocity) -> DD:
+    """``1 - v`` as a double-double: from ``hi + lo`` (exactly), or the stored gap where that is the
+    more accurate (``v`` within 2**-53 of light)."""
+    if v.hi >= 0.5 and v.gap < _TINY_GAP:
+        return v.gap, 0.0
+    return _dd.add_float((-v.hi, -v.lo), 1.0)
+
+
+def _one_plus(v: ExactVelocity) -> DD:
+    """``1 + v`` as a double-double (see :func:`_one_minus`)."""
+    if v.hi <= -0.5 and v.gap < _TINY_GAP:
+        return v.gap, 0.0
+    return _dd.add_float((v.hi, v.lo), 1.0)
 
 
 def compose_velocities(a: ExactVelocity, b: ExactVelocity) -> ExactVelocity:
-    """Relativistic velocity addition ``(a + b) / (1 + a b)`` (rapidities add), in 60 digits.
+    """Relativistic velocity addition ``v = (a + b) / (1 + a b)`` (rapidities add), in double-double.
 
     The gap to light speed comes from the products ``1 - v = (1 - a)(1 - b)/(1 + ab)`` and
-    ``1 + v = (1 + a)(1 + b)/(1 + ab)``, so two velocities within 1e-30 of light compose
-    without cancellation.
+    ``1 + v = (1 + a)(1 + b)/(1 + ab)``, and ``1 + ab`` itself, for ``a`` and ``b`` near light
+    in opposite directions, from ``((1 + a)(1 + b) + (1 - a)(1 - b))/2``: two velocities
+    within 1e-30 of light compose without cancellation, and the gap is correctly rounded.
+    ``ValueError`` if the composed gap is below float64's range (the speed would be light's).
     """
-    with localcontext() as ctx:
-        ctx.prec = DECIMAL_DIGITS
-        da, db = a.as_decimal(), b.as_decimal()
-        denominator = 1 + da * db
-        v = (da + db) / denominator
-        if v >= 0:
-            gap = _one_minus_decimal(a) * _one_minus_decimal(b) / denominator
-        else:
-            gap = _one_plus_decimal(a) * _one_plus_decimal(b) / denominator
-        if gap <= 0:  # both within float64's reach of light: below the represented gap
-            raise ValueError("composed velocity reaches light speed")
-        hi = float(v)
-        return ExactVelocity(hi, float(v - Decimal(hi)), float(gap))
+    a_minus, a_plus, b_minus, b_plus = _one_minus(a), _one_plus(a), _one_minus(b), _one_plus(b)
+    if a.hi * b.hi < 0.0 and abs(a.hi) >= 0.5 and abs(b.hi) >= 0.5:
+        s = _dd.add(_dd.mul(a_plus, b_plus), _dd.mul(a_minus, b_minus))
+        denominator = (0.5 * s[0], 0.5 * s[1])
+    else:  # 1 + ab >= 1/2: no cancellation
+        denominator = _dd.add_float(_dd.mul((a.hi, a.lo), (b.hi, b.lo)), 1.0)
+    v = _dd.div(_dd.add((a.hi, a.lo), (b.hi, b.lo)), denominator)
+    if abs(v[0]) < 0.5:  # 1 - |v| >= 1/2: no cancellation
+        gap = _dd.add_float((-v[0], -v[1]) if v[0] >= 0.0 else v, 1.0)[0]
+    elif v[0] > 0.0:
+        gap = _dd.div(_dd.mul(a_minus, b_minus), denominator)[0]
+    else:
+        gap = _dd.div(_dd.mul(a_plus, b_plus), denominator)[0]
+    if not gap > 0.0:  # both within float64's reach of light: below the represented gap
+        raise ValueError("composed velocity reaches light speed")
+    return ExactVelocity(v[0], v[1], gap)
 
 
 def velocity_from_rapidity(psi: float) -> ExactVelocity:
-    """``tanh psi`` to double-double, its gap ``2/(exp(2|psi|) + 1)`` beside it (60 digits, ``psi`` exact).
+    """``tanh psi`` to double-double (``psi`` taken as exact), with its gap ``1 - |tanh psi| = 2/(exp(2|psi|) + 1)``.
 
-    ``exp(2|psi|) - 1`` loses as many digits as ``2|psi|`` has leading zeros: the working
-    precision grows by those, so a tiny rapidity keeps its 60 digits too."""
+    With ``x = 2|psi|``: for ``x < 1``, ``tanh|psi| = e/(e + 2)`` and the gap ``2/(e + 2)``, with
+    ``e = expm1(x)`` from its Taylor series, so a tiny rapidity keeps its relative precision;
+    beyond, ``tanh|psi| = (1 - z)/(1 + z)`` and the gap ``2 z/(1 + z)`` with ``z = exp(-x)``
+    (the gap underflows to 0 beyond ``|psi| ~ 372``)."""
     if psi == 0.0:
         return REST
-    with localcontext() as ctx:
-        ctx.prec = DECIMAL_DIGITS + max(0, -math.floor(math.log10(2.0 * abs(psi))))
-        e = (2 * Decimal(abs(psi))).exp()  # exp(2|psi|)
-        speed = (e - 1) / (e + 1)
-        gap = 2 / (e + 1)
-        v = speed if psi >= 0 else -speed
-        hi = float(v)
-        return ExactVelocity(hi, float(v - Decimal(hi)), float(gap))
-
-
-def lorentz_factor_decimal(v: Decimal) -> Decimal:
-    """``gamma = 1/sqrt((1 - v)(1 + v))`` in the ambient decimal context."""
-    return 1 / ((1 - v) * (1 + v)).sqrt()
-
-
-def velocity_from_proper_velocity(u: Decimal) -> ExactVelocity:
-    """``v = u / sqrt(1 + u**2)`` with ``1 - |v| = 1 / (sqrt(1+u^2) (sqrt(1+u^2) + |u|))``."""
-    with localcontext() as ctx:
-        ctx.prec = DECIMAL_DIGITS
-        g = (1 + u * u).sqrt()
-        v = u / g
-        gap = 1 / (g * (g + abs(u)))
-        hi = float(v)
-        lo = float(v - Decimal(hi))
-        return ExactVelocity(hi, lo, float(gap))
+    x = 2.0 * abs(psi)
+    if x < 1.0:
+        e = _dd.expm1_small((x, 0.0))
+        denominator = _dd.add_float(e, 2.0)
+        speed, gap = _dd.div(e, denominator), _dd.div((2.0, 0.0), denominator)
+    else:
+        z = _dd.exp_negative(x)
+        denominator = _dd.add_float(z, 1.0)
+        speed = _dd.div(_dd.add_float((-z[0], -z[1]), 1.0), denominator)
+        gap = _dd.div((2.0 * z[0], 2.0 * z[1]), denominator)
+    if psi < 0.0:
+        return ExactVelocity(-speed[0], -speed[1], gap[0])
+    return ExactVelocity(speed[0], speed[1], gap[0])

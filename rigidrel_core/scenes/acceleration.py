@@ -3,12 +3,22 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from decimal import Decimal
 from types import MappingProxyType
 from typing import Literal
 
-from .._build import A_FRONT, LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, near_radius, rigid_motion
+from .._build import (
+    A_FRONT,
+    IMPULSE,
+    LENGTH,
+    MASS,
+    SINGLE_ROD_FRAMES,
+    V,
+    checked_scene,
+    near_radius,
+    rigid_motion,
+)
 from .._build import single_rod_frames as _frames
+from .._dd import DD
 from .._description import (
     VELOCITY,
     EventDescription,
@@ -27,6 +37,26 @@ from .impulse import impulsive_start
 
 Which = Literal["near", "far"]
 Phase = Literal["start", "stop"]
+EventsBySign = Mapping[int, tuple[EventSpec, ...]]
+
+
+def _event_specs(event_names: Mapping[tuple[Which, Phase], str]) -> EventsBySign:
+    """A scene's named events for a change up (``sign = 1``: the near end, the paper's B, is the left
+    one) and down (the right one); made once, at import."""
+    ends: dict[tuple[int, Which], Literal[0, 1]] = {(1, "near"): 0, (1, "far"): 1, (-1, "near"): 1, (-1, "far"): 0}
+    return MappingProxyType(
+        {
+            sign: tuple(EventSpec(name, 0, ends[sign, which], phase) for (which, phase), name in event_names.items())
+            for sign in (1, -1)
+        }
+    )
+
+
+_CONSTANT_ACCELERATION_EVENTS = _event_specs({("near", "stop"): "T_B", ("far", "stop"): "T_F"})
+_DECELERATION_EVENTS = _event_specs({("far", "start"): "-T_F", ("near", "start"): "-T_B"})
+_VELOCITY_CHANGE_EVENTS = _event_specs(
+    {("near", "start"): "T_B0", ("far", "start"): "T_F0", ("near", "stop"): "T_B", ("far", "stop"): "T_F"}
+)
 
 
 def _velocity_change_scene(
@@ -35,25 +65,19 @@ def _velocity_change_scene(
     v_initial: ExactVelocity,
     v_final: ExactVelocity,
     length: float,
-    rho_near: Decimal,
+    rho_near: DD,
     mass: float,
-    event_names: Mapping[tuple[Which, Phase], str],
+    events: EventsBySign,
     origin_event: OriginEvent,
 ) -> Scene:
     """One rod changing velocity once; ``near`` is the end nearer the Rindler horizon (the paper's B)."""
     motion = rigid_motion(v_initial, v_final, length, rho_near, 0.0)
-    near_end: Literal[0, 1] = 0 if motion.sign == 1 else 1
-    far_end: Literal[0, 1] = 1 if motion.sign == 1 else 0
-    specs = tuple(
-        EventSpec(name, 0, near_end if which == "near" else far_end, phase)
-        for (which, phase), name in event_names.items()
-    )
     return checked_scene(
         Scene(
             kind=kind,
             parameters=MappingProxyType(dict(parameters)),
             rods=(Rod("rod", motion, mass, mass),),
-            event_specs=specs,
+            event_specs=events[motion.sign],
             frames=_frames(motion),
             external_source="drive",
             heat=0.0,
@@ -84,7 +108,7 @@ def constant_acceleration(v: float, length: float, a_front: float, mass: float =
         length,
         near_radius(a_front, length),
         mass,
-        {("near", "stop"): "T_B", ("far", "stop"): "T_F"},
+        _CONSTANT_ACCELERATION_EVENTS,
         OriginEvent.START,
     )
 
@@ -142,7 +166,7 @@ def deceleration(v: float, length: float, a_front: float, mass: float = 1.0) -> 
         length,
         near_radius(a_front, length),
         mass,
-        {("far", "start"): "-T_F", ("near", "start"): "-T_B"},
+        _DECELERATION_EVENTS,
         OriginEvent.REST,
     )
 
@@ -221,7 +245,7 @@ def velocity_change(
     length = LENGTH.check(length)
     mass = MASS.check(mass)
     if a_front is None:
-        rho_near = Decimal(0)
+        rho_near = IMPULSE
     else:
         rho_near = near_radius(A_FRONT_OR_IMPULSE.check(a_front), length, _IMPULSIVE_ALLOWED)
     params = {"v_initial": vi, "v_final": vf, "length": length, "mass": mass}
@@ -236,12 +260,7 @@ def velocity_change(
         length,
         rho_near,
         mass,
-        {
-            ("near", "start"): "T_B0",
-            ("far", "start"): "T_F0",
-            ("near", "stop"): "T_B",
-            ("far", "stop"): "T_F",
-        },
+        _VELOCITY_CHANGE_EVENTS,
         origin,
     )
 

@@ -1,12 +1,18 @@
-"""Collision of two rigid rods along x, solved in the barycentric frame (paper Secs. 5-6, Figs. 3-4)."""
+"""Collision of two rigid rods along x, solved in the barycentric frame (paper Secs. 5-6, Figs. 3-4).
+
+The scalar solution is computed in double-double arithmetic (about 32 digits, see
+:mod:`rigidrel_core._dd`), written out inline: a Python call costs as much as the few float
+operations it would wrap, and this runs on every slider change.
+"""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-from decimal import Decimal
 from types import MappingProxyType
 
-from .._build import EPS, SIZE, checked_scene, decimal_context, rigid_motion
+from .._build import EPS, IMPULSE, SIZE, checked_scene, rigid_motion
+from .._dd import NOISE, SPLITTER, add, div, mul
 from .._description import (
     VELOCITY,
     EventDescription,
@@ -16,97 +22,403 @@ from .._description import (
     ScenePreset,
     Slider,
 )
-from .._exact import ExactVelocity, lorentz_factor_decimal, velocity_from_proper_velocity
+from .._exact import REST, ExactVelocity, compose_velocities
 from .._frame import LAB, Frame
 from .._scene import EventSpec, Rod, Scene
 from .._validate import ParameterError
 
+#: Masses outside ``(2**-200, 2**200)`` are scaled by a common power of 2 (exactly) before
+#: solving, so that no product of the solution overflows or underflows (only their ratio matters).
+_MASS_MIN, _MASS_MAX = 2.0**-200, 2.0**200
+#: Below this speed ``1 - |v|`` is taken from the double-double ``v`` itself (its error, ~1e-31,
+#: is below 2**-70 of the gap, so the gap is correctly rounded); nearer light, where ``1 - v``
+#: would cancel, from double-double products of positive factors, rounded once.
+_NEAR_LIGHT = 1.0 - 2.0**-30
+#: ``tanh(1)``: composing rapidities ``U`` and ``theta'`` of opposite signs with ``|U| + |theta'| > 1``
+#: goes through light-cone components (see :func:`solve_collision`).
+_TANH_ONE = math.tanh(1.0)
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, init=False)
 class CollisionSolution:
-    """The barycentric solution of a rod-rod collision (paper Sec. 6), to 60 digits.
+    """The barycentric solution of a rod-rod collision (paper Sec. 6), velocities to double-double.
 
-    ``u``: barycentric velocity (Eq. (26)); ``bar_before``/``bar_after``: each rod's
-    velocity in the barycentric frame before and after (``gamma' V' = -eps gamma V``,
-    Eq. (29)); ``after``: lab velocities (Eq. (31)); ``mass_factor``: the common
-    factor by which both rest masses grow (1 for eps = 1).
+    ``u``: barycentric velocity (Eq. (26)); ``after``: lab velocities after (Eq. (31));
+    ``mass_gain``: ``k - 1``, with ``k`` the common factor by which both rest masses grow
+    (0 for eps = 1); ``heat``: the rest energy created, ``(k - 1)(M1 + M2)``; ``before``: the
+    lab velocities before. Each rod's velocity in the barycentric frame, before and after
+    (Eqs. (27)-(29), ``gamma' V' = -eps gamma V``), is derived on demand:
+    :attr:`bar_before`, :attr:`bar_after`.
     """
 
     u: ExactVelocity
-    bar_proper_before: tuple[Decimal, Decimal]
-    """Barycentric proper velocities ``gamma v`` before (60 digits)."""
-    bar_proper_after: tuple[Decimal, Decimal]
     after: tuple[ExactVelocity, ExactVelocity]
-    mass_factor: Decimal
-    heat: Decimal
+    mass_gain: float
+    heat: float
+    before: tuple[float, float]
+
+    def __init__(
+        self,
+        u: ExactVelocity,
+        after: tuple[ExactVelocity, ExactVelocity],
+        mass_gain: float,
+        heat: float,
+        before: tuple[float, float],
+    ) -> None:
+        # into the instance's dict, not through one object.__setattr__ call each (the generated __init__)
+        fields = self.__dict__
+        fields["u"] = u
+        fields["after"] = after
+        fields["mass_gain"] = mass_gain
+        fields["heat"] = heat
+        fields["before"] = before
+
+    @property
+    def mass_factor(self) -> float:
+        """``k``: both rest masses are multiplied by it (1 for eps = 1)."""
+        return 1.0 + self.mass_gain
 
     @property
     def bar_before(self) -> tuple[ExactVelocity, ExactVelocity]:
-        a, b = self.bar_proper_before
-        return velocity_from_proper_velocity(a), velocity_from_proper_velocity(b)
+        """Each rod's velocity before, seen from the barycentric frame (``V_i`` composed with ``-u``)."""
+        back = self.u.negated()
+        return (
+            compose_velocities(ExactVelocity.from_float(self.before[0]), back),
+            compose_velocities(ExactVelocity.from_float(self.before[1]), back),
+        )
 
     @property
     def bar_after(self) -> tuple[ExactVelocity, ExactVelocity]:
-        a, b = self.bar_proper_after
-        return velocity_from_proper_velocity(a), velocity_from_proper_velocity(b)
-
-
-def _cancelled_sum(a: Decimal, b: Decimal) -> Decimal:
-    """``a + b``, exactly 0 when the sum is below the 60-digit arithmetic's noise (1e-45 of the terms).
-
-    E.g. equal masses, elastic: rod 1 stops dead rather than at 1e-61 c.
-    """
-    total = a + b
-    if abs(total) <= Decimal("1e-45") * (abs(a) + abs(b)):
-        return Decimal(0)
-    return total
+        """Each rod's velocity after, seen from the barycentric frame (``V'_i`` composed with ``-u``)."""
+        back = self.u.negated()
+        return compose_velocities(self.after[0], back), compose_velocities(self.after[1], back)
 
 
 def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> CollisionSolution:
-    """Final velocities of two colliding bodies from the barycentric frame (c = 1).
+    """Final velocities of two colliding bodies from the barycentric frame (c = 1), in double-double.
 
-    With ``g_i = gamma_i``, ``u_i = gamma_i v_i``: ``E = m1 g1 + m2 g2``, ``P = m1 u1 + m2 u2``,
-    invariant mass ``M = sqrt(m1^2 + m2^2 + 2 m1 m2 gamma_rel)``, relative
-    ``sinh = g1 g2 (v1 - v2)``, ``cosh = g1 g2 (1 - v1 v2)``. Barycentric proper velocities
-    ``bar u_1 = m2 sinh / M``, ``bar u_2 = -m1 sinh / M`` (no cancellation), after:
-    ``-eps bar u_i``; back to the lab: ``u_i' = (E bar u_i' + P bar g_i') / M``. 4-momentum
-    is conserved with both rest masses scaled by ``k = M / (m1 bar g_1' + m2 bar g_2')``.
+    With ``c_i = 1/gamma_i = sqrt(1 - v_i^2)`` every quantity is carried times ``c1 c2`` (which
+    cancels in every ratio): ``E = m1 c2 + m2 c1``, ``P = m1 v1 c2 + m2 v2 c1`` and the
+    light-cone components ``P+- = E +- P = m1 (1 +- v1) c2 + m2 (1 +- v2) c1``, the smaller one
+    summed from its positive terms; invariant mass ``M^2 = P+ P-``; the relative proper velocity
+    ``sinh = v1 - v2``. Barycentric velocity ``u = P/E`` (Eq. (26)), ``1 -+ u = P-+/E``.
+
+    Each rod's barycentric proper velocity ``m2 sinh/M`` (rod 1), ``-m1 sinh/M`` (rod 2) becomes
+    ``-eps`` times itself (Eq. (29)): with ``k_1 = eps m2 sinh``, ``k_2 = eps m1 sinh`` and
+    ``R_i = sqrt(M^2 + k_i^2)`` (``M`` times the barycentric gamma after), rod ``i`` leaves the
+    barycentre with ``w_1 = -k_1/R_1``, ``w_2 = k_2/R_2``, and the lab velocity is their
+    composition with ``u`` (Eq. (31)):
+
+    * ``V'_i = (u R_i -+ k_i)/(R_i -+ u k_i)``, where ``u`` and ``w_i`` have the same sign or
+      their rapidities add up to at most 1 (a cancellation here is one of the terms);
+    * else, in light-cone form, ``exp(theta'_1) = P+/(R_1 + k_1)``, ``exp(-theta'_2) = P-/(R_2 + k_2)``,
+      ``V' = (X^2 - Y^2)/(X^2 + Y^2)``, which does not cancel when both are near light.
+
+    Gaps to light speed are ``1 - |V'|`` from the double-double ``V'``, or, within 2**-30 of light,
+    products of those positive factors, e.g. ``1 - V'_1 = (1 - u)(R_1 + k_1)/(R_1 - u k_1)``;
+    either way rounded once from double-double. 4-momentum is conserved with both rest
+    masses scaled by ``k = M / (m1 g'_1 + m2 g'_2)``, ``g'_i = R_i/M``; ``k - 1 = (1 - eps^2)
+    sum_i m_i b_i^2/(g_i + g'_i) / (m1 g'_1 + m2 g'_2)`` (``b_i``, ``g_i``: barycentric proper
+    velocity and gamma before), without cancellation.
+
+    A velocity whose terms cancel to below double-double's noise (``NOISE``, 2**-100 of the
+    terms) is exactly 0: equal masses with V1 = -V2 have the lab as barycentric frame; an
+    elastic hit on an equal rod at rest, or ``eps = M1/M2`` on a heavier one, stops rod 1 dead.
+    ``eps = 0``: both rods move on with ``u`` itself. Speeds below ~1e-292 c, where a low part is
+    subnormal, keep an absolute error of a few 1e-323 instead of a relative one.
     """
-    with decimal_context():
-        d1, d2, dm1, dm2, de = Decimal(v1), Decimal(v2), Decimal(m1), Decimal(m2), Decimal(eps)
-        g1, g2 = lorentz_factor_decimal(d1), lorentz_factor_decimal(d2)
-        u1, u2 = g1 * d1, g2 * d2
-        energy = dm1 * g1 + dm2 * g2
-        momentum = _cancelled_sum(dm1 * u1, dm2 * u2)
-        rel_sinh = g1 * g2 * (d1 - d2)
-        rel_cosh = g1 * g2 * (1 - d1 * d2)
-        mass = (dm1 * dm1 + dm2 * dm2 + 2 * dm1 * dm2 * rel_cosh).sqrt()
-        bar_u = (dm2 * rel_sinh / mass, -dm1 * rel_sinh / mass)
-        bar_u_after = (-de * bar_u[0], -de * bar_u[1])
-        bar_g_after = tuple((1 + b * b).sqrt() for b in bar_u_after)
-        lab_u_after = tuple(_cancelled_sum(energy * b, momentum * g) / mass for b, g in zip(bar_u_after, bar_g_after))
-        denom = dm1 * bar_g_after[0] + dm2 * bar_g_after[1]
-        excess = _cancelled_sum(mass, -denom)  # M - (m1 bar g1' + m2 bar g2') >= 0: no heat below the noise
-        if de == 1 or excess <= 0:  # elastic: bar g' = bar g, so denom = M exactly
-            factor, heat = Decimal(1), Decimal(0)
+    S = SPLITTER
+    sqrt = math.sqrt
+    mass_sum = m1 + m2
+    if not (_MASS_MIN < m1 < _MASS_MAX and _MASS_MIN < m2 < _MASS_MAX):
+        shift = math.frexp(max(m1, m2))[1]
+        m1, m2 = math.ldexp(m1, -shift), math.ldexp(m2, -shift)
+    # ---- c_i = sqrt(1 - v_i^2): 1 - two_prod(v, v), normalised, then sqrt with its residual
+    t = S * v1
+    v1_h = t - (t - v1)
+    v1_t = v1 - v1_h
+    p = v1 * v1
+    d = 1.0 - p
+    d_lo = ((1.0 - d) - p) - (((v1_h * v1_h - p) + 2.0 * v1_h * v1_t) + v1_t * v1_t)
+    t = d + d_lo
+    d_lo -= t - d
+    c1 = sqrt(t)
+    d = S * c1
+    c1_h = d - (d - c1)
+    c1_t = c1 - c1_h
+    p = c1 * c1
+    c1_lo = (((t - p) - (((c1_h * c1_h - p) + 2.0 * c1_h * c1_t) + c1_t * c1_t)) + d_lo) / (c1 + c1)
+    t = S * v2
+    v2_h = t - (t - v2)
+    v2_t = v2 - v2_h
+    p = v2 * v2
+    d = 1.0 - p
+    d_lo = ((1.0 - d) - p) - (((v2_h * v2_h - p) + 2.0 * v2_h * v2_t) + v2_t * v2_t)
+    t = d + d_lo
+    d_lo -= t - d
+    c2 = sqrt(t)
+    d = S * c2
+    c2_h = d - (d - c2)
+    c2_t = c2 - c2_h
+    p = c2 * c2
+    c2_lo = (((t - p) - (((c2_h * c2_h - p) + 2.0 * c2_h * c2_t) + c2_t * c2_t)) + d_lo) / (c2 + c2)
+    # ---- a_1 = m1 c2, a_2 = m2 c1 (two_prod plus the low parts)
+    t = S * m1
+    m1_h = t - (t - m1)
+    m1_t = m1 - m1_h
+    t = S * m2
+    m2_h = t - (t - m2)
+    m2_t = m2 - m2_h
+    a1 = m1 * c2
+    a1_lo = ((m1_h * c2_h - a1) + m1_h * c2_t + m1_t * c2_h) + m1_t * c2_t + m1 * c2_lo
+    a2 = m2 * c1
+    a2_lo = ((m2_h * c1_h - a2) + m2_h * c1_t + m2_t * c1_h) + m2_t * c1_t + m2 * c1_lo
+    # ---- energy E = a1 + a2 (two_sum; like the other intermediate sums of positive terms below,
+    # not renormalised: its low part stays within a few ulp of the high one)
+    en = a1 + a2
+    t = en - a1
+    en_lo = ((a1 - (en - t)) + (a2 - t)) + (a1_lo + a2_lo)
+    # ---- momentum P = v1 a1 + v2 a2; below the noise of its terms: exactly 0
+    t = S * a1
+    a1_h = t - (t - a1)
+    a1_t = a1 - a1_h
+    t = S * a2
+    a2_h = t - (t - a2)
+    a2_t = a2 - a2_h
+    p1 = v1 * a1
+    p1_lo = ((v1_h * a1_h - p1) + v1_h * a1_t + v1_t * a1_h) + v1_t * a1_t + v1 * a1_lo
+    p2 = v2 * a2
+    p2_lo = ((v2_h * a2_h - p2) + v2_h * a2_t + v2_t * a2_h) + v2_t * a2_t + v2 * a2_lo
+    s = p1 + p2
+    t = s - p1
+    e = ((p1 - (s - t)) + (p2 - t)) + (p1_lo + p2_lo)
+    mo = s + e
+    mo_lo = e - (mo - s)
+    t = NOISE * ((p1 if p1 > 0.0 else -p1) + (p2 if p2 > 0.0 else -p2))
+    if -t <= mo <= t:
+        mo = mo_lo = 0.0
+    # ---- light-cone components P+- = E +- P: the larger E + |P| directly; the smaller E - |P| so too
+    # while |P| <= E/2, else from its positive terms sum_i (1 -+ v_i) a_i
+    if mo >= 0.0:
+        big = en + mo
+        e = (mo - (big - en)) + (en_lo + mo_lo)
+        mo_abs, mo_abs_lo = mo, mo_lo
+    else:
+        big = en - mo
+        e = (-mo - (big - en)) + (en_lo - mo_lo)
+        mo_abs, mo_abs_lo = -mo, -mo_lo
+    big_hi, big_lo = big, e
+    if mo_abs + mo_abs <= en:
+        small = en - mo_abs
+        e = ((en - small) - mo_abs) + (en_lo - mo_abs_lo)
+    else:
+        y1, y2 = (1.0 - v1, 1.0 - v2) if mo >= 0.0 else (1.0 + v1, 1.0 + v2)
+        t = S * y1
+        y_h = t - (t - y1)
+        y_t = y1 - y_h
+        q1 = y1 * a1
+        q1_lo = ((y_h * a1_h - q1) + y_h * a1_t + y_t * a1_h) + y_t * a1_t + y1 * a1_lo
+        t = S * y2
+        y_h = t - (t - y2)
+        y_t = y2 - y_h
+        q2 = y2 * a2
+        q2_lo = ((y_h * a2_h - q2) + y_h * a2_t + y_t * a2_h) + y_t * a2_t + y2 * a2_lo
+        if mo >= 0.0:  # the rounding errors of 1 - v_i (zero for v_i >= 1/2)
+            q1_lo += ((1.0 - y1) - v1) * a1
+            q2_lo += ((1.0 - y2) - v2) * a2
         else:
-            factor = mass / denom
-            heat = excess / denom * (dm1 + dm2)
-        # barycentric velocity u = P / E, with 1 - |u| = (E - |P|)/E formed without cancellation
-        e_minus_p = dm1 * g1 * (1 - d1) + dm2 * g2 * (1 - d2)
-        e_plus_p = dm1 * g1 * (1 + d1) + dm2 * g2 * (1 + d2)
-        u = momentum / energy
-        u_gap = (e_minus_p if u >= 0 else e_plus_p) / energy
-        u_hi = float(u)
-        u_exact = ExactVelocity(u_hi, float(u - Decimal(u_hi)), float(u_gap))
-        return CollisionSolution(
-            u=u_exact,
-            bar_proper_before=bar_u,
-            bar_proper_after=bar_u_after,
-            after=(velocity_from_proper_velocity(lab_u_after[0]), velocity_from_proper_velocity(lab_u_after[1])),
-            mass_factor=factor,
-            heat=heat,
+            q1_lo += ((1.0 - y1) + v1) * a1
+            q2_lo += ((1.0 - y2) + v2) * a2
+        small = q1 + q2
+        t = small - q1
+        e = ((q1 - (small - t)) + (q2 - t)) + (q1_lo + q2_lo)
+    if mo >= 0.0:
+        pp, pp_lo, pm, pm_lo = big_hi, big_lo, small, e
+    else:
+        pp, pp_lo, pm, pm_lo = small, e, big_hi, big_lo
+    # ---- M^2 = P+ P- (two_prod plus the low parts)
+    t = S * pp
+    pp_h = t - (t - pp)
+    pp_t = pp - pp_h
+    t = S * pm
+    pm_h = t - (t - pm)
+    pm_t = pm - pm_h
+    mm = pp * pm
+    mm_lo = ((pp_h * pm_h - mm) + pp_h * pm_t + pp_t * pm_h) + pp_t * pm_t + (pp * pm_lo + pp_lo * pm)
+    # ---- u = P / E: q = fl(P/E) plus the exact residual (P - q E)/E
+    uq = mo / en
+    t = S * uq
+    u_h = t - (t - uq)
+    u_t = uq - u_h
+    t = S * en
+    en_h = t - (t - en)
+    en_t = en - en_h
+    p = uq * en
+    uq_lo = (((mo - p) - (((u_h * en_h - p) + u_h * en_t + u_t * en_h) + u_t * en_t)) + mo_lo - uq * en_lo) / en
+    u = uq + uq_lo  # normalised for the barycentric frame; (uq, uq_lo) and its split serve below
+    u_lo = uq_lo - (u - uq)
+    if not mo:
+        bary = REST
+    elif 0.0 <= u < _NEAR_LIGHT:  # 1 - |u| from u itself, rounded once
+        g = 1.0 - u
+        bary = ExactVelocity(u, u_lo, g + (((1.0 - g) - u) - u_lo))
+    elif -_NEAR_LIGHT < u < 0.0:
+        g = 1.0 + u
+        bary = ExactVelocity(u, u_lo, g + (((1.0 - g) + u) + u_lo))
+    else:  # 1 -+ u = P-+/E
+        bary = ExactVelocity(u, u_lo, div((pm, pm_lo) if u > 0.0 else (pp, pp_lo), (en, en_lo))[0])
+    s = v1 - v2
+    if eps == 0.0:  # perfectly inelastic: both move on with the barycentre; k - 1 = sum m_i (g_i - 1) / M
+        mc = sqrt(mm)
+        b1, b2 = m2 * s / mc, m1 * s / mc
+        gain = (m1 * b1 * b1 / (sqrt(1.0 + b1 * b1) + 1.0) + m2 * b2 * b2 / (sqrt(1.0 + b2 * b2) + 1.0)) / (m1 + m2)
+        return CollisionSolution(bary, (bary, bary), gain, gain * mass_sum, (v1, v2))
+    # ---- K = eps (v1 - v2); k_1 = m2 K, k_2 = m1 K: the rods' barycentric proper velocities after, times M
+    t = s - v1
+    s_lo = (v1 - (s - t)) - (v2 + t)
+    if eps == 1.0:
+        kk, kk_lo = s, s_lo
+    else:
+        t = S * eps
+        ep_h = t - (t - eps)
+        ep_t = eps - ep_h
+        t = S * s
+        s_h = t - (t - s)
+        s_t = s - s_h
+        kk = eps * s
+        kk_lo = ((ep_h * s_h - kk) + ep_h * s_t + ep_t * s_h) + ep_t * s_t + eps * s_lo
+    t = S * kk
+    kk_h = t - (t - kk)
+    kk_t = kk - kk_h
+    after = [REST, REST]
+    radii = [0.0, 0.0]
+    # rod 1 (sign -1) leaves the barycentre with w_1 = -k_1/R_1, rod 2 (sign +1) with w_2 = k_2/R_2
+    for i, m, m_h, m_t, sign in ((0, m2, m2_h, m2_t, -1.0), (1, m1, m1_h, m1_t, 1.0)):
+        k = m * kk
+        k_lo = ((m_h * kk_h - k) + m_h * kk_t + m_t * kk_h) + m_t * kk_t + m * kk_lo
+        t = S * k
+        k_h = t - (t - k)
+        k_t = k - k_h
+        # R^2 = M^2 + k^2, then R = sqrt(R^2) with its residual
+        p = k * k
+        e = ((k_h * k_h - p) + 2.0 * k_h * k_t) + k_t * k_t + 2.0 * k * k_lo
+        r2 = mm + p
+        t = r2 - mm
+        r2_lo = ((mm - (r2 - t)) + (p - t)) + (mm_lo + e)
+        r = radii[i] = sqrt(r2)
+        t = S * r
+        r_h = t - (t - r)
+        r_t = r - r_h
+        p = r * r
+        r_lo = (((r2 - p) - (((r_h * r_h - p) + 2.0 * r_h * r_t) + r_t * r_t)) + r2_lo) / (r + r)
+        if sign * u < 0.0:  # u and w_i of opposite signs: tanh(|U| + |theta'|) = (|u| + |w|)/(1 + |u w|)
+            w = k / r
+            light_cone = (u if u > 0.0 else -u) + w > _TANH_ONE * (1.0 - sign * u * w)
+        else:
+            light_cone = False
+        if light_cone:
+            # V' = (X^2 - Y^2)/(X^2 + Y^2) with X/Y = P+/(R + k) (rod 1), (R + k)/P- (rod 2)
+            ur = 0.0
+            qq = r + k
+            qq_lo = (k - (qq - r)) + (r_lo + k_lo)
+            t = S * qq
+            qq_h = t - (t - qq)
+            qq_t = qq - qq_h
+            sq = qq * qq
+            sq_lo = ((qq_h * qq_h - sq) + 2.0 * qq_h * qq_t) + qq_t * qq_t + 2.0 * qq * qq_lo
+            if sign < 0.0:
+                x2 = pp * pp
+                x2_lo = ((pp_h * pp_h - x2) + 2.0 * pp_h * pp_t) + pp_t * pp_t + 2.0 * pp * pp_lo
+                y2, y2_lo = sq, sq_lo
+            else:
+                x2, x2_lo = sq, sq_lo
+                y2 = pm * pm
+                y2_lo = ((pm_h * pm_h - y2) + 2.0 * pm_h * pm_t) + pm_t * pm_t + 2.0 * pm * pm_lo
+            n = x2 - y2
+            t = n - x2
+            e = ((x2 - (n - t)) - (y2 + t)) + (x2_lo - y2_lo)
+            dn = x2 + y2
+            t = dn - x2
+            dn_lo = ((x2 - (dn - t)) + (y2 - t)) + (x2_lo + y2_lo)
+            bound = NOISE * dn
+            squares = (x2, x2_lo, y2, y2_lo)
+        else:
+            # composition: V' = (u R + sign k)/(R + sign u k)
+            ur = uq * r
+            ur_lo = ((u_h * r_h - ur) + u_h * r_t + u_t * r_h) + u_t * r_t + (uq * r_lo + uq_lo * r)
+            uk = uq * k
+            uk_lo = ((u_h * k_h - uk) + u_h * k_t + u_t * k_h) + u_t * k_t + (uq * k_lo + uq_lo * k)
+            bound = NOISE * (r + k)  # above the noise of the terms |u R| + |k|
+            if sign < 0.0:
+                k, k_lo, uk, uk_lo = -k, -k_lo, -uk, -uk_lo
+            n = ur + k
+            t = n - ur
+            e = ((ur - (n - t)) + (k - t)) + (ur_lo + k_lo)
+            dn = r + uk  # |u k| < R
+            dn_lo = (uk - (dn - r)) + (r_lo + uk_lo)
+            squares = None
+        t_ = n + e  # normalised numerator: below the noise of its terms, V' = 0 exactly
+        e -= t_ - n
+        n = t_
+        if -bound <= n <= bound:
+            if not light_cone:  # the bound was coarse there: the terms are |u R| + |k|
+                bound = NOISE * (abs(ur) + abs(k))
+            if -bound <= n <= bound:
+                continue
+        # V' = n / dn: q = fl(n / dn) plus the exact residual
+        q = n / dn
+        t = S * q
+        q_h = t - (t - q)
+        q_t = q - q_h
+        t = S * dn
+        d = t - (t - dn)
+        t = dn - d
+        p = q * dn
+        v_lo = (((n - p) - (((q_h * d - p) + q_h * t + q_t * d) + q_t * t)) + e - q * dn_lo) / dn
+        v = q + v_lo
+        v_lo -= v - q
+        if 0.0 <= v < _NEAR_LIGHT:  # 1 - |V'| from V' itself, rounded once
+            g = 1.0 - v
+            gap = g + (((1.0 - g) - v) - v_lo)
+        elif -_NEAR_LIGHT < v < 0.0:
+            g = 1.0 + v
+            gap = g + (((1.0 - g) + v) + v_lo)
+        elif squares is not None:  # 1 - V' = 2 Y^2/(X^2 + Y^2), 1 + V' = 2 X^2/(X^2 + Y^2)
+            x2, x2_lo, y2, y2_lo = squares
+            gap = 2.0 * div((y2, y2_lo) if v > 0.0 else (x2, x2_lo), (dn, dn_lo))[0]
+        else:
+            # 1 - V' = (1 - u)(1 - w)/(1 + u w) and 1 + V' = (1 + u)(1 + w)/(1 + u w), with
+            # 1 -+ u = P-+/E, 1 - w_1 = 1 + w_2 = Q/R, 1 + w_1 = 1 - w_2 = M^2/(R Q), 1 + u w = D/R,
+            # Q = R + |k|: products of positive factors, in double-double (this is rare)
+            q_dd = add((r, r_lo), (k, k_lo) if k > 0.0 else (-k, -k_lo))
+            one_minus_u = (pm, pm_lo) if v > 0.0 else (pp, pp_lo)
+            if (v > 0.0) == (sign < 0.0):
+                gap = div(mul(one_minus_u, q_dd), mul((en, en_lo), (dn, dn_lo)))[0]
+            else:
+                gap = div(mul(one_minus_u, (mm, mm_lo)), mul(mul((en, en_lo), q_dd), (dn, dn_lo)))[0]
+        after[i] = ExactVelocity(v, v_lo, gap)
+    if eps == 1.0:
+        gain = 0.0
+    else:  # k - 1 = (1 - eps^2) sum_i m_i b_i^2/(g_i + g'_i) / (m1 g'_1 + m2 g'_2)
+        inv_m = 1.0 / sqrt(mm)
+        b1, b2 = m2 * s * inv_m, m1 * s * inv_m
+        g1, g2 = radii[0] * inv_m, radii[1] * inv_m
+        gain = (
+            (1.0 - eps)
+            * (1.0 + eps)
+            * (m1 * b1 * b1 / (sqrt(1.0 + b1 * b1) + g1) + m2 * b2 * b2 / (sqrt(1.0 + b2 * b2) + g2))
+            / (m1 * g1 + m2 * g2)
         )
+    return CollisionSolution(bary, (after[0], after[1]), gain, gain * mass_sum, (v1, v2))
+
+
+#: The far ends' switches (Eqs. (22)-(25)); the same in every collision.
+_EVENTS = (
+    EventSpec("T_1", 0, 0, "start"),
+    EventSpec("T_1'", 0, 0, "stop"),
+    EventSpec("T_2", 1, 1, "start"),
+    EventSpec("T_2'", 1, 1, "stop"),
+)
 
 
 def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float) -> Scene:
@@ -130,11 +442,9 @@ def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: flo
     l2 = L2.check(l2)
     eps = EPS.check(eps)
     sol = solve_collision(v1, v2, m1, m2, eps)
-    k = sol.mass_factor
-    with decimal_context():
-        m1_after, m2_after = float(Decimal(m1) * k), float(Decimal(m2) * k)
-    rod1 = rigid_motion(ExactVelocity.from_float(v1), sol.after[0], l1, Decimal(0), -l1)
-    rod2 = rigid_motion(ExactVelocity.from_float(v2), sol.after[1], l2, Decimal(0), 0.0)
+    m1_after, m2_after = m1 + m1 * sol.mass_gain, m2 + m2 * sol.mass_gain
+    rod1 = rigid_motion(ExactVelocity.from_float(v1), sol.after[0], l1, IMPULSE, -l1)
+    rod2 = rigid_motion(ExactVelocity.from_float(v2), sol.after[1], l2, IMPULSE, 0.0)
     frames = MappingProxyType(
         {
             "lab": LAB,
@@ -145,21 +455,15 @@ def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: flo
             "barycentric": Frame(sol.u, "barycentric"),
         }
     )
-    specs = (
-        EventSpec("T_1", 0, 0, "start"),
-        EventSpec("T_1'", 0, 0, "stop"),
-        EventSpec("T_2", 1, 1, "start"),
-        EventSpec("T_2'", 1, 1, "stop"),
-    )
     return checked_scene(
         Scene(
             kind=ROD_COLLISION.kind,
             parameters=MappingProxyType({"v1": v1, "v2": v2, "m1": m1, "m2": m2, "l1": l1, "l2": l2, "eps": eps}),
             rods=(Rod("rod 1", rod1, m1, m1_after), Rod("rod 2", rod2, m2, m2_after)),
-            event_specs=specs,
+            event_specs=_EVENTS,
             frames=frames,
             external_source="none",
-            heat=float(sol.heat),
+            heat=sol.heat,
             origin_event=OriginEvent.CONTACT,
         )
     )

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
-from decimal import Decimal
 from types import MappingProxyType
 
-from .._build import LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, rigid_motion, single_rod_frames
+from .._build import IMPULSE, LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, rigid_motion, single_rod_frames
 from .._description import EventDescription, OriginEvent, SceneDescription
 from .._exact import REST, ExactVelocity
 from .._scene import EventSpec, Rod, Scene
+
+#: The front end reaching V (Eq. (21)); the same in every scene.
+_EVENTS = (EventSpec("T_F", 0, 1, "stop"),)
 
 
 def impulsive_start(v: float, length: float, mass: float = 1.0) -> Scene:
@@ -21,13 +23,13 @@ def impulsive_start(v: float, length: float, mass: float = 1.0) -> Scene:
     v = V.check(v)
     length = LENGTH.check(length)
     mass = MASS.check(mass)
-    motion = rigid_motion(REST, ExactVelocity.from_float(v), length, Decimal(0), 0.0)
+    motion = rigid_motion(REST, ExactVelocity.from_float(v), length, IMPULSE, 0.0)
     return checked_scene(
         Scene(
             kind=IMPULSIVE_START.kind,
             parameters=MappingProxyType({"v": v, "length": length, "mass": mass}),
             rods=(Rod("rod", motion, mass, mass),),
-            event_specs=(EventSpec("T_F", 0, 1, "stop"),),
+            event_specs=_EVENTS,
             frames=single_rod_frames(motion),
             external_source="drive",
             heat=0.0,

@@ -2,23 +2,42 @@
 
 from __future__ import annotations
 
-from decimal import Decimal
 from types import MappingProxyType
 
-from .._build import (
-    EPS,
-    LENGTH,
-    MASS,
-    SINGLE_ROD_FRAMES,
-    V,
-    checked_scene,
-    decimal_context,
-    rigid_motion,
-    single_rod_frames,
-)
+from .. import _dd
+from .._build import EPS, IMPULSE, LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, rigid_motion, single_rod_frames
 from .._description import EventDescription, ObstacleKind, OriginEvent, SceneDescription, ScenePreset
-from .._exact import REST, ExactVelocity, lorentz_factor_decimal, velocity_from_proper_velocity
+from .._exact import REST, ExactVelocity
 from .._scene import EventSpec, Obstacle, Rod, Scene
+
+#: The far end's switches (Eqs. (22)-(24)) and the wall at rest at x = 0; the same in every scene.
+_EVENTS = (EventSpec("T_1", 0, 1, "start"), EventSpec("T_1'", 0, 1, "stop"))
+_OBSTACLES = (Obstacle("wall", ObstacleKind.WALL, 0.0, REST),)
+
+
+def bounce(v: float, eps: float, mass: float) -> tuple[ExactVelocity, float]:
+    """Velocity after the bounce and the heat (c = 1): the proper velocity ``gamma v`` becomes
+    ``eps gamma v`` (Sec. 5; Eq. (29) with the wall as an infinitely heavy partner).
+
+    In double-double: ``v' = eps v / d`` with ``d = sqrt(1 - v^2 + eps^2 v^2)``, its gap
+    ``1 - v' = (1 - v^2) / (d (d + eps v))``, and the heat ``M (gamma - gamma') =
+    M (1 - eps^2) v^2 / (c (1 + d))`` with ``c = sqrt(1 - v^2)``: sums of positive terms only,
+    each rounded once. ``eps = 1`` returns ``v`` itself and no heat, ``eps = 0`` rest, exactly.
+    """
+    if eps == 1.0:
+        return ExactVelocity.from_float(v), 0.0
+    v2 = _dd.two_prod(v, v)
+    one_minus_v2 = _dd.add_float((-v2[0], -v2[1]), 1.0)  # 1 - v^2
+    eps_v = _dd.two_prod(eps, v)
+    d = _dd.sqrt(_dd.add(one_minus_v2, _dd.mul(eps_v, eps_v)))
+    e2 = _dd.two_prod(eps, eps)
+    lost = _dd.mul(_dd.add_float((-e2[0], -e2[1]), 1.0), v2)  # (1 - eps^2) v^2
+    heat = _dd.div(_dd.mul_float(lost, mass), _dd.mul(_dd.sqrt(one_minus_v2), _dd.add_float(d, 1.0)))[0]
+    if eps == 0.0:
+        return REST, heat
+    hi, lo = _dd.div(eps_v, d)
+    gap = _dd.div(one_minus_v2, _dd.mul(d, _dd.add(d, eps_v)))[0]
+    return ExactVelocity(hi, lo, gap), heat
 
 
 def wall_collision(v: float, length: float, eps: float, mass: float = 1.0) -> Scene:
@@ -36,25 +55,19 @@ def wall_collision(v: float, length: float, eps: float, mass: float = 1.0) -> Sc
     length = LENGTH.check(length)
     eps = EPS.check(eps)
     mass = MASS.check(mass)
-    with decimal_context():
-        dv = Decimal(v)
-        gamma = lorentz_factor_decimal(dv)
-        u_after = Decimal(eps) * gamma * dv
-        v_after = velocity_from_proper_velocity(u_after)
-        heat = Decimal(mass) * (gamma - (1 + u_after * u_after).sqrt())
-    motion = rigid_motion(ExactVelocity.from_float(-v), v_after, length, Decimal(0), 0.0)
-    specs = (EventSpec("T_1", 0, 1, "start"), EventSpec("T_1'", 0, 1, "stop"))
+    v_after, heat = bounce(v, eps, mass)
+    motion = rigid_motion(ExactVelocity.from_float(-v), v_after, length, IMPULSE, 0.0)
     return checked_scene(
         Scene(
             kind=WALL_COLLISION.kind,
             parameters=MappingProxyType({"v": v, "length": length, "eps": eps, "mass": mass}),
             rods=(Rod("rod", motion, mass, mass),),
-            event_specs=specs,
+            event_specs=_EVENTS,
             frames=single_rod_frames(motion),
             external_source="wall",
-            heat=float(heat),
+            heat=heat,
             origin_event=OriginEvent.CONTACT,
-            obstacles=(Obstacle("wall", ObstacleKind.WALL, 0.0, REST),),
+            obstacles=_OBSTACLES,
         )
     )
 

@@ -57,7 +57,7 @@ class BenchScene:
         return dict(self.parameters)
 
     def core(self) -> rr.Scene:
-        """The core's scene (solved in 60-digit decimal, sampled in float64), built afresh each call."""
+        """The core's scene (solved in double-double, sampled in float64), built afresh each call."""
         return rr.build_scene(self.kind, **self.params)
 
 

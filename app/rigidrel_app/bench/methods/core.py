@@ -1,6 +1,6 @@
 """Method 1: rigidrel's closed form (the core).
 
-The scene is solved once in 60-digit decimal (final velocities as double-double), then
+The scene is solved once in double-double arithmetic (final velocities as double-double), then
 every end is sampled in the frame from Lorentz-covariant closed forms (hyperbola pieces
 ``x' = x'_h + sign t'(t' - 2 t'_C)/(sqrt(rho^2 + (t' - t'_C)^2) + q_0)`` and their tangents,
 see ``rigidrel_core/_motion.py``): no boost of lab coordinates, no root finding.
