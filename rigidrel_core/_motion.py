@@ -46,6 +46,8 @@ from typing import Literal, NamedTuple
 import numpy as np
 import numpy.typing as npt
 
+from . import _dd as dd
+from ._dd import DD, two_prod, two_sum
 from ._exact import BELOW_ONE, ExactVelocity, relative_rapidity
 from ._frame import Frame
 from ._validate import non_decreasing
@@ -252,10 +254,10 @@ def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum]) -> LabRow:
     elif f == 1.0:
         along, along_lo = m.length, 0.0
     else:
-        along, along_lo = _two_prod(f, m.length)
-    rho, rho_lo = _two_sum(m.radius_left, sig * along)
+        along, along_lo = two_prod(f, m.length)
+    rho, rho_lo = two_sum(m.radius_left, sig * along)
     rho_lo += sig * along_lo
-    x_lab, x_lo = _two_sum(m.vertex_left, along)
+    x_lab, x_lo = two_sum(m.vertex_left, along)
     x_lo += along_lo
     if rho < 0.0:  # a point beyond the centre cannot be (radii are >= 0); only rounding gets here
         rho, rho_lo = 0.0, 0.0
@@ -266,62 +268,26 @@ def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum]) -> LabRow:
             anchor, anchor_lo, hi, lo = xc, 0.0, f_hi, f_lo
         else:
             anchor, anchor_lo, hi, lo = x_lab, x_lo, g_hi, g_lo
-        p, pe = _two_prod(srho, hi)
-        s, se = _two_sum(anchor, p)
-        s, e = _two_sum(s, se + (pe + (srho * lo + srho_lo * hi) + anchor_lo))
+        p, pe = two_prod(srho, hi)
+        s, se = two_sum(anchor, p)
+        s, e = two_sum(s, se + (pe + (srho * lo + srho_lo * hi) + anchor_lo))
         highs.append(s)
         lows.append(e)
     return LabRow(rho, x_lab, *highs, low=tuple(lows))  # type: ignore[arg-type]
 
 
-_SPLITTER = 134217729.0  # 2^27 + 1 (Veltkamp)
-
-
-def _two_sum(a: float, b: float) -> tuple[float, float]:
-    """``a + b`` as ``(s, e)`` with ``s + e`` exact (Knuth)."""
-    s = a + b
-    bb = s - a
-    return s, (a - (s - bb)) + (b - bb)
-
-
-def _two_prod(a: float, b: float) -> tuple[float, float]:
-    """``a * b`` as ``(p, e)`` with ``p + e`` exact (Dekker; no fma in Python 3.11)."""
-    p = a * b
-    c = _SPLITTER * a
-    ah = c - (c - a)
-    al = a - ah
-    c = _SPLITTER * b
-    bh = c - (c - b)
-    bl = b - bh
-    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
-
-
-def _one_plus_dd(sign: float, v: ExactVelocity) -> tuple[float, float]:
+def _one_plus_dd(sign: float, v: ExactVelocity) -> DD:
     """``1 + sign v`` to double-double from the velocity's parts."""
-    s, e = _two_sum(1.0, sign * v.hi)
-    return _two_sum(s, e + sign * v.lo)
+    s, e = two_sum(1.0, sign * v.hi)
+    return two_sum(s, e + sign * v.lo)
 
 
-def _sqrt_dd(q1: float, q2: float) -> tuple[float, float]:
-    """``sqrt(q1 + q2)`` to double-double (one Newton step from the float root)."""
-    r = math.sqrt(q1)
-    p, pe = _two_prod(r, r)
-    return _two_sum(r, (((q1 - p) - pe) + q2) / (2.0 * r))
-
-
-def _factor_dd(v: ExactVelocity, sign: float) -> tuple[float, float]:
+def _factor_dd(v: ExactVelocity, sign: float) -> DD:
     """To double-double: ``1/gamma = sqrt((1 - v)(1 + v))`` for ``sign = 0``, else
     ``exp(sign theta) = sqrt((1 + sign v)/(1 - sign v))`` (``theta = atanh v``)."""
     if sign == 0.0:
-        a1, a2 = _one_plus_dd(1.0, v)
-        b1, b2 = _one_plus_dd(-1.0, v)
-        p, pe = _two_prod(a1, b1)
-        return _sqrt_dd(*_two_sum(p, pe + a1 * b2 + a2 * b1))
-    a1, a2 = _one_plus_dd(sign, v)
-    b1, b2 = _one_plus_dd(-sign, v)
-    q1 = a1 / b1
-    p, pe = _two_prod(q1, b1)
-    return _sqrt_dd(*_two_sum(q1, (((a1 - p) - pe) + a2 - q1 * b2) / b1))
+        return dd.sqrt(dd.mul(_one_plus_dd(1.0, v), _one_plus_dd(-1.0, v)))
+    return dd.sqrt(dd.div(_one_plus_dd(sign, v), _one_plus_dd(-sign, v)))
 
 
 _AnchorSum = tuple[float, float, float, float, float, float]
@@ -335,8 +301,8 @@ def _two_anchor_sums(v: ExactVelocity, sign: float) -> _AnchorSum:
     the centre) or ``x_V + sign rho (F - 1)`` (from the vertex).
     """
     f_hi, f_lo = _factor_dd(v, sign)
-    g_hi, g_lo = _two_sum(f_hi, -1.0)
-    g_hi, g_lo = _two_sum(g_hi, g_lo + f_lo)
+    g_hi, g_lo = two_sum(f_hi, -1.0)
+    g_hi, g_lo = two_sum(g_hi, g_lo + f_lo)
     return f_hi, f_lo, g_hi, g_lo, abs(f_hi), abs(g_hi)
 
 
