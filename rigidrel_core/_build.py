@@ -9,7 +9,7 @@ from types import MappingProxyType
 from typing import Literal
 
 from . import _dd
-from ._dd import DD
+from ._dd import DD, SPLITTER
 from ._description import SPEED, UNIT_CLOSED, Interval, Parameter, Slider
 from ._exact import ExactVelocity
 from ._frame import LAB, Frame
@@ -86,23 +86,22 @@ def rigid_motion(
     if rho_near == IMPULSE:  # single float operations, each correctly rounded
         horizon, r_left, r_right = (vertex_left, 0.0, length) if sign == 1 else (vertex_left + length, length, 0.0)
         return RigidMotion(length, sign, horizon, r_left, r_right, vertex_left, v_initial, v_final)
-    far = _dd.add_float(rho_near, length)
-    if sign == 1:
-        horizon = _dd.add_float((-rho_near[0], -rho_near[1]), vertex_left)[0]
-        r_left, r_right = rho_near[0], far[0]
-    else:
-        horizon = _dd.add_float(far, vertex_left)[0]
-        r_left, r_right = far[0], rho_near[0]
-    return RigidMotion(
-        length=length,
-        sign=sign,
-        horizon_x=horizon,
-        radius_left=r_left,
-        radius_right=r_right,
-        vertex_left=vertex_left,
-        velocity_initial=v_initial,
-        velocity_final=v_final,
-    )
+    # two_sum written out (this runs on every slider change): far = rho_near + length
+    rho, rho_lo = rho_near
+    far = rho + length
+    t = far - rho
+    far_lo = ((rho - (far - t)) + (length - t)) + rho_lo
+    if sign == 1:  # horizon = vertex_left - rho_near
+        h = vertex_left - rho
+        t = h - vertex_left
+        horizon = h + (((vertex_left - (h - t)) - (rho + t)) - rho_lo)
+        r_left, r_right = rho, far + far_lo
+    else:  # horizon = vertex_left + far
+        h = vertex_left + far
+        t = h - vertex_left
+        horizon = h + (((vertex_left - (h - t)) + (far - t)) + far_lo)
+        r_left, r_right = far + far_lo, rho
+    return RigidMotion(length, sign, horizon, r_left, r_right, vertex_left, v_initial, v_final)
 
 
 #: ``a'_F L0`` of a constant acceleration: 1 would be the impulsive limit (a scene of its own).
@@ -122,9 +121,25 @@ def near_radius(a_front: float, length: float, allowed: Interval = BELOW_HORIZON
         aL = (aL[0] * 2.0**600, aL[1] * 2.0**600)
         rho = _dd.div(_dd.add_float((-aL[0], -aL[1]), 1.0), (a, 0.0))
         rho = (rho[0] * 2.0**-600, rho[1] * 2.0**-600)
-    else:
-        aL = _dd.two_prod(a_front, length)
-        rho = _dd.div(_dd.add_float((-aL[0], -aL[1]), 1.0), (a_front, 0.0))
+    else:  # two_prod, 1 - aL and the division by a, written out (every slider change runs this)
+        p = a_front * length
+        t = SPLITTER * a_front
+        a_h = t - (t - a_front)
+        a_t = a_front - a_h
+        t = SPLITTER * length
+        l_h = t - (t - length)
+        l_t = length - l_h
+        e = ((a_h * l_h - p) + a_h * l_t + a_t * l_h) + a_t * l_t
+        aL = (p, e)
+        s = 1.0 - p
+        t = s - 1.0
+        s_lo = ((1.0 - (s - t)) - (p + t)) - e  # 1 - aL = s + s_lo
+        q = s / a_front
+        t = SPLITTER * q
+        q_h = t - (t - q)
+        p = q * a_front
+        q_lo = ((s - p) - (((q_h * a_h - p) + q_h * a_t + (q - q_h) * a_h) + (q - q_h) * a_t) + s_lo) / a_front
+        rho = (q + q_lo, q_lo - ((q + q_lo) - q))
     # positive, as both factors are; below 1, or (the impulsive limit, where allowed) exactly 1
     if not (aL[0] < 1.0 or (aL[0] == 1.0 and (aL[1] < 0.0 or (allowed.hi_closed and aL[1] == 0.0)))):
         raise ParameterError("a_front * length", f"a finite number {allowed.text()}", aL[0])

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 
 from .._build import EPS, IMPULSE, SIZE, checked_scene, rigid_motion
-from .._dd import NOISE, SPLITTER, add, div, mul
+from .._dd import DD, NOISE, SPLITTER, add, div, mul
 from .._description import (
     VELOCITY,
     EventDescription,
@@ -32,7 +32,7 @@ from .._validate import ParameterError
 _MASS_MIN, _MASS_MAX = 2.0**-200, 2.0**200
 #: Below this speed ``1 - |v|`` is taken from the double-double ``v`` itself (its error, ~1e-31,
 #: is below 2**-70 of the gap, so the gap is correctly rounded); nearer light, where ``1 - v``
-#: would cancel, from double-double products of positive factors, rounded once.
+#: would cancel, from double-double light-cone components (positive terms), rounded once.
 _NEAR_LIGHT = 1.0 - 2.0**-30
 #: ``tanh(1)``: composing rapidities ``U`` and ``theta'`` of opposite signs with ``|U| + |theta'| > 1``
 #: goes through light-cone components (see :func:`solve_collision`).
@@ -94,6 +94,20 @@ class CollisionSolution:
         return compose_velocities(self.after[0], back), compose_velocities(self.after[1], back)
 
 
+def _light_cone(x: DD, y: DD) -> tuple[DD, DD]:
+    """Numerator and denominator of ``V' = (X^2 - Y^2)/(X^2 + Y^2)``, ``X/Y = exp(theta')``, in
+    double-double: the composition's form when ``u`` and ``w`` are near light in opposite directions."""
+    x2, y2 = mul(x, x), mul(y, y)
+    return add(x2, (-y2[0], -y2[1])), add(x2, y2)
+
+
+def _gap_near_light(v: float, x: DD, y: DD) -> float:
+    """``1 - |V'|`` within 2**-30 of light from ``X/Y = exp(theta')``: ``2 Y^2/(X^2 + Y^2)`` for
+    ``V' > 0``, ``2 X^2/(X^2 + Y^2)`` otherwise (positive terms), rounded once."""
+    x2, y2 = mul(x, x), mul(y, y)
+    return 2.0 * div(y2 if v > 0.0 else x2, add(x2, y2))[0]
+
+
 def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> CollisionSolution:
     """Final velocities of two colliding bodies from the barycentric frame (c = 1), in double-double.
 
@@ -115,8 +129,8 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
       ``V' = (X^2 - Y^2)/(X^2 + Y^2)``, which does not cancel when both are near light.
 
     Gaps to light speed are ``1 - |V'|`` from the double-double ``V'``, or, within 2**-30 of light,
-    products of those positive factors, e.g. ``1 - V'_1 = (1 - u)(R_1 + k_1)/(R_1 - u k_1)``;
-    either way rounded once from double-double. 4-momentum is conserved with both rest
+    ``2 Y^2/(X^2 + Y^2)`` (``V' > 0``; else ``2 X^2/(X^2 + Y^2)``) from those positive ``X`` and
+    ``Y``; either way rounded once from double-double. 4-momentum is conserved with both rest
     masses scaled by ``k = M / (m1 g'_1 + m2 g'_2)``, ``g'_i = R_i/M``; ``k - 1 = (1 - eps^2)
     sum_i m_i b_i^2/(g_i + g'_i) / (m1 g'_1 + m2 g'_2)`` (``b_i``, ``g_i``: barycentric proper
     velocity and gamma before), without cancellation.
@@ -194,8 +208,8 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     e = ((p1 - (s - t)) + (p2 - t)) + (p1_lo + p2_lo)
     mo = s + e
     mo_lo = e - (mo - s)
-    t = NOISE * ((p1 if p1 > 0.0 else -p1) + (p2 if p2 > 0.0 else -p2))
-    if -t <= mo <= t:
+    t = NOISE * en  # above the noise of |p1| + |p2| (< E, as |v_i| < 1): then check against those
+    if -t <= mo <= t and -NOISE * (abs(p1) + abs(p2)) <= mo <= NOISE * (abs(p1) + abs(p2)):
         mo = mo_lo = 0.0
     # ---- light-cone components P+- = E +- P: the larger E + |P| directly; the smaller E - |P| so too
     # while |P| <= E/2, else from its positive terms sum_i (1 -+ v_i) a_i
@@ -290,82 +304,46 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     t = S * kk
     kk_h = t - (t - kk)
     kk_t = kk - kk_h
-    after = [REST, REST]
-    radii = [0.0, 0.0]
-    # rod 1 (sign -1) leaves the barycentre with w_1 = -k_1/R_1, rod 2 (sign +1) with w_2 = k_2/R_2
-    for i, m, m_h, m_t, sign in ((0, m2, m2_h, m2_t, -1.0), (1, m1, m1_h, m1_t, 1.0)):
-        k = m * kk
-        k_lo = ((m_h * kk_h - k) + m_h * kk_t + m_t * kk_h) + m_t * kk_t + m * kk_lo
-        t = S * k
-        k_h = t - (t - k)
-        k_t = k - k_h
-        # R^2 = M^2 + k^2, then R = sqrt(R^2) with its residual
-        p = k * k
-        e = ((k_h * k_h - p) + 2.0 * k_h * k_t) + k_t * k_t + 2.0 * k * k_lo
-        r2 = mm + p
-        t = r2 - mm
-        r2_lo = ((mm - (r2 - t)) + (p - t)) + (mm_lo + e)
-        r = radii[i] = sqrt(r2)
-        t = S * r
-        r_h = t - (t - r)
-        r_t = r - r_h
-        p = r * r
-        r_lo = (((r2 - p) - (((r_h * r_h - p) + 2.0 * r_h * r_t) + r_t * r_t)) + r2_lo) / (r + r)
-        if sign * u < 0.0:  # u and w_i of opposite signs: tanh(|U| + |theta'|) = (|u| + |w|)/(1 + |u w|)
-            w = k / r
-            light_cone = (u if u > 0.0 else -u) + w > _TANH_ONE * (1.0 - sign * u * w)
-        else:
-            light_cone = False
-        if light_cone:
-            # V' = (X^2 - Y^2)/(X^2 + Y^2) with X/Y = P+/(R + k) (rod 1), (R + k)/P- (rod 2)
-            ur = 0.0
-            qq = r + k
-            qq_lo = (k - (qq - r)) + (r_lo + k_lo)
-            t = S * qq
-            qq_h = t - (t - qq)
-            qq_t = qq - qq_h
-            sq = qq * qq
-            sq_lo = ((qq_h * qq_h - sq) + 2.0 * qq_h * qq_t) + qq_t * qq_t + 2.0 * qq * qq_lo
-            if sign < 0.0:
-                x2 = pp * pp
-                x2_lo = ((pp_h * pp_h - x2) + 2.0 * pp_h * pp_t) + pp_t * pp_t + 2.0 * pp * pp_lo
-                y2, y2_lo = sq, sq_lo
-            else:
-                x2, x2_lo = sq, sq_lo
-                y2 = pm * pm
-                y2_lo = ((pm_h * pm_h - y2) + 2.0 * pm_h * pm_t) + pm_t * pm_t + 2.0 * pm * pm_lo
-            n = x2 - y2
-            t = n - x2
-            e = ((x2 - (n - t)) - (y2 + t)) + (x2_lo - y2_lo)
-            dn = x2 + y2
-            t = dn - x2
-            dn_lo = ((x2 - (dn - t)) + (y2 - t)) + (x2_lo + y2_lo)
-            bound = NOISE * dn
-            squares = (x2, x2_lo, y2, y2_lo)
-        else:
-            # composition: V' = (u R + sign k)/(R + sign u k)
-            ur = uq * r
-            ur_lo = ((u_h * r_h - ur) + u_h * r_t + u_t * r_h) + u_t * r_t + (uq * r_lo + uq_lo * r)
-            uk = uq * k
-            uk_lo = ((u_h * k_h - uk) + u_h * k_t + u_t * k_h) + u_t * k_t + (uq * k_lo + uq_lo * k)
-            bound = NOISE * (r + k)  # above the noise of the terms |u R| + |k|
-            if sign < 0.0:
-                k, k_lo, uk, uk_lo = -k, -k_lo, -uk, -uk_lo
-            n = ur + k
-            t = n - ur
-            e = ((ur - (n - t)) + (k - t)) + (ur_lo + k_lo)
-            dn = r + uk  # |u k| < R
-            dn_lo = (uk - (dn - r)) + (r_lo + uk_lo)
-            squares = None
-        t_ = n + e  # normalised numerator: below the noise of its terms, V' = 0 exactly
-        e -= t_ - n
-        n = t_
-        if -bound <= n <= bound:
-            if not light_cone:  # the bound was coarse there: the terms are |u R| + |k|
-                bound = NOISE * (abs(ur) + abs(k))
-            if -bound <= n <= bound:
-                continue
-        # V' = n / dn: q = fl(n / dn) plus the exact residual
+    # The two rods, written out one after the other (a loop would pay for its signs and tuples).
+
+    # ---- rod 1 leaves the barycentre with w_1 = -k_1/R_1: k_1 = m2 K, R_1 = sqrt(M^2 + k_1^2)
+    k = m2 * kk
+    k_lo = ((m2_h * kk_h - k) + m2_h * kk_t + m2_t * kk_h) + m2_t * kk_t + m2 * kk_lo
+    t = S * k
+    k_h = t - (t - k)
+    k_t = k - k_h
+    p = k * k
+    e = ((k_h * k_h - p) + 2.0 * k_h * k_t) + k_t * k_t + 2.0 * k * k_lo
+    r2 = mm + p
+    t = r2 - mm
+    r2_lo = ((mm - (r2 - t)) + (p - t)) + (mm_lo + e)
+    r = r_1 = sqrt(r2)
+    t = S * r
+    r_h = t - (t - r)
+    r_t = r - r_h
+    p = r * r
+    r_lo = (((r2 - p) - (((r_h * r_h - p) + 2.0 * r_h * r_t) + r_t * r_t)) + r2_lo) / (r + r)
+    if u > 0.0 and u + (w := k / r) > _TANH_ONE * (1.0 + u * w):  # opposite signs, |U| + |theta'| > 1
+        (n, e), (dn, dn_lo) = _light_cone((pp, pp_lo), add((r, r_lo), (k, k_lo)))  # exp(theta'_1) = P+/(R + k)
+        zero = -NOISE * dn <= n <= NOISE * dn
+    else:  # V'_1 = (u R - k)/(R - u k)
+        ur = uq * r
+        ur_lo = ((u_h * r_h - ur) + u_h * r_t + u_t * r_h) + u_t * r_t + (uq * r_lo + uq_lo * r)
+        uk = uq * k
+        uk_lo = ((u_h * k_h - uk) + u_h * k_t + u_t * k_h) + u_t * k_t + (uq * k_lo + uq_lo * k)
+        n = ur - k
+        t = n - ur
+        e = ((ur - (n - t)) - (k + t)) + (ur_lo - k_lo)
+        t = n + e
+        e -= t - n
+        n = t
+        dn = r - uk  # |u k| < R
+        dn_lo = ((r - dn) - uk) + (r_lo - uk_lo)
+        t = NOISE * (r + k)  # above the noise of the terms |u R| + k: then check against those
+        zero = -t <= n <= t and -NOISE * (abs(ur) + k) <= n <= NOISE * (abs(ur) + k)
+    if zero:  # below the noise of its terms: exactly 0
+        after_1 = REST
+    else:  # V' = n / dn: q = fl(n / dn) plus the exact residual
         q = n / dn
         t = S * q
         q_h = t - (t - q)
@@ -383,33 +361,82 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         elif -_NEAR_LIGHT < v < 0.0:
             g = 1.0 + v
             gap = g + (((1.0 - g) + v) + v_lo)
-        elif squares is not None:  # 1 - V' = 2 Y^2/(X^2 + Y^2), 1 + V' = 2 X^2/(X^2 + Y^2)
-            x2, x2_lo, y2, y2_lo = squares
-            gap = 2.0 * div((y2, y2_lo) if v > 0.0 else (x2, x2_lo), (dn, dn_lo))[0]
         else:
-            # 1 - V' = (1 - u)(1 - w)/(1 + u w) and 1 + V' = (1 + u)(1 + w)/(1 + u w), with
-            # 1 -+ u = P-+/E, 1 - w_1 = 1 + w_2 = Q/R, 1 + w_1 = 1 - w_2 = M^2/(R Q), 1 + u w = D/R,
-            # Q = R + |k|: products of positive factors, in double-double (this is rare)
-            q_dd = add((r, r_lo), (k, k_lo) if k > 0.0 else (-k, -k_lo))
-            one_minus_u = (pm, pm_lo) if v > 0.0 else (pp, pp_lo)
-            if (v > 0.0) == (sign < 0.0):
-                gap = div(mul(one_minus_u, q_dd), mul((en, en_lo), (dn, dn_lo)))[0]
-            else:
-                gap = div(mul(one_minus_u, (mm, mm_lo)), mul(mul((en, en_lo), q_dd), (dn, dn_lo)))[0]
-        after[i] = ExactVelocity(v, v_lo, gap)
+            gap = _gap_near_light(v, (pp, pp_lo), add((r, r_lo), (k, k_lo)))
+        after_1 = ExactVelocity(v, v_lo, gap)
+
+    # ---- rod 2 leaves the barycentre with w_2 = k_2/R_2: k_2 = m1 K, R_2 = sqrt(M^2 + k_2^2)
+    k = m1 * kk
+    k_lo = ((m1_h * kk_h - k) + m1_h * kk_t + m1_t * kk_h) + m1_t * kk_t + m1 * kk_lo
+    t = S * k
+    k_h = t - (t - k)
+    k_t = k - k_h
+    p = k * k
+    e = ((k_h * k_h - p) + 2.0 * k_h * k_t) + k_t * k_t + 2.0 * k * k_lo
+    r2 = mm + p
+    t = r2 - mm
+    r2_lo = ((mm - (r2 - t)) + (p - t)) + (mm_lo + e)
+    r = r_2 = sqrt(r2)
+    t = S * r
+    r_h = t - (t - r)
+    r_t = r - r_h
+    p = r * r
+    r_lo = (((r2 - p) - (((r_h * r_h - p) + 2.0 * r_h * r_t) + r_t * r_t)) + r2_lo) / (r + r)
+    if u < 0.0 and (w := k / r) - u > _TANH_ONE * (1.0 - u * w):  # opposite signs, |U| + |theta'| > 1
+        (n, e), (dn, dn_lo) = _light_cone(add((r, r_lo), (k, k_lo)), (pm, pm_lo))  # exp(theta'_2) = (R + k)/P-
+        zero = -NOISE * dn <= n <= NOISE * dn
+    else:  # V'_2 = (u R + k)/(R + u k)
+        ur = uq * r
+        ur_lo = ((u_h * r_h - ur) + u_h * r_t + u_t * r_h) + u_t * r_t + (uq * r_lo + uq_lo * r)
+        uk = uq * k
+        uk_lo = ((u_h * k_h - uk) + u_h * k_t + u_t * k_h) + u_t * k_t + (uq * k_lo + uq_lo * k)
+        n = ur + k
+        t = n - ur
+        e = ((ur - (n - t)) + (k - t)) + (ur_lo + k_lo)
+        t = n + e
+        e -= t - n
+        n = t
+        dn = r + uk  # |u k| < R
+        dn_lo = (uk - (dn - r)) + (r_lo + uk_lo)
+        t = NOISE * (r + k)
+        zero = -t <= n <= t and -NOISE * (abs(ur) + k) <= n <= NOISE * (abs(ur) + k)
+    if zero:
+        after_2 = REST
+    else:
+        q = n / dn
+        t = S * q
+        q_h = t - (t - q)
+        q_t = q - q_h
+        t = S * dn
+        d = t - (t - dn)
+        t = dn - d
+        p = q * dn
+        v_lo = (((n - p) - (((q_h * d - p) + q_h * t + q_t * d) + q_t * t)) + e - q * dn_lo) / dn
+        v = q + v_lo
+        v_lo -= v - q
+        if 0.0 <= v < _NEAR_LIGHT:
+            g = 1.0 - v
+            gap = g + (((1.0 - g) - v) - v_lo)
+        elif -_NEAR_LIGHT < v < 0.0:
+            g = 1.0 + v
+            gap = g + (((1.0 - g) + v) + v_lo)
+        else:
+            gap = _gap_near_light(v, add((r, r_lo), (k, k_lo)), (pm, pm_lo))
+        after_2 = ExactVelocity(v, v_lo, gap)
+
     if eps == 1.0:
         gain = 0.0
     else:  # k - 1 = (1 - eps^2) sum_i m_i b_i^2/(g_i + g'_i) / (m1 g'_1 + m2 g'_2)
         inv_m = 1.0 / sqrt(mm)
         b1, b2 = m2 * s * inv_m, m1 * s * inv_m
-        g1, g2 = radii[0] * inv_m, radii[1] * inv_m
+        g1, g2 = r_1 * inv_m, r_2 * inv_m
         gain = (
             (1.0 - eps)
             * (1.0 + eps)
             * (m1 * b1 * b1 / (sqrt(1.0 + b1 * b1) + g1) + m2 * b2 * b2 / (sqrt(1.0 + b2 * b2) + g2))
             / (m1 * g1 + m2 * g2)
         )
-    return CollisionSolution(bary, (after[0], after[1]), gain, gain * mass_sum, (v1, v2))
+    return CollisionSolution(bary, (after_1, after_2), gain, gain * mass_sum, (v1, v2))
 
 
 #: The far ends' switches (Eqs. (22)-(25)); the same in every collision.
