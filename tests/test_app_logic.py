@@ -19,7 +19,14 @@ from rigidrel_app.view import camera as cam
 from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from rigidrel_app.view.lanes import TICK_FRACTIONS, lane_geometry, lane_state
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
-from rigidrel_app.view.scene_view import build_drawing, camera_pose, lane_states, readout_markdown
+from rigidrel_app.view.scene_view import (
+    CLOCK_RULE,
+    RULER_NAMES,
+    build_drawing,
+    camera_pose,
+    lane_states,
+    readout_markdown,
+)
 from rigidrel_app.view.state import (
     CUSTOM_FRAME,
     NO_PRESET,
@@ -242,6 +249,28 @@ def test_lane_ticks_sit_on_the_cores_material_points() -> None:
     assert np.array_equal(st.segments.x0[: expected.size], expected)
     assert [b.x0 for b in st.boxes] == list(expected.reshape(2, -1)[:, 0])
     assert len(st.labels) == 1 and "clocks" in st.labels[0].text and st.labels[0].text.startswith("title")
+
+
+def test_the_rulers_are_named_by_their_frames_coordinate() -> None:
+    r = resolve(Settings("rod-collision"))
+    assert isinstance(r, Resolved)
+    d = build_drawing(r)
+    geo = lane_geometry(r.scene)
+    assert RULER_NAMES == ("x", "x′")
+    for (ruler, labels), name, (_, hi) in zip(d.lane_statics(), RULER_NAMES, d.lane_ranges, strict=True):
+        named = [lab for lab in labels if lab.text == name]
+        assert len(named) == 1 and named[0].x == pytest.approx(hi / geo.unit) and named[0].anchor == "right"
+        line = ruler.y0[0]  # the name sits above the ruler's line, its numbers below
+        numbers = [lab for lab in labels if lab.text != name and "origin" not in lab.text]
+        assert numbers and named[0].y > line and all(lab.y < line for lab in numbers)
+
+
+def test_the_readout_states_the_clock_rule() -> None:
+    r = resolve(Settings("wall-collision"))
+    assert isinstance(r, Resolved)
+    text = readout_markdown(r)
+    assert f"**Clocks** {CLOCK_RULE}" in text
+    assert CLOCK_RULE == "every clock reads 0 where its point starts changing velocity"
 
 
 def test_wall_lane_has_the_wall_moving_in_a_boosted_frame() -> None:
