@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from dataclasses import replace
 
 import numpy as np
@@ -38,7 +39,7 @@ from rigidrel_app.view.state import (
     resolve,
     settings_for,
 )
-from rigidrel_app.view.vocabulary import Chart, Label, Points, Polyline, Style, event_label
+from rigidrel_app.view.vocabulary import Chart, Label, Points, Polyline, Style, event_label, markdown_literal
 
 #: Every registered scene at its defaults (the app offers each one).
 ALL_SETTINGS = [Settings(kind) for kind in rr.scene_descriptions()]
@@ -237,6 +238,17 @@ def test_length_chart_marks_the_papers_events() -> None:
     assert {event_label("T_B"), event_label("T_F")} <= labels
     curve = next(i for i in chart.items if isinstance(i, Polyline))
     assert curve.x[0] == -0.5 and curve.y[-1] == pytest.approx(0.8, rel=1e-12)  # L0/gamma after T_F
+
+
+def test_markdown_literal_shows_typed_text_as_typed() -> None:
+    """A notice quotes what was typed; viser renders markdown with raw HTML, so nothing typed may
+    become markup."""
+    typed = "<img src=x onerror=alert(1)> **bold** _it_ [a](b) `c` # 1. x & y"
+    escaped = markdown_literal(typed)
+    assert "<" not in escaped and ">" not in escaped and "&lt;img" in escaped
+    unescaped = re.sub(r"\\(.)", r"\1", escaped).replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&")
+    assert unescaped == typed
+    assert all(f"\\{c}" in escaped for c in "*_[]`#.")
 
 
 # ---------------------------------------------------------------- lanes and camera
