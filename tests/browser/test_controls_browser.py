@@ -111,6 +111,21 @@ def test_arrows_step_one_frame(tab: AppPage) -> None:
     assert not tab.session.playback.playing
 
 
+def test_arrows_on_a_focused_slider_move_only_that_slider(tab: AppPage) -> None:
+    """A slider keeps the focus after a drag: then → moves that slider, and does not also step
+    playback; the clicker's PageDown still goes to the next figure."""
+    uid = tab.control("V").get_attribute("id")
+    tab.page.locator(f"[id='{uid}'] [role=slider]").focus()
+    now = tab.session.playback.now
+    tab.page.keyboard.press("ArrowRight")
+    wait_until(lambda: tab.session.settings.value("v") == pytest.approx(0.61))
+    tab.page.keyboard.press("PageDown")  # the scene's first figure (Fig. 1): V back to 0.6
+    wait_until(lambda: tab.session.settings.overlay and tab.session.settings.value("v") == 0.6)
+    assert tab.session.playback.now == now  # no frame was stepped
+    press(tab, "ArrowRight")  # with nothing focused, → steps
+    wait_until(lambda: tab.session.playback.now > now)
+
+
 def test_page_down_and_up_walk_the_scenes_figures(collision: AppPage, shots: Path) -> None:
     tab = collision
     wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)

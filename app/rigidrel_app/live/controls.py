@@ -221,6 +221,22 @@ def hidden_box_css(controls: Sequence[NumberControl]) -> str:
     return f"<style>{boxes} {{ display: none !important; }} {rows} {{ min-height: 1.875em; }}</style>"
 
 
+#: A slider's handle keeps the keyboard focus after a drag, and then ← and → move that slider (the
+#: browser's way); they must not also step playback, as viser's hotkeys listen on the whole page
+#: (dragging V and then stepping would change V too). A listener on the page's body stops those two
+#: keys on their way up from a slider handle, after the slider has used them and before the
+#: hotkeys hear them. viser's HTML element runs no ``<script>``; an image that fails to load runs
+#: its ``onerror`` (the listener is added once per page).
+ARROWS_STAY_IN_SLIDERS = (
+    '<img alt="" src="data:," style="display: none" onerror="'
+    "if (!window.rigidrelArrows) { window.rigidrelArrows = true; "
+    "document.body.addEventListener('keydown', function (e) { var t = e.target; "
+    "if ((e.key === 'ArrowLeft' || e.key === 'ArrowRight') && t && t.getAttribute "
+    "&& t.getAttribute('role') === 'slider') { e.stopPropagation(); } }); }"
+    '">'
+)
+
+
 def parameter_controls(gui: viser.GuiApi) -> dict[rr.Parameter, NumberControl]:
     """One control per distinct slider parameter of every registered scene, in teaching order."""
     out: dict[rr.Parameter, NumberControl] = {}
@@ -389,7 +405,7 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
         )
         gui.add_markdown(f"<small>{key_line()}</small>")
     readout = gui.add_markdown("", order=4.0)
-    gui.add_html(hidden_box_css(list(params.values())), order=5.0)
+    gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS, order=5.0)
     gui.main_panel.dock_right()
     gui.main_panel.set_width(CONTROL_PX)
     panel = gui.add_panel()

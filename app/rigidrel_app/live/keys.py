@@ -1,8 +1,9 @@
 """The keyboard, and a presentation clicker (it sends PageUp and PageDown): which key does what.
 
 A plain table, registered per tab with viser's command palette (``add_command``), so each
-key also appears there (Ctrl+K) with what it does. viser ignores these keys while a text
-field has the focus, so typing a value never plays, steps or resets anything.
+key also appears there (Ctrl+K) with what it does. viser ignores these keys while a box, menu
+or checkbox has the focus, so typing a value never plays, steps or resets anything; ← and →
+on a focused slider handle move only that slider (``controls.ARROWS_STAY_IN_SLIDERS``).
 """
 
 from __future__ import annotations
