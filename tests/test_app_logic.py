@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from dataclasses import replace
 
 import numpy as np
@@ -19,7 +20,14 @@ from rigidrel_app.view import camera as cam
 from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from rigidrel_app.view.lanes import TICK_FRACTIONS, lane_geometry, lane_state
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
-from rigidrel_app.view.scene_view import build_drawing, camera_pose, lane_states, readout_markdown
+from rigidrel_app.view.scene_view import (
+    CLOCK_RULE,
+    RULER_NAMES,
+    build_drawing,
+    camera_pose,
+    lane_states,
+    readout_markdown,
+)
 from rigidrel_app.view.state import (
     CUSTOM_FRAME,
     NO_PRESET,
@@ -31,7 +39,7 @@ from rigidrel_app.view.state import (
     resolve,
     settings_for,
 )
-from rigidrel_app.view.vocabulary import Chart, Label, Points, Polyline, Style, event_label
+from rigidrel_app.view.vocabulary import Chart, Label, Points, Polyline, Style, event_label, markdown_literal
 
 #: Every registered scene at its defaults (the app offers each one).
 ALL_SETTINGS = [Settings(kind) for kind in rr.scene_descriptions()]
@@ -232,6 +240,17 @@ def test_length_chart_marks_the_papers_events() -> None:
     assert curve.x[0] == -0.5 and curve.y[-1] == pytest.approx(0.8, rel=1e-12)  # L0/gamma after T_F
 
 
+def test_markdown_literal_shows_typed_text_as_typed() -> None:
+    """A notice quotes what was typed; viser renders markdown with raw HTML, so nothing typed may
+    become markup."""
+    typed = "<img src=x onerror=alert(1)> **bold** _it_ [a](b) `c` # 1. x & y"
+    escaped = markdown_literal(typed)
+    assert "<" not in escaped and ">" not in escaped and "&lt;img" in escaped
+    unescaped = re.sub(r"\\(.)", r"\1", escaped).replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&")
+    assert unescaped == typed
+    assert all(f"\\{c}" in escaped for c in "*_[]`#.")
+
+
 # ---------------------------------------------------------------- lanes and camera
 def test_lane_ticks_sit_on_the_cores_material_points() -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.5, 1.0)
@@ -242,6 +261,28 @@ def test_lane_ticks_sit_on_the_cores_material_points() -> None:
     assert np.array_equal(st.segments.x0[: expected.size], expected)
     assert [b.x0 for b in st.boxes] == list(expected.reshape(2, -1)[:, 0])
     assert len(st.labels) == 1 and "clocks" in st.labels[0].text and st.labels[0].text.startswith("title")
+
+
+def test_the_rulers_are_named_by_their_frames_coordinate() -> None:
+    r = resolve(Settings("rod-collision"))
+    assert isinstance(r, Resolved)
+    d = build_drawing(r)
+    geo = lane_geometry(r.scene)
+    assert RULER_NAMES == ("x", "x′")
+    for (ruler, labels), name, (_, hi) in zip(d.lane_statics(), RULER_NAMES, d.lane_ranges, strict=True):
+        named = [lab for lab in labels if lab.text == name]
+        assert len(named) == 1 and named[0].x == pytest.approx(hi / geo.unit) and named[0].anchor == "right"
+        line = ruler.y0[0]  # the name sits above the ruler's line, its numbers below
+        numbers = [lab for lab in labels if lab.text != name and "origin" not in lab.text]
+        assert numbers and named[0].y > line and all(lab.y < line for lab in numbers)
+
+
+def test_the_readout_states_the_clock_rule() -> None:
+    r = resolve(Settings("wall-collision"))
+    assert isinstance(r, Resolved)
+    text = readout_markdown(r)
+    assert f"**Clocks** {CLOCK_RULE}" in text
+    assert CLOCK_RULE == "every clock reads 0 where its point starts changing velocity"
 
 
 def test_wall_lane_has_the_wall_moving_in_a_boosted_frame() -> None:

@@ -116,6 +116,8 @@ class LightClient:
         self.read = read
         self.stats = Stats()
         self.gui_uuid: dict[str, str] = {}
+        self.command_uuid: dict[str, str] = {}
+        """The tab's keyboard commands (viser's command palette), by label."""
         self._ws: Any = None
         self._stop = asyncio.Event()
 
@@ -164,6 +166,8 @@ class LightClient:
             # a control (not a folder of the same name), by its label
             if kind.startswith("Gui") and kind != "GuiFolderMessage" and isinstance(props, dict) and "label" in props:
                 self.gui_uuid[str(props["label"])] = str(m["uuid"])
+            if kind == "RegisterCommandMessage" and isinstance(props, dict):
+                self.command_uuid[str(props["label"])] = str(m["uuid"])
             if kind == "SceneNodeUpdateMessage" and "batched_positions" in m.get("updates", {}):
                 moved = True
         if moved:

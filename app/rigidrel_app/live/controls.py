@@ -1,159 +1,43 @@
 """One tab's controls, generated from the scene registry, and the server-side check of every value.
 
 Every control a client can move is *guarded*: the value a client sends is checked on the
-server against the control's own range (a hostile websocket client can send anything), a
-legal value goes to the session, a refused one is put back and explained in a notice that
-names the control and its range. Parameter controls are keyed by the core's
-:class:`~rigidrel_core.Parameter`, so scenes that share a parameter share its control.
+server (a hostile websocket client can send anything), a legal value goes to the session,
+and a refused one gets a notice that names the control and its range, replacing any older
+notice. What a number means (its range, its slider's scale, how typed text reads) is
+:mod:`rigidrel_app.view.entry`'s; here it is only wired to viser. Parameter controls are keyed
+by the core's :class:`~rigidrel_core.Parameter`, so scenes that share a parameter share its
+control.
 """
 
 from __future__ import annotations
 
 import functools
-import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
-from typing import Protocol, TypeVar
+from typing import Literal, Protocol, TypeVar
 
 import plotly.graph_objects as go
 import viser
 
 import rigidrel_core as rr
 
+from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, refusal
 from ..view.scene_view import CONTROL_PX, LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX
-from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, NO_PRESET, Settings, preset_of, presets
+from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, preset_menu
+from .keys import HOTKEYS, Action, key_line
 from .playback import Playback
 
 T = TypeVar("T")
-Refuse = Callable[[str], None]
 
+Place = Literal["scene", "frame", "playback"]
+"""The folder a notice shows in: the one holding the control whose value was refused, so it is read
+where the lecturer is looking even when the panel is scrolled."""
 
-def guard(
-    handle: viser.GuiInputHandle[T],
-    *,
-    label: str,
-    allowed: str,
-    legal: Callable[[T], bool],
-    current: Callable[[], T],
-    act: Callable[[T], None],
-    refuse: Refuse,
-    handled: Callable[[], None] = lambda: None,
-) -> None:
-    """Check every value a client sends to ``handle``: ``act`` on a legal one; put a refused one back
-    (``current()``) and ``refuse`` with a notice naming ``label`` and what is ``allowed``; then
-    ``handled()``, whatever happened.
-
-    Values the server sets itself are not checked (they are the session's own)."""
-
-    @handle.on_update
-    def _(event: viser.GuiEvent) -> None:
-        if event.client is None:
-            return
-        try:
-            value = handle.value
-            if legal(value):
-                act(value)
-                return
-            refuse(f"{label} = {value!r} refused: it must be {allowed}. The last valid scene stays on screen.")
-            handle.value = current()
-        finally:
-            handled()
-
-
-def within(lo: float, hi: float) -> Callable[[float], bool]:
-    """A finite number in ``[lo, hi]`` (what a slider may hold)."""
-    return lambda v: isinstance(v, (int, float)) and math.isfinite(v) and lo - 1e-12 <= v <= hi + 1e-12
-
-
-class ParameterControl:
-    """The control of one scene parameter: a slider, or for a log-scale parameter a slider over
-    ``log10`` of the value beside a box where the value itself is shown and typed (a mass ratio of 2)."""
-
-    def __init__(self, gui: viser.GuiApi, parameter: rr.Parameter) -> None:
-        slider = parameter.slider
-        assert slider is not None
-        self.parameter = parameter
-        value = float(parameter.default) if parameter.default is not None else slider.hi
-        hint = f"{parameter.help}; {parameter.allowed()}"
-        self.slider: viser.GuiSliderHandle[float]
-        self.box: viser.GuiNumberHandle[float] | None = None
-        if slider.scale == "log":
-            lo, hi = math.log10(slider.lo), math.log10(slider.hi)
-            marks = tuple((float(k), f"{10.0**k:g}") for k in range(math.ceil(lo), math.floor(hi) + 1))
-            self.box = gui.add_number(parameter.label, value, step=slider.lo, hint=hint)
-            self.slider = gui.add_slider(
-                f"log₁₀ {parameter.label}", lo, hi, slider.step, math.log10(value), marks=marks, hint=hint
-            )
-        else:
-            self.slider = gui.add_slider(parameter.label, slider.lo, slider.hi, slider.step, value, hint=hint)
-
-    @property
-    def handles(self) -> tuple[viser.GuiInputHandle[float], ...]:
-        return (self.slider,) if self.box is None else (self.box, self.slider)
-
-    def show(self, visible: bool, value: float | None, order: float | None = None) -> None:
-        """Show or hide the control; a shown one holds ``value`` and sits at ``order`` in its folder."""
-        for k, h in enumerate(self.handles):
-            if h.visible != visible:
-                h.visible = visible
-            if order is not None and h.order != order + 0.001 * k:
-                h.order = order + 0.001 * k
-        if value is None:
-            return
-        if self.box is None:
-            if self.slider.value != value:
-                self.slider.value = value
-            return
-        if self.box.value != value:
-            self.box.value = value
-        log_value = math.log10(value)
-        if abs(self.slider.value - log_value) > 1e-9:
-            self.slider.value = log_value
-
-    def wire(
-        self,
-        current: Callable[[], float | None],
-        act: Callable[[float], None],
-        refuse: Refuse,
-        handled: Callable[[], None] = lambda: None,
-    ) -> None:
-        """Guard both handles; either one sets the parameter."""
-        slider = self.parameter.slider
-        assert slider is not None
-        p = self.parameter
-        allowed = f"a number in [{slider.lo:g}, {slider.hi:g}]"
-
-        def now() -> float:
-            v = current()
-            return float(p.default or 0.0) if v is None else v
-
-        if self.box is None:
-            guard(self.slider, label=p.label, allowed=allowed, legal=within(slider.lo, slider.hi), current=now, act=act,
-                  refuse=refuse, handled=handled)  # fmt: skip
-            return
-        lo, hi = math.log10(slider.lo), math.log10(slider.hi)
-        guard(self.box, label=p.label, allowed=allowed, legal=within(slider.lo, slider.hi), current=now, act=act,
-              refuse=refuse, handled=handled)  # fmt: skip
-        guard(
-            self.slider,
-            label=self.slider.label,
-            allowed=f"a number in [{lo:g}, {hi:g}] (a ratio in [{slider.lo:g}, {slider.hi:g}])",
-            legal=within(lo, hi),
-            current=lambda: math.log10(now()),
-            act=lambda k: act(float(f"{10.0**k:.12g}")),
-            refuse=refuse,
-            handled=handled,
-        )
-
-
-def parameter_controls(gui: viser.GuiApi) -> dict[rr.Parameter, ParameterControl]:
-    """One control per distinct slider parameter of every registered scene, in teaching order."""
-    out: dict[rr.Parameter, ParameterControl] = {}
-    for d in rr.scene_descriptions().values():
-        for p in d.parameters:
-            if p.slider is not None and p not in out:
-                out[p] = ParameterControl(gui, p)
-    return out
+#: A log slider's label (it sits under the box that carries the number's name).
+LOG_SLIDER_LABEL = "log scale"
+#: Decimals a slider's own box takes: more than its step, so that a value beyond the range is
+#: typed in full and refused with a notice (the browser box would cut 0.999 to 0.99 at two).
+TYPED_DECIMALS = 6
 
 
 class Actions(Protocol):
@@ -167,10 +51,211 @@ class Actions(Protocol):
     def choose_preset(self, label: str) -> None: ...
     def seek(self, now: float) -> None: ...
     def set_playback(self, playback: Playback) -> None: ...
-    def toggle_play(self) -> None: ...
-    def refuse(self, text: str) -> None: ...
-    def handled(self) -> None: ...
+    def perform(self, action: Action) -> None: ...
+    def refuse(self, text: str, place: Place) -> None: ...
     def frame_choice(self) -> str: ...
+    def checked(self, respond: Callable[[], None]) -> None:
+        """Run ``respond`` to one client message under the session's lock, and count it."""
+        ...
+
+
+def _on_client_value(handle: viser.GuiInputHandle[T], a: Actions, respond: Callable[[T], None]) -> None:
+    """Call ``respond`` with each value a client sends to ``handle`` (values the server sets itself
+    are the session's own and not checked). The value is read under the session's lock: viser runs
+    these callbacks on a thread pool, so the one that runs last must see the last value sent."""
+
+    @handle.on_update
+    def _(event: viser.GuiEvent) -> None:
+        if event.client is not None:
+            a.checked(lambda: respond(handle.value))
+
+
+def guard_number(
+    handle: viser.GuiInputHandle[T],
+    a: Actions,
+    *,
+    judge: Callable[[T], Verdict],
+    act: Callable[[float], None],
+    put_back: Callable[[], T],
+    place: Place,
+) -> None:
+    """A number control: ``act`` on what ``judge`` accepts; a refusal replaces the notice and is put
+    back unless it is text a person is typing; text on its way to a number waits."""
+
+    def respond(value: T) -> None:
+        verdict = judge(value)
+        if isinstance(verdict, Use):
+            act(verdict.value)
+        elif isinstance(verdict, Refuse):
+            a.refuse(verdict.notice, place)
+            if verdict.put_back:
+                handle.value = put_back()
+        elif isinstance(verdict, Undo):
+            handle.value = put_back()
+        else:
+            assert isinstance(verdict, Typing)
+
+    _on_client_value(handle, a, respond)
+
+
+def guard_choice(
+    handle: viser.GuiInputHandle[T],
+    a: Actions,
+    *,
+    label: str,
+    allowed: str,
+    legal: Callable[[T], bool],
+    current: Callable[[], T],
+    act: Callable[[T], None],
+    place: Place,
+) -> None:
+    """A menu or checkbox: ``act`` on a legal value; put a refused one back (``current()``) and
+    replace the notice with one naming ``label`` and what is ``allowed``."""
+
+    def respond(value: T) -> None:
+        if legal(value):
+            act(value)
+            return
+        a.refuse(refusal(label, repr(value), allowed), place)
+        handle.value = current()
+
+    _on_client_value(handle, a, respond)
+
+
+class NumberControl:
+    """A number set with a slider and typed into a box.
+
+    A linear slider's own box (beside it) shows and takes the number, to
+    :data:`TYPED_DECIMALS` decimals. A log slider moves over ``log10`` of the number; its own
+    box would show that logarithm, so it is hidden (:func:`hidden_box_css`) and a text box of
+    the control's own, above the slider, shows and takes the number itself (2, 0.01, 100).
+    Typed text that is refused stays on screen with its notice rather than being put back
+    under the typist's fingers.
+    """
+
+    def __init__(self, gui: viser.GuiApi, entry: NumberEntry, value: float, hint: str | None = None) -> None:
+        self.entry = entry
+        self.box: viser.GuiTextHandle | None = None
+        if entry.is_log:
+            self.box = gui.add_text(entry.label, entry.text(value), hint=hint)
+        lo, hi = entry.slider_range
+        self.slider: viser.GuiSliderHandle[float] = gui.add_slider(
+            LOG_SLIDER_LABEL if entry.is_log else entry.label,  # under its box, which carries the name
+            lo,
+            hi,
+            entry.step,
+            entry.to_slider(value),
+            marks=entry.slider_marks(),
+            hint=hint,
+        )
+        if not entry.is_log:
+            self.slider.precision = TYPED_DECIMALS
+        self._clamped_to: float | None = None
+        """The slider end a typed value was last refused beyond (see ``NumberEntry.judge_position``)."""
+
+    @property
+    def handles(self) -> tuple[viser.GuiInputHandle[float] | viser.GuiTextHandle, ...]:
+        return (self.slider,) if self.box is None else (self.box, self.slider)
+
+    def retarget(self, entry: NumberEntry) -> None:
+        """A new range (the time slider follows the scene's window)."""
+        self.entry = entry
+        self._clamped_to = None
+        lo, hi = entry.slider_range
+        s = self.slider
+        if (s.min, s.max, s.step) != (lo, hi, entry.step):
+            s.min, s.max, s.step = lo, hi, entry.step
+
+    def show(self, value: float, visible: bool = True, order: float | None = None) -> None:
+        """Show the control holding ``value`` (each handle written only if it shows something else,
+        so a box being typed into keeps ``2.50`` while it means 2.5), at ``order`` in its folder."""
+        for k, h in enumerate(self.handles):
+            if h.visible != visible:
+                h.visible = visible
+            if order is not None and h.order != order + 0.001 * k:
+                h.order = order + 0.001 * k
+        if not visible:
+            return
+        if self.box is not None and self.entry.read(self.box.value) != Use(value):
+            self.box.value = self.entry.text(value)
+        if not self.entry.shows(self.slider.value, value):
+            self.slider.value = self.entry.to_slider(value)
+            self._clamped_to = None
+
+    def hide(self) -> None:
+        for h in self.handles:
+            if h.visible:
+                h.visible = False
+
+    def wire(self, a: Actions, current: Callable[[], float], act: Callable[[float], None], place: Place) -> None:
+        """Guard the slider (and the box); either one sets the number through ``act``; a refusal's
+        notice shows in the folder ``place``."""
+        e = self
+
+        def judge_slider(position: float) -> Verdict:
+            verdict, e._clamped_to = e.entry.judge_position(position, e._clamped_to)
+            return verdict
+
+        def slider_position() -> float:
+            return e.entry.to_slider(current())
+
+        def box_text() -> str:
+            return e.entry.text(current())
+
+        guard_number(self.slider, a, judge=judge_slider, act=act, put_back=slider_position, place=place)
+        if self.box is not None:
+            guard_number(self.box, a, judge=lambda t: e.entry.read(t), act=act, put_back=box_text, place=place)
+
+
+def hidden_box_css(controls: Sequence[NumberControl]) -> str:
+    """Style rules that hide the browser's own number box of each log slider (it would show
+    ``log10`` of the number; the control's own box shows the number) and keep the row tall enough
+    for the slider's marks. viser draws a slider's box as the next sibling of the slider element,
+    whose id is the handle's id."""
+    ids = [c.slider._impl.uuid for c in controls if c.box is not None]  # viser has no public id
+    if not ids:
+        return ""
+    boxes = ", ".join(f'[id="{i}"] + .mantine-NumberInput-root' for i in ids)
+    rows = ", ".join(f'.mantine-Flex-root:has(> [id="{i}"])' for i in ids)
+    # as tall as a row with a box (1.875em, viser's box height): room for the marks' labels
+    return f"<style>{boxes} {{ display: none !important; }} {rows} {{ min-height: 1.875em; }}</style>"
+
+
+#: A slider's handle keeps the keyboard focus after a drag, and then ← and → move that slider (the
+#: browser's way); they must not also step playback, as viser's hotkeys listen on the whole page
+#: (dragging V and then stepping would change V too). A listener on the page's body stops those two
+#: keys on their way up from a slider handle, after the slider has used them and before the
+#: hotkeys hear them. viser's HTML element runs no ``<script>``; an image that fails to load runs
+#: its ``onerror`` (the listener is added once per page).
+ARROWS_STAY_IN_SLIDERS = (
+    '<img alt="" src="data:," style="display: none" onerror="'
+    "if (!window.rigidrelArrows) { window.rigidrelArrows = true; "
+    "document.body.addEventListener('keydown', function (e) { var t = e.target; "
+    "if ((e.key === 'ArrowLeft' || e.key === 'ArrowRight') && t && t.getAttribute "
+    "&& t.getAttribute('role') === 'slider') { e.stopPropagation(); } }); }"
+    '">'
+)
+
+
+def parameter_controls(gui: viser.GuiApi) -> dict[rr.Parameter, NumberControl]:
+    """One control per distinct slider parameter of every registered scene, in teaching order."""
+    out: dict[rr.Parameter, NumberControl] = {}
+    for d in rr.scene_descriptions().values():
+        for p in d.parameters:
+            if p.slider is not None and p not in out:
+                value = float(p.default) if p.default is not None else p.slider.hi
+                entry = NumberEntry.of(p)  # the hint gives the range the control takes, as its notices do
+                also = f" ({p.constraint})" if p.constraint else ""
+                out[p] = NumberControl(gui, entry, value, f"{p.help}; {entry.allowed()}{also}")
+    return out
+
+
+def time_entry(window: tuple[float, float], step: float) -> NumberEntry:
+    return NumberEntry("t, t'", window[0], window[1], step, noun="a time")
+
+
+SPEED = NumberEntry("Speed", 0.1, 4.0, 0.1)
+BETA = NumberEntry("β (custom)", *CUSTOM_BETA, 0.01)
 
 
 @dataclass
@@ -179,66 +264,74 @@ class Controls:
 
     preset: viser.GuiDropdownHandle[str]
     scene: viser.GuiDropdownHandle[str]
-    parameters: dict[rr.Parameter, ParameterControl]
+    parameters: dict[rr.Parameter, NumberControl]
     overlay: viser.GuiCheckboxHandle
-    notice: viser.GuiMarkdownHandle
+    notices: dict[Place, viser.GuiMarkdownHandle]
+    """One notice slot at the end of each folder; at most one shows."""
     frame: viser.GuiDropdownHandle[str]
-    beta: viser.GuiSliderHandle[float]
+    beta: NumberControl
     play: viser.GuiButtonHandle
-    time: viser.GuiSliderHandle[float]
-    speed: viser.GuiSliderHandle[float]
+    time: NumberControl
+    speed: NumberControl
     loop: viser.GuiCheckboxHandle
     fit: viser.GuiCheckboxHandle
+    reset_view: viser.GuiButtonHandle
     readout: viser.GuiMarkdownHandle
     plots: tuple[viser.GuiPlotlyHandle, viser.GuiPlotlyHandle, viser.GuiPlotlyHandle]
     """The lab diagram, the chosen frame's diagram, the equal-time lengths."""
+    commands: dict[Action, viser.CommandHandle]
+    """The keyboard's and the clicker's commands (:mod:`.keys`)."""
 
-    def control_for(self, settings: Settings, name: str) -> ParameterControl | None:
+    def control_for(self, settings: Settings, name: str) -> NumberControl | None:
         return self.parameters.get(settings.description.parameter(name))
 
     def wire(self, a: Actions) -> None:
         """Guard every control a client can move, and send what passes to ``a``."""
-        checked = functools.partial(guard, refuse=a.refuse, handled=a.handled)
         for param, control in self.parameters.items():
             control.wire(
-                current=lambda name=param.name: a.settings.parameters().get(name),
+                a,
+                current=lambda p=param: _value_or_default(p, a.settings.parameters().get(p.name)),
                 act=lambda v, p=param: a.set_parameter(p, v),
-                refuse=a.refuse,
-                handled=a.handled,
+                place="scene",
             )
+        in_scene = functools.partial(guard_choice, a=a, place="scene")
+        in_frame = functools.partial(guard_choice, a=a, place="frame")
+        in_playback = functools.partial(guard_choice, a=a, place="playback")
         titles = scene_titles()
-        checked(self.scene, label="Scene", allowed="one of the listed scenes", legal=one_of(list(titles)),
-                current=lambda: a.settings.description.title,
-                act=lambda title: a.change(a.settings.with_scene(titles[title])))  # fmt: skip
-        checked(self.preset, label="Paper figure", allowed="one of the listed figures",
-                legal=one_of([NO_PRESET, *presets()]), current=lambda: preset_of(a.settings),
-                act=a.choose_preset)  # fmt: skip
-        checked(self.overlay, label="Overlay", allowed="on or off", legal=on_or_off,
-                current=lambda: a.settings.overlay,
-                act=lambda v: a.change(replace(a.settings, overlay=v)))  # fmt: skip
-        checked(self.frame, label="Frame", allowed="one of the listed frames", legal=lambda v: v in self.frame.options,
-                current=a.frame_choice, act=lambda v: a.change(replace(a.settings, frame=v)))  # fmt: skip
-        checked(self.beta, label="β (custom)", allowed="a number in [{:g}, {:g}]".format(*CUSTOM_BETA),
-                legal=within(*CUSTOM_BETA),
-                current=lambda: a.settings.beta,
-                act=lambda b: a.change(replace(a.settings, frame=CUSTOM_FRAME, beta=b)))  # fmt: skip
-        checked(self.time, label="t, t'", allowed="a time inside the window",
-                legal=lambda v: within(*a.playback.window)(v), current=lambda: round(a.playback.now, 6),
-                act=a.seek)  # fmt: skip
-        checked(self.speed, label="Speed", allowed="a number in [0.1, 4]", legal=within(0.1, 4.0),
-                current=lambda: a.playback.speed,
-                act=lambda v: a.set_playback(replace(a.playback, speed=v)))  # fmt: skip
-        checked(self.loop, label="Loop", allowed="on or off", legal=on_or_off, current=lambda: a.playback.loop,
-                act=lambda v: a.set_playback(replace(a.playback, loop=v)))  # fmt: skip
-        self.play.on_click(lambda _: a.toggle_play())
+        in_scene(self.scene, label="Scene", allowed="one of the listed scenes", legal=one_of(list(titles)),
+                 current=lambda: a.settings.description.title,
+                 act=lambda title: a.change(a.settings.with_scene(titles[title])))  # fmt: skip
+        in_scene(self.preset, label="Paper figure", allowed="one of the listed figures",
+                 legal=lambda v: one_of(preset_menu(a.settings).options)(v),
+                 current=lambda: preset_menu(a.settings).value, act=a.choose_preset)  # fmt: skip
+        in_scene(self.overlay, label="Overlay", allowed="on or off", legal=on_or_off,
+                 current=lambda: a.settings.overlay,
+                 act=lambda v: a.change(replace(a.settings, overlay=v)))  # fmt: skip
+        in_frame(self.frame, label="Frame", allowed="one of the listed frames",
+                 legal=lambda v: v in self.frame.options, current=a.frame_choice,
+                 act=lambda v: a.change(replace(a.settings, frame=v)))  # fmt: skip
+        self.beta.wire(a, current=lambda: a.settings.beta, place="frame",
+                       act=lambda b: a.change(replace(a.settings, frame=CUSTOM_FRAME, beta=b)))  # fmt: skip
+        self.time.wire(a, current=lambda: round(a.playback.now, 6), act=a.seek, place="playback")
+        self.speed.wire(a, current=lambda: a.playback.speed, place="playback",
+                        act=lambda v: a.set_playback(replace(a.playback, speed=v)))  # fmt: skip
+        in_playback(self.loop, label="Loop", allowed="on or off", legal=on_or_off, current=lambda: a.playback.loop,
+                    act=lambda v: a.set_playback(replace(a.playback, loop=v)))  # fmt: skip
+        self.play.on_click(lambda _: a.perform(Action.TOGGLE_PLAY))
+        self.reset_view.on_click(lambda _: a.perform(Action.RESET_VIEW))
+        for action, command in self.commands.items():
+            command.on_trigger(lambda _, action=action: a.perform(action))
 
     def show_settings(self, s: Settings) -> None:
-        """Show the controls of ``s``'s scene with its values, in its description's order; hide the others."""
+        """Show the controls of ``s``'s scene with its values, in its description's order; hide the
+        others. The paper-figure menu lists this scene's figures and names the one shown, if any."""
         d = s.description
         mine = {p: k for k, p in enumerate(d.parameters) if p.slider is not None}
         for p, control in self.parameters.items():
-            shown = p in mine
-            control.show(shown, s.value(p.name) if shown else None, PARAMETER_ORDER + 0.01 * mine[p] if shown else None)
+            if p in mine:
+                control.show(_value_or_default(p, s.value(p.name)), True, PARAMETER_ORDER + 0.01 * mine[p])
+            else:
+                control.hide()
         if self.overlay.visible != (d.overlay is not None):
             self.overlay.visible = d.overlay is not None
         if d.overlay is not None and self.overlay.label != d.overlay.label:
@@ -247,6 +340,21 @@ class Controls:
             self.overlay.value = s.overlay
         if self.scene.value != d.title:
             self.scene.value = d.title
+        menu = preset_menu(s)
+        if tuple(self.preset.options) != menu.options:
+            self.preset.options = menu.options
+        if self.preset.value != menu.value:
+            self.preset.value = menu.value
+        if self.preset.disabled != (len(menu.options) == 1):
+            self.preset.disabled = len(menu.options) == 1  # a scene without a figure of the paper
+        self.beta.show(s.beta)
+
+
+def _value_or_default(p: rr.Parameter, value: float | None) -> float:
+    """What a parameter's control holds: its value, or for an omitted optional one its default."""
+    if value is not None:
+        return value
+    return float(p.default) if p.default is not None else 0.0
 
 
 #: Where a scene's parameter controls sit in the Scene folder: after the menus, before the overlay.
@@ -259,13 +367,15 @@ def scene_titles() -> dict[str, str]:
 
 
 def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
-    """The control panel (right) and the diagram panel (left) of one tab."""
-    with gui.add_folder("Scene"):
+    """The control panel (right) and the diagram panel (left) of one tab, and its hotkeys."""
+    notices: dict[Place, viser.GuiMarkdownHandle] = {}
+    with gui.add_folder("Scene", order=1.0):
+        menu = preset_menu(settings)
         preset = gui.add_dropdown(
             "Paper figure",
-            [NO_PRESET, *presets()],
-            initial_value=NO_PRESET,
-            hint="Reproduce one of the paper's figures or worked examples exactly",
+            menu.options,
+            initial_value=menu.value,
+            hint="Reproduce one of the paper's figures or worked examples of this scene exactly (PgUp / PgDn)",
             order=1.0,
         )
         scene = gui.add_dropdown("Scene", list(scene_titles()), initial_value=settings.description.title, order=2.0)
@@ -273,27 +383,29 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
         overlay = gui.add_checkbox(
             "Overlay", settings.overlay, hint="Draw the comparison scene dashed over this one", order=20.0
         )
-        notice = gui.add_markdown("", visible=False, order=21.0)
-    with gui.add_folder("Frame"):
+        notices["scene"] = gui.add_markdown("", visible=False, order=21.0)
+    with gui.add_folder("Frame", order=2.0):
         frame = gui.add_dropdown(
             "Frame", ["lab", CUSTOM_FRAME], hint="The lower lane and the second diagram are drawn in this frame"
         )
-        beta = gui.add_slider(
-            "β (custom)",
-            *CUSTOM_BETA,
-            0.01,
-            settings.beta,
-            hint="Velocity of the custom frame, in (-1, 1); moving it selects the custom frame",
+        beta = NumberControl(
+            gui, BETA, settings.beta, "Velocity of the custom frame, in (-1, 1); moving it selects the custom frame"
         )
-    with gui.add_folder("Playback"):
-        play = gui.add_button("Play", icon=viser.Icon.PLAYER_PLAY)
-        time = gui.add_slider(
-            "t, t'", -1.0, 1.0, 0.001, 0.0, hint="Playback clock: the lab lane shows t = this, the frame lane t' = this"
-        )
-        speed = gui.add_slider("Speed", 0.1, 4.0, 0.1, 1.0, hint="Multiple of the normal pace")
+        notices["frame"] = gui.add_markdown("", visible=False)
+    with gui.add_folder("Playback", order=3.0):
+        play = gui.add_button("Play", icon=viser.Icon.PLAYER_PLAY, hint="Space")
+        clock = "Playback clock: the lab lane shows t = this, the frame lane t' = this (← → one frame)"
+        time = NumberControl(gui, time_entry((-1.0, 1.0), 0.001), 0.0, clock)
+        speed = NumberControl(gui, SPEED, 1.0, "Multiple of the normal pace")
+        notices["playback"] = gui.add_markdown("", visible=False)
         loop = gui.add_checkbox("Loop", True)
-        fit = gui.add_checkbox("Auto-fit view", True)
-    readout = gui.add_markdown("")
+        fit = gui.add_checkbox("Auto-fit view", True, hint="Refit the camera when the scene or the frame changes")
+        reset_view = gui.add_button(
+            "Reset view", icon=viser.Icon.FOCUS_CENTERED, color="gray", hint="Back to the scene's default camera (R)"
+        )
+        gui.add_markdown(f"<small>{key_line()}</small>")
+    readout = gui.add_markdown("", order=4.0)
+    gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS, order=5.0)
     gui.main_panel.dock_right()
     gui.main_panel.set_width(CONTROL_PX)
     panel = gui.add_panel()
@@ -305,9 +417,10 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
         frame_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT)
     with panel.add_tab("Lengths (Fig. 2)"):
         length_plot = gui.add_plotly(empty, aspect=LENGTH_ASPECT)
+    commands = {h.action: gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}") for h in HOTKEYS}
     return Controls(
-        preset, scene, params, overlay, notice, frame, beta, play, time, speed, loop, fit, readout,
-        (lab_plot, frame_plot, length_plot),
+        preset, scene, params, overlay, notices, frame, beta, play, time, speed, loop, fit, reset_view, readout,
+        (lab_plot, frame_plot, length_plot), commands,
     )  # fmt: skip
 
 
@@ -319,3 +432,11 @@ def one_of(options: Sequence[str]) -> Callable[[str], bool]:
 def on_or_off(value: bool) -> bool:
     """A checkbox's value (viser casts whatever a client sends to a bool)."""
     return isinstance(value, bool)
+
+
+def notice_place(old: Settings, new: Settings) -> Place:
+    """Where the notice for ``new`` (refused by the scene, keeping ``old`` on screen) shows: the Frame
+    folder if only the frame changed, else the Scene folder."""
+    if new.scene == old.scene and (new.frame, new.beta) != (old.frame, old.beta):
+        return "frame"
+    return "scene"

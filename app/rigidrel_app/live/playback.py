@@ -6,6 +6,8 @@ from dataclasses import dataclass, replace
 
 #: The whole time window plays in this many wall seconds at speed 1.
 PLAY_SECONDS = 8.0
+#: Frames per wall second while playing (the server's animation rate): one step with the arrow keys.
+FRAME_RATE = 40.0
 
 
 @dataclass(frozen=True)
@@ -48,6 +50,12 @@ class Playback:
     def seek(self, now: float) -> Playback:
         """Paused at ``now`` (clamped into the window)."""
         return replace(self, now=min(max(now, self.window[0]), self.window[1]), playing=False)
+
+    def stepped(self, frames: int) -> Playback:
+        """Paused ``frames`` frames later (earlier if negative): as far as playing at this speed moves
+        in ``frames`` / :data:`FRAME_RATE` wall seconds, clamped into the window."""
+        t0, t1 = self.window
+        return self.seek(self.now + frames * self.speed * (t1 - t0) / (PLAY_SECONDS * FRAME_RATE))
 
     def with_window(self, window: tuple[float, float]) -> Playback:
         """Another scene's window; ``now`` stays where it was if the window holds it."""

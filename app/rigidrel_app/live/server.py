@@ -17,10 +17,11 @@ import viser
 
 from ..view.state import Settings
 from .greeting import greet
+from .playback import FRAME_RATE
 from .session import Session
 
 #: 3-D lanes are redrawn at this rate per client while playing (>= 30 fps delivered, with margin).
-ANIMATION_HZ = 40.0
+ANIMATION_HZ = FRAME_RATE
 #: Pause after each session's tick (seconds): hands the GIL to viser's sending thread.
 _HANDOFF = 0.00005
 

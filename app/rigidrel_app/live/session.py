@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import threading
 import time
+from collections.abc import Callable
 
 import viser
 
@@ -18,11 +19,15 @@ from ..backends.plotly import APP_CONFIG, SplicedFigure
 from ..backends.viser import LaneRenderer, show_figure_json
 from ..view.scene_view import LANE_Z, PLOT_HZ, Drawn, build_drawing, camera_pose, lane_states, nice_step
 from ..view.scene_view import readout_markdown as readout
-from ..view.state import Resolved, Settings, frame_choice, frame_choices, preset_of
-from ..view.state import presets as paper_presets
+from ..view.state import Resolved, Settings, frame_choice, frame_choices, preset_step, scene_presets
 from ..view.state import resolve as resolve_settings
-from .controls import build_controls
+from ..view.vocabulary import markdown_literal
+from .controls import Place, build_controls, notice_place, time_entry
+from .keys import Action
 from .playback import Playback
+
+#: A notice is dark red (and starts with ⚠ and is bold, for those who do not see the red).
+NOTICE_COLOR = "#B00020"
 
 
 class Session:
@@ -51,7 +56,7 @@ class Session:
             self.playback = Playback.start((-1.0, 1.0))
             self._wire()
             self._apply(resolved, refit=True)
-            self._set_notice(self.notice)
+            self._set_notice(self.notice, "scene")
 
     # ------------------------------------------------------------------ wiring
     def _wire(self) -> None:
@@ -67,29 +72,31 @@ class Session:
 
     # ------------------------------------------------------------------ state
     def change(self, new: Settings, refit: bool | None = None) -> None:
-        """Try ``new``: draw it if it makes a scene, else keep the last valid one and explain. The
-        camera refits if ``refit``, or, when that is None, if "Auto-fit view" is on."""
+        """Try ``new``: draw it if it makes a scene, else keep the last valid one on screen and explain
+        (the controls still show what was asked for, the paper-figure menu included). The camera
+        refits if ``refit``, or, when that is None, if "Auto-fit view" is on."""
         with self.lock:
             resolved = resolve_settings(new)
-            self.settings = new
-            if isinstance(resolved, str):
-                self._set_notice(resolved)
-                return
-            self._set_notice("")
+            old, self.settings = self.settings, new
             with self.client.atomic():
+                if isinstance(resolved, str):
+                    self._set_notice(resolved, notice_place(old, new))
+                    self.controls.show_settings(new)
+                    return
+                self._set_notice("")
                 self._apply(resolved, refit=self.controls.fit.value if refit is None else refit)
 
     def set_parameter(self, parameter: rr.Parameter, value: float) -> None:
         """A parameter control moved; a control of another scene (hidden here) changes nothing."""
         with self.lock:
             if parameter not in self.settings.description.parameters:
-                self._set_notice(f"{parameter.label} is not a control of this scene; nothing changed.")
+                self._set_notice(f"{parameter.label} is not a control of this scene; nothing changed.", "scene")
                 return
             self.change(self.settings.with_value(parameter.name, value))
 
     def choose_preset(self, label: str) -> None:
-        """Show a paper figure (the menu's "—" changes nothing)."""
-        chosen = paper_presets().get(label)
+        """Show a paper figure of this scene (the menu's "—" changes nothing)."""
+        chosen = scene_presets(self.settings.scene).get(label)
         if chosen is not None:
             self.change(chosen, refit=True)
 
@@ -102,6 +109,35 @@ class Session:
         with self.lock:
             self.set_playback(self.playback.toggled())
 
+    def perform(self, action: Action) -> None:
+        """What a key, the clicker or a button asks (:mod:`.keys`); each assigns what a pure function made."""
+        with self.lock, self.client.atomic():
+            if self.closed:
+                return
+            if action is Action.TOGGLE_PLAY:
+                self.toggle_play()
+                if not self.playback.playing:  # paused: the diagrams and readouts catch up with the rods
+                    self.draw_now(force_plots=True)
+            elif action in (Action.STEP_BACK, Action.STEP_FORWARD):
+                self.set_playback(self.playback.stepped(-1 if action is Action.STEP_BACK else 1))
+                self.draw_now(force_plots=True)
+            elif action in (Action.PREVIOUS_FIGURE, Action.NEXT_FIGURE):
+                figure = preset_step(self.settings, -1 if action is Action.PREVIOUS_FIGURE else 1)
+                if figure is not None:
+                    self.change(figure, refit=True)
+            elif action is Action.RESET_VIEW:
+                self.fit_camera()
+            else:  # a new Action must be handled here
+                raise AssertionError(action)
+
+    def checked(self, respond: Callable[[], None]) -> None:
+        """Respond to one value a client sent, under the lock, and count it whatever happened."""
+        with self.lock, self.client.atomic():
+            try:
+                respond()
+            finally:
+                self.messages_handled += 1
+
     def set_playback(self, playback: Playback) -> None:
         was = self.playback.playing
         self.playback = playback
@@ -109,18 +145,21 @@ class Session:
             self.controls.play.label = "Pause" if playback.playing else "Play"
             self.controls.play.icon = viser.Icon.PLAYER_PAUSE if playback.playing else viser.Icon.PLAYER_PLAY
 
-    def handled(self) -> None:
+    def refuse(self, text: str, place: Place = "scene") -> None:
         with self.lock:
-            self.messages_handled += 1
+            self._set_notice(text, place)
 
-    def refuse(self, text: str) -> None:
-        with self.lock:
-            self._set_notice(text)
-
-    def _set_notice(self, text: str) -> None:
+    def _set_notice(self, text: str, place: Place = "scene") -> None:
+        """Show ``text`` as the one notice, in the folder ``place`` (it replaces any older one, wherever
+        that was); "" clears it."""
         self.notice = text
-        self.controls.notice.content = f"**⚠ {text}**" if text else ""
-        self.controls.notice.visible = bool(text)
+        content = f'<span style="color: {NOTICE_COLOR}"><b>⚠ {markdown_literal(text)}</b></span>'
+        for where, handle in self.controls.notices.items():
+            shown = bool(text) and where == place
+            if shown and handle.content != content:
+                handle.content = content
+            if handle.visible != shown:
+                handle.visible = shown
 
     def frame_choice(self) -> str:
         d = self.drawn
@@ -135,17 +174,11 @@ class Session:
         choices = frame_choices(resolved.scene)
         if tuple(c.frame.options) != choices:
             c.frame.options = choices
-        for handle, value in (
-            (c.frame, frame_choice(resolved.scene, resolved.frame)),
-            (c.preset, preset_of(self.settings)),
-        ):
-            if handle.value != value:  # each assignment is a message to the browser
-                handle.value = value
-        if c.beta.value != self.settings.beta:
-            c.beta.value = self.settings.beta
+        chosen = frame_choice(resolved.scene, resolved.frame)
+        if c.frame.value != chosen:  # each assignment is a message to the browser
+            c.frame.value = chosen
         self.set_playback(self.playback.with_window(d.window))
-        c.time.min, c.time.max = d.window
-        c.time.step = nice_step(d.window[1] - d.window[0])
+        c.time.retarget(time_entry(d.window, nice_step(d.window[1] - d.window[0])))
         self.renderer.set_static(d.lane_statics())
         if refit:
             self.fit_camera()
@@ -175,7 +208,7 @@ class Session:
                 self._last_plot = wall
                 for plot, figure, items in zip(self.controls.plots, self._figures, d.moving_items(now, states)):
                     show_figure_json(plot, figure.with_dynamic(items))
-                self.controls.time.value = round(now, 6)
+                self.controls.time.show(round(now, 6))
 
     def tick(self, dt: float) -> None:
         """Advance playback by ``dt`` wall seconds and redraw (called by the animation loop)."""

@@ -22,6 +22,8 @@ from .vocabulary import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, La
 TICK_FRACTIONS = np.linspace(0.0, 1.0, 11)
 #: One turn of a clock hand per this much proper time (in units of the largest rest length).
 CLOCK_PERIOD = 1.0
+#: The ruler's name (x, x′) is this big: a coordinate's name, read from the back of a hall.
+AXIS_NAME_SIZE = 16.0
 
 
 @dataclass(frozen=True)
@@ -134,9 +136,10 @@ def obstacle_box(obstacle: rr.Obstacle, x: float, geo: LaneGeometry) -> Box:
 
 
 def lane_static(
-    geo: LaneGeometry, x_range: tuple[float, float], origin_event: rr.OriginEvent
+    geo: LaneGeometry, x_range: tuple[float, float], origin_event: rr.OriginEvent, axis: str = "x"
 ) -> tuple[Segments, tuple[Label, ...]]:
-    """A ruler of the frame's own x below the rods, and a mark where the origin event happens."""
+    """A ruler of the frame's own x below the rods, named ``axis`` (``"x"``, ``"x′"``) at its right
+    end, and a mark where the origin event happens."""
     lo, hi = x_range[0] / geo.unit, x_range[1] / geo.unit
     step = _nice_step((hi - lo) / 8.0)
     marks = np.arange(np.ceil(lo / step) * step, hi + 0.5 * step, step)
@@ -153,7 +156,8 @@ def lane_static(
         for m in marks
     )
     origin = Label(0.0, zr + 0.05, f"{origin_event.value} (origin)", Style(FRAME_COLOR), anchor="left", size=10)
-    return ruler, (*labels, origin)
+    name = Label(hi, zr + 0.06, axis, Style(FRAME_COLOR), anchor="right", size=AXIS_NAME_SIZE)
+    return ruler, (*labels, origin, name)
 
 
 def _nice_step(raw: float) -> float:

@@ -34,6 +34,10 @@ from .vocabulary import Chart, Item, Label, Segments
 LAB_Z = 0.55
 FRAME_Z = -0.55
 LANE_Z = (LAB_Z, FRAME_Z)
+#: Each lane's ruler is named by its frame's coordinate: the lab's x, the chosen frame's x′.
+RULER_NAMES = ("x", "x′")
+#: The clock rule, in the readout (docs/conventions.md says the same).
+CLOCK_RULE = "every clock reads 0 where its point starts changing velocity"
 #: The window plays in this many seconds at speed 1.
 PLAY_SECONDS = 8.0
 #: Diagrams follow playback at this rate (the 3-D lanes at the animation rate).
@@ -80,8 +84,9 @@ class Drawn:
         return 4.0 * max(abs(v) for v in (*self.window, *self.x_range))
 
     def lane_statics(self) -> list[tuple[Segments, tuple[Label, ...]]]:
-        """Each lane's ruler and origin mark (lab, chosen frame): drawn once per scene."""
-        return [lane_static(self.geometry, r, self.resolved.scene.origin_event) for r in self.lane_ranges]
+        """Each lane's ruler (x in the lab, x′ in the chosen frame) and origin mark: drawn once per scene."""
+        origin = self.resolved.scene.origin_event
+        return [lane_static(self.geometry, r, origin, axis) for r, axis in zip(self.lane_ranges, RULER_NAMES)]
 
     @property
     def charts(self) -> tuple[Chart, Chart, Chart]:
@@ -185,7 +190,7 @@ def readout_markdown(resolved: Resolved) -> str:
     ev = " · ".join(f"{k} ({_fixed(t)}, {_fixed(x)})" for k, (t, x) in scene.events.items())
     return (
         f"**Scene** {', '.join(params)}  \n**Final velocities** {v}  \n**Events (lab t, x)** {ev}  \n"
-        f"**Frame** {frame_title(frame)}"
+        f"**Frame** {frame_title(frame)}  \n**Clocks** {CLOCK_RULE}"
     )
 
 

@@ -102,12 +102,45 @@ def presets() -> dict[str, Settings]:
     return out
 
 
+def scene_presets(kind: str) -> dict[str, Settings]:
+    """The paper figures of one scene, by menu label, in the description's order."""
+    return {label: s for label, s in presets().items() if s.scene == kind}
+
+
 def preset_of(settings: Settings) -> str:
     """The preset menu's entry for ``settings``: the figure they reproduce, or :data:`NO_PRESET`."""
-    for label, s in presets().items():
-        if s.scene == settings.scene and s.values == settings.values and s.overlay == settings.overlay:
+    for label, s in scene_presets(settings.scene).items():
+        if s.values == settings.values and s.overlay == settings.overlay:
             return label
     return NO_PRESET
+
+
+@dataclass(frozen=True)
+class PresetMenu:
+    """What the paper-figure menu offers and shows: it follows the scene."""
+
+    options: tuple[str, ...]
+    """:data:`NO_PRESET`, then the scene's own figures (only that one entry for a scene without any)."""
+    value: str
+    """The figure the settings reproduce, or :data:`NO_PRESET`."""
+
+
+def preset_menu(settings: Settings) -> PresetMenu:
+    return PresetMenu((NO_PRESET, *scene_presets(settings.scene)), preset_of(settings))
+
+
+def preset_step(settings: Settings, step: int) -> Settings | None:
+    """The scene's paper figure ``step`` places after (``step`` > 0) or before the one ``settings``
+    show (a clicker's next and previous). From no figure, forward is the first and back the last;
+    ``None`` beyond either end, or for a scene with no figure (nothing to go to)."""
+    figures = list(scene_presets(settings.scene).values())
+    if not figures or step == 0:
+        return None
+    current = preset_of(settings)
+    if current == NO_PRESET:
+        return figures[0] if step > 0 else figures[-1]
+    k = list(scene_presets(settings.scene)).index(current) + step
+    return figures[k] if 0 <= k < len(figures) else None
 
 
 def frame_choices(scene: rr.Scene) -> tuple[str, ...]:

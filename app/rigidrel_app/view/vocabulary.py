@@ -8,6 +8,8 @@ them. Nothing here knows any physics.
 
 from __future__ import annotations
 
+import html
+import re
 from dataclasses import dataclass
 from typing import Literal
 
@@ -132,3 +134,12 @@ def plain_text(text: str) -> str:
     for tag in ("<b>", "</b>", "<sub>", "</sub>"):
         text = text.replace(tag, "")
     return text
+
+
+_MARKDOWN_PUNCTUATION = re.compile(r"([\\`*_{}\[\]()#+\-.!|~])")
+
+
+def markdown_literal(text: str) -> str:
+    """``text`` shown as it is in markdown (viser renders raw HTML in markdown, so a typed ``<b>``
+    or ``**`` must not become markup): HTML characters as entities, markdown punctuation escaped."""
+    return _MARKDOWN_PUNCTUATION.sub(r"\\\1", html.escape(text, quote=False))

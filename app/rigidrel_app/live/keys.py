@@ -1,0 +1,68 @@
+"""The keyboard, and a presentation clicker (it sends PageUp and PageDown): which key does what.
+
+A plain table, registered per tab with viser's command palette (``add_command``), so each
+key also appears there (Ctrl+K) with what it does. viser ignores these keys while a box, menu
+or checkbox has the focus, so typing a value never plays, steps or resets anything; ← and →
+on a focused slider handle move only that slider (``controls.ARROWS_STAY_IN_SLIDERS``).
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+from typing import Literal
+
+#: The keys used here, as viser names them (a subset of its ``HotkeyKey``).
+Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R"]
+
+
+class Action(enum.Enum):
+    """What a key asks of a tab (:meth:`rigidrel_app.live.session.Session.perform`)."""
+
+    TOGGLE_PLAY = "toggle play"
+    STEP_BACK = "step back"
+    STEP_FORWARD = "step forward"
+    PREVIOUS_FIGURE = "previous figure"
+    NEXT_FIGURE = "next figure"
+    RESET_VIEW = "reset view"
+
+
+@dataclass(frozen=True)
+class Hotkey:
+    key: Key
+    action: Action
+    label: str
+    """The command palette's entry."""
+    shown: str
+    """The key as the README and the panel's key line write it."""
+    brief: str
+    """What it does in a word or two, for the key line (neighbours that share it are listed together)."""
+
+
+HOTKEYS: tuple[Hotkey, ...] = (
+    Hotkey("space", Action.TOGGLE_PLAY, "Play / pause", "Space", "play"),
+    Hotkey("arrowleft", Action.STEP_BACK, "One frame back", "←", "step"),
+    Hotkey("arrowright", Action.STEP_FORWARD, "One frame forward", "→", "step"),
+    Hotkey("pageup", Action.PREVIOUS_FIGURE, "Previous paper figure of this scene", "PgUp", "figure"),
+    Hotkey("pagedown", Action.NEXT_FIGURE, "Next paper figure of this scene", "PgDn", "figure"),
+    Hotkey("R", Action.RESET_VIEW, "Reset view", "R", "reset"),
+)
+
+#: Keys kept free for what is planned but not built: no hotkey here may take them.
+RESERVED: dict[str, str] = {"F": "presenter mode"}
+
+
+def action_for(key: str) -> Action | None:
+    """The action of a key (viser's name for it), or ``None`` for a key that does nothing."""
+    return next((h.action for h in HOTKEYS if h.key == key), None)
+
+
+def key_line() -> str:
+    """One line for the control panel: ``Keys: Space play · ← → step · ...``."""
+    groups: list[tuple[list[str], str]] = []
+    for h in HOTKEYS:
+        if groups and groups[-1][1] == h.brief:
+            groups[-1][0].append(h.shown)
+        else:
+            groups.append(([h.shown], h.brief))
+    return "Keys: " + " · ".join(f"{' '.join(keys)} {brief}" for keys, brief in groups)

@@ -1,0 +1,266 @@
+"""The controls as a lecturer uses them, in a real browser: keys and a clicker, typed values and
+their notices, the mass ratio typed as a ratio, the paper-figure menu, resetting the view.
+
+Keys are pressed with nothing focused (as after a click on the 3-D view); values are typed key
+by key where that matters (the server sees every keystroke, as it does from a person).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+from rigidrel_app.live.controls import LOG_SLIDER_LABEL
+from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS
+from rigidrel_app.live.server import App
+from rigidrel_app.view.state import NO_PRESET, Settings, preset_menu
+from rigidrel_app.view.vocabulary import ROD_COLORS
+from tests.browser.test_app_browser import AppPage
+from tests.viser_client import wait_until
+
+pytestmark = pytest.mark.browser
+
+FIG3, FIG4 = preset_menu(Settings("rod-collision")).options[1:3]
+
+
+@pytest.fixture
+def collision(browser: Any) -> Iterator[AppPage]:
+    """A tab on a server whose tabs open on the rod collision (the paper's Fig. 3)."""
+    app = App(host="127.0.0.1", port=0, start=Settings("rod-collision"))
+    page = None
+    try:
+        page = AppPage(browser, app)
+        yield page
+    finally:
+        if page is not None:
+            page.close()
+        app.stop()
+
+
+@pytest.fixture
+def tab(browser: Any, app_server: App) -> Iterator[AppPage]:
+    page = AppPage(browser, app_server)
+    try:
+        yield page
+    finally:
+        page.close()
+
+
+# ---------------------------------------------------------------- finding things as a user does
+def row(tab: AppPage, label: str) -> Any:
+    """The control row whose label reads ``label``."""
+    name = tab.page.locator("label").filter(has_text=re.compile(f"^{re.escape(label)}$"))
+    return name.locator("xpath=ancestor::div[contains(@class, 'mantine-Flex-root')][1]")
+
+
+def box(tab: AppPage, label: str) -> Any:
+    """The box a person types into: a text box, or a slider's own number box."""
+    return row(tab, label).locator("input.mantine-TextInput-input, input.mantine-NumberInput-input").first
+
+
+def press(tab: AppPage, key: str) -> None:
+    """A key with nothing focused (keys typed into a box are the box's)."""
+    tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
+    tab.page.keyboard.press(key)
+
+
+def type_keys(tab: AppPage, label: str, text: str) -> None:
+    """Select what the box holds and type ``text`` key by key, as a person does."""
+    b = box(tab, label)
+    b.click()
+    b.press("Control+a")
+    b.press_sequentially(text, delay=40)
+
+
+def notice(tab: AppPage) -> str:
+    shown = tab.page.locator("p", has_text=re.compile("^⚠")).all_inner_texts()
+    return " ".join(shown)
+
+
+# ---------------------------------------------------------------- keys
+def test_space_plays_and_pauses_and_the_clock_readout_follows(tab: AppPage, shots: Path) -> None:
+    clock = box(tab, "t, t'")
+    start = clock.input_value()
+    press(tab, " ")
+    wait_until(lambda: tab.session.playback.playing)
+    wait_until(lambda: clock.input_value() != start)  # the time readout runs
+    press(tab, " ")
+    wait_until(lambda: not tab.session.playback.playing)
+    stopped = tab.session.playback.now
+    # paused: the readout shows the clock the rods stopped at, and stays there
+    wait_until(lambda: float(clock.input_value()) == pytest.approx(stopped, abs=1e-6))
+    tab.page.screenshot(path=str(shots / "paused_by_space.png"))
+    assert tab.session.playback.now == stopped and not tab.session.playback.playing
+
+
+def test_arrows_step_one_frame(tab: AppPage) -> None:
+    p = tab.session.playback
+    frame = (p.window[1] - p.window[0]) * p.speed / (PLAY_SECONDS * FRAME_RATE)
+    clock = box(tab, "t, t'")
+    press(tab, "ArrowRight")
+    wait_until(lambda: tab.session.playback.now == pytest.approx(p.now + frame, abs=1e-12))
+    wait_until(lambda: float(clock.input_value()) == pytest.approx(round(p.now + frame, 6), abs=1e-6))
+    press(tab, "ArrowLeft")
+    press(tab, "ArrowLeft")
+    wait_until(lambda: tab.session.playback.now == pytest.approx(p.now - frame, abs=1e-12))
+    assert not tab.session.playback.playing
+
+
+def test_arrows_on_a_focused_slider_move_only_that_slider(tab: AppPage) -> None:
+    """A slider keeps the focus after a drag: then → moves that slider, and does not also step
+    playback; the clicker's PageDown still goes to the next figure."""
+    uid = tab.control("V").get_attribute("id")
+    tab.page.locator(f"[id='{uid}'] [role=slider]").focus()
+    now = tab.session.playback.now
+    tab.page.keyboard.press("ArrowRight")
+    wait_until(lambda: tab.session.settings.value("v") == pytest.approx(0.61))
+    tab.page.keyboard.press("PageDown")  # the scene's first figure (Fig. 1): V back to 0.6
+    wait_until(lambda: tab.session.settings.overlay and tab.session.settings.value("v") == 0.6)
+    assert tab.session.playback.now == now  # no frame was stepped
+    press(tab, "ArrowRight")  # with nothing focused, → steps
+    wait_until(lambda: tab.session.playback.now > now)
+
+
+def test_page_down_and_up_walk_the_scenes_figures(collision: AppPage, shots: Path) -> None:
+    tab = collision
+    wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
+    press(tab, "PageDown")  # a clicker's "next"
+    wait_until(lambda: tab.control("Paper figure").input_value() == FIG4)
+    assert tab.session.settings.value("m2") == 0.5
+    wait_until(lambda: box(tab, "M2/M1").input_value() == "0.5")  # the ratio, not its log
+    tab.page.screenshot(path=str(shots / "fig4_by_page_down.png"))
+    press(tab, "PageDown")  # past the last figure: nothing happens
+    press(tab, "PageUp")
+    wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
+    wait_until(lambda: box(tab, "M2/M1").input_value() == "2")
+    assert tab.session.settings.value("m2") == 2.0
+
+
+def rod_bounds(img: np.ndarray) -> np.ndarray:
+    """Top, bottom, left and right pixel of the rods' colour: where the view puts them."""
+    rgb = np.array([int(ROD_COLORS[0][i : i + 2], 16) for i in (1, 3, 5)], dtype=float)
+    rows, cols = np.nonzero(np.abs(img - rgb).sum(axis=-1) < 60)
+    assert rows.size, "no rod on the canvas"
+    return np.array([rows.min(), rows.max(), cols.min(), cols.max()])
+
+
+def test_r_and_the_button_reset_the_view(tab: AppPage, shots: Path) -> None:
+    wait_until(lambda: tab.session.drawn is not None)
+    home = tab.canvas_after(np.zeros_like(tab.canvas()))  # the default view, settled
+    canvas = tab.page.locator("canvas[data-engine]")
+    b = canvas.bounding_box()
+    assert b is not None
+    x, y = b["x"] + 0.5 * b["width"], b["y"] + 0.8 * b["height"]
+    for reset in ("key", "button"):
+        tab.page.mouse.move(x, y)
+        tab.page.mouse.down()
+        tab.page.mouse.move(x + 120, y - 60, steps=8)  # the lecturer orbits the view away
+        tab.page.mouse.up()
+        moved = tab.canvas_after(home)
+        assert np.abs(rod_bounds(moved) - rod_bounds(home)).max() >= 8
+        if reset == "key":
+            press(tab, "r")
+        else:
+            tab.page.locator("button:visible", has_text="Reset view").click()
+        back = tab.canvas_after(moved)
+        # where the rods are drawn, not raw pixels: swiftshader may rasterise thin lines a pixel over
+        assert np.abs(rod_bounds(back) - rod_bounds(home)).max() <= 2, reset
+    tab.page.screenshot(path=str(shots / "view_reset.png"))
+
+
+def test_keys_typed_into_a_box_stay_in_the_box(collision: AppPage) -> None:
+    tab = collision
+    type_keys(tab, "M2/M1", "r 2")  # a space and an r, typed: neither plays nor resets anything
+    wait_until(lambda: "M2/M1 = 'r 2' refused" in tab.session.notice)
+    assert not tab.session.playback.playing
+    assert box(tab, "M2/M1").input_value() == "r 2"
+
+
+# ---------------------------------------------------------------- typed values and notices
+def test_the_mass_ratio_is_typed_and_shown_as_a_ratio(collision: AppPage, shots: Path) -> None:
+    tab = collision
+    uid = row(tab, LOG_SLIDER_LABEL).locator("label").get_attribute("for")
+    thumb = tab.page.locator(f"[id='{uid}'] [role=slider]")
+
+    def thumb_at(position: float) -> bool:  # within half a step of the slider
+        return abs(float(thumb.get_attribute("aria-valuenow") or "nan") - position) < 0.005
+
+    assert box(tab, "M2/M1").input_value() == "2" and thumb_at(np.log10(2.0))
+    assert tab.page.locator(f"[id='{uid}'] + .mantine-NumberInput-root").count() == 1
+    assert not tab.page.locator(f"[id='{uid}'] + .mantine-NumberInput-root").is_visible()  # no box of log10
+    for typed, ratio in (("0.01", 0.01), ("100", 100.0), ("0.5", 0.5)):
+        type_keys(tab, "M2/M1", typed)
+        wait_until(lambda ratio=ratio: tab.session.drawn.resolved.scene.parameters["m2"] == ratio)  # type: ignore[union-attr]
+        wait_until(lambda ratio=ratio: thumb_at(np.log10(ratio)))
+        assert box(tab, "M2/M1").input_value() == typed
+        wait_until(lambda: notice(tab) == "")  # "0" and "0.0" were refused on the way to 0.01; 0.01 is not
+        tab.page.screenshot(path=str(shots / f"m2_{typed}.png"))
+
+
+def test_abc_gives_a_notice_and_a_valid_value_clears_it(collision: AppPage, shots: Path) -> None:
+    tab = collision
+    type_keys(tab, "V2", "0.9")  # faster than V1: an older notice, about something else
+    wait_until(lambda: "so that the rods collide" in notice(tab))
+    type_keys(tab, "M2/M1", "abc")
+    wait_until(lambda: "M2/M1 = 'abc' refused" in notice(tab))
+    assert "[0.01, 100]" in notice(tab) and "rods collide" not in notice(tab)  # the older notice is gone
+    tab.page.screenshot(path=str(shots / "abc_refused.png"))
+    type_keys(tab, "M2/M1", "3")
+    wait_until(lambda: tab.session.settings.value("m2") == 3.0)
+    # V2 = 0.9 is still asked for, so the scene still refuses it: its notice is back, not the abc one
+    wait_until(lambda: "so that the rods collide" in notice(tab))
+    type_keys(tab, "V2", "0")
+    wait_until(lambda: tab.session.drawn.resolved.scene.parameters["v2"] == 0.0)  # type: ignore[union-attr]
+    assert tab.session.drawn.resolved.scene.parameters["m2"] == 3.0  # type: ignore[union-attr]
+    wait_until(lambda: notice(tab) == "")
+
+
+def test_beta_beyond_its_slider_is_refused_not_clamped(tab: AppPage, shots: Path) -> None:
+    type_keys(tab, "β (custom)", "0.999")
+    wait_until(lambda: "β (custom) = 0.999 refused" in notice(tab))
+    assert "[-0.99, 0.99]" in notice(tab)
+    handled = tab.session.messages_handled
+    tab.page.keyboard.press("Tab")  # leaving the box: the browser clamps it to 0.99 and sends that
+    wait_until(lambda: tab.session.messages_handled > handled)
+    assert "β (custom) = 0.999 refused" in notice(tab)  # still explained, not silently taken as 0.99
+    # the notice is where the lecturer is looking: in the Frame folder, under β, above Playback
+    shown = tab.page.locator("p", has_text=re.compile("^⚠")).bounding_box()
+    beta = row(tab, "β (custom)").bounding_box()
+    playback = tab.page.locator("text=Playback").first.bounding_box()
+    assert shown is not None and beta is not None and playback is not None
+    assert beta["y"] < shown["y"] < playback["y"]
+    tab.page.screenshot(path=str(shots / "beta_0.999_refused.png"))
+
+
+def test_typing_key_by_key_gives_the_typed_value(tab: AppPage) -> None:
+    """0 is out of V's range [0.01, 0.99]: typing 0.5 must still give 0.5 (a refused keystroke that is
+    put back under the typist's fingers turns it into 0.65 or the like), and 1.2 a notice."""
+    type_keys(tab, "V", "0.5")
+    wait_until(lambda: tab.session.settings.value("v") == 0.5)
+    tab.page.keyboard.press("Tab")
+    wait_until(lambda: notice(tab) == "")
+    assert box(tab, "V").input_value() == "0.5"
+    type_keys(tab, "V", "1.2")
+    wait_until(lambda: "V = 1.2 refused" in notice(tab) and "[0.01, 0.99]" in notice(tab))
+    tab.page.keyboard.press("Tab")
+    wait_until(lambda: box(tab, "V").input_value() == "0.5")  # back on the last valid value
+    assert tab.session.settings.value("v") == 0.5 and "V = 1.2 refused" in notice(tab)
+
+
+def test_the_figure_menu_follows_the_scene(collision: AppPage, shots: Path) -> None:
+    tab = collision
+    wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
+    tab.choose("Scene", "Constant acceleration")
+    wait_until(lambda: tab.session.settings.scene == "constant-acceleration")
+    wait_until(lambda: tab.control("Paper figure").input_value() == NO_PRESET)
+    tab.control("Paper figure").click()
+    options = tab.page.locator("[role=option]:visible").all_inner_texts()
+    tab.page.keyboard.press("Escape")
+    assert options == list(preset_menu(Settings("constant-acceleration")).options)
+    assert not any(o.startswith("Fig. 3") for o in options)
+    tab.page.screenshot(path=str(shots / "menu_after_scene_change.png"))
