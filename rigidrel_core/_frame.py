@@ -57,7 +57,7 @@ class Frame:
     def from_rapidity(cls, rapidity: float, name: str | None = None) -> Frame:
         """The frame of rapidity ``psi`` (``beta = tanh psi``), ``|psi| <= 700``, the float ``psi``
         taken as exact: ``tanh psi = expm1(2 psi)/(expm1(2 psi) + 2)`` and ``1 - |tanh psi| =
-        2/(exp(2|psi|) + 1)`` in 60 digits, so that the velocity and its gap to light speed agree
+        2/(exp(2|psi|) + 1)`` to double-double, so that the velocity and its gap to light speed agree
         and rapidities of frames add exactly under ``@``."""
         allowed = "a finite number with |rapidity| <= 700"
         if isinstance(rapidity, bool) or not isinstance(rapidity, (int, float)):

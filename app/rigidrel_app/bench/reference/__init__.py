@@ -5,7 +5,7 @@ Independent of :mod:`rigidrel_core` by construction (it never imports it; units 
 * scene solutions follow the paper's own route at 50 digits: rapidities via ``atanh``,
   the barycentric velocity ``u = (m1 g1 V1 + m2 g2 V2)/(m1 g1 + m2 g2)`` (Sec. 6, Eq. (26)),
   velocity addition ``(V - u)/(1 - u V)`` into and out of the barycentric frame, Eq. (29)
-  for the restitution (the core uses proper-velocity algebra in ``decimal``);
+  for the restitution (the core uses proper-velocity algebra in double-double);
 * worldlines are the paper's lab formulas, point by point: Eq. (4)
   ``x = xi + (sqrt(1 + a'^2 t^2) - 1)/a'`` for constant acceleration with each point's own
   ``a' = 1/(xi + 1/a'_B)`` (Eq. (15)), Eq. (20) ``x = sqrt(L0^2 + t^2)`` for impulses,
