@@ -224,9 +224,12 @@ def test_final_velocities(case: dict[str, Any]) -> None:
     for rod, ref in zip(scene.rods, case["final_velocities"]):
         v_ref = float(ref)
         got = rod.motion.velocity_final
-        if v_ref == 0.0:  # an exact zero (e.g. eps = 1/2 of case I stops rod 1) stays exactly zero
+        if abs(v_ref) <= 1e-30:
+            # a true zero (e.g. eps = 1/2 of case I stops rod 1), which the paper's route at 50 digits
+            # leaves as noise up to ~1e-40: the core's double-double solution keeps it exactly zero
             assert (got.hi, got.lo) == (0.0, 0.0)
-        assert abs(got.value - v_ref) <= TOL_VELOCITY * abs(v_ref)
+        else:
+            assert abs(got.value - v_ref) <= TOL_VELOCITY * abs(v_ref)
 
     for rod, ref in zip(scene.rods, case["final_gaps"]):
         # the gap to light speed 1 - |v| is carried separately and must be as good
