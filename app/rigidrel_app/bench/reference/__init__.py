@@ -259,10 +259,20 @@ def lab_time(x: OfTime, beta: Mp, t_frame: Mp, solver: SliceSolver = "bisection"
         lo *= 4
     while f(hi) < 0:
         hi *= 4
-    scale = max(abs(lo), abs(hi), mp.mpf(1))
-    tol = scale * mp.mpf(10) ** (-(REFERENCE_DIGITS - 2))
     if solver == "anderson-bjorck":
-        return _anderson_bjorck(f, lo, hi, tol)
+        return _anderson_bjorck(f, lo, hi, _bracket_tolerance(lo, hi))
+    return _bisect(f, lo, hi)
+
+
+def _bracket_tolerance(lo: Mp, hi: Mp) -> Mp:
+    """How narrow a root's bracket gets: ``10^-(digits - 2)`` of its scale."""
+    return max(abs(lo), abs(hi), mp.mpf(1)) * mp.mpf(10) ** (-(REFERENCE_DIGITS - 2))
+
+
+def _bisect(f: Callable[[Mp], Mp], lo: Mp, hi: Mp) -> Mp:
+    """The root of increasing ``f`` in ``[lo, hi]`` (``f(lo) <= 0 <= f(hi)``), by bisection to
+    :func:`_bracket_tolerance`."""
+    tol = _bracket_tolerance(lo, hi)
     while hi - lo > tol:
         mid = (lo + hi) / 2
         if f(mid) < 0:
@@ -356,14 +366,7 @@ def signal_arrival(w: Worldline, source: tuple[Mp, Mp]) -> tuple[Mp, Mp]:
     lo, hi = t0, t0 + step
     while h(hi) < 0:
         lo, hi = hi, hi + 2 * (hi - t0)
-    tol = max(abs(lo), abs(hi), mp.mpf(1)) * mp.mpf(10) ** (-(REFERENCE_DIGITS - 2))
-    while hi - lo > tol:
-        mid = (lo + hi) / 2
-        if h(mid) < 0:
-            lo = mid
-        else:
-            hi = mid
-    t = (lo + hi) / 2
+    t = _bisect(h, lo, hi)
     return t, x0 + d * (t - t0)
 
 
