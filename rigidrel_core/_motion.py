@@ -195,10 +195,10 @@ class RigidMotion:
         default_factory=dict[bytes, "tuple[LabRow, ...]"], init=False, repr=False, compare=False
     )
 
-    def lab_rows(self, fractions: FloatArray) -> tuple[LabRow, ...]:
+    def lab_rows(self, fractions: FloatArray, *, exact: bool = False) -> tuple[LabRow, ...]:
         """The frame-independent constants of material points ``fractions`` (see :func:`lab_row`),
-        worked out once per set of fractions."""
-        key = fractions.tobytes()
+        worked out once per set of fractions; ``exact`` also fills their double-double low parts."""
+        key = (b"x" if exact else b"") + fractions.tobytes()
         rows = self._lab_rows.get(key)
         if rows is None:
             if len(self._lab_rows) >= _MAX_CACHED_FRACTIONS:
@@ -208,11 +208,13 @@ class RigidMotion:
                 for v in (self.velocity_initial, self.velocity_final)
                 for sign in (0.0, -1.0, 1.0)
             ]
-            rows = tuple(lab_row(self, f, sums) for f in fractions.tolist())
+            rows = tuple(lab_row(self, f, sums, exact) for f in fractions.tolist())
             self._lab_rows[key] = rows
         return rows
 
 
+#: A float sum that keeps less than 1/64 of its terms is redone in double-double.
+_CANCELLATION = 64.0
 #: Sets of fractions whose lab constants a motion keeps (the ends, the ticks, a few more).
 _MAX_CACHED_FRACTIONS = 16
 
@@ -236,15 +238,17 @@ class LabRow(NamedTuple):
     chasing an ultra-relativistic point), and their difference is then exact."""
 
 
-def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum]) -> LabRow:
+def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum], exact: bool = False) -> LabRow:
     """The lab constants of fraction ``f`` (``sums``: :func:`_two_anchor_sums` of the motion's
-    ``1/gamma`` and ``exp(-+theta)`` before and after), each to double-double.
+    ``1/gamma`` and ``exp(-+theta)`` before and after).
 
     Each is ``x_C + sign rho F`` (from the centre) or ``x_V + sign rho (F - 1)`` (from the vertex),
-    whichever has the smaller terms, with ``F`` to double-double from the velocity's exact parts
-    (:func:`_factor_dd`): an exact product and an exact sum, so that a switch event on (or a hair
-    off) the origin's light cone, or a tangent through the origin, keeps its coordinate to ~1e-32
-    of the scene's size, and a boost of any ``gamma`` multiplies an exact number.
+    whichever has the smaller terms. In float64 unless the two terms cancel (or ``exact`` asks for
+    the low parts); then to double-double (:func:`_anchored_dd`, ``F`` from the velocity's exact
+    parts), so that a switch event on (or a hair off) the origin's light cone, or a tangent through
+    the origin, keeps its coordinate to ~1e-32 of the scene's size, and a boost of any ``gamma``
+    multiplies an exact number. ``exact`` rows carry every value's low part (light signals take
+    differences of two events' coordinates, which may agree in far more digits than float64 has).
     """
     sig, xc = float(m.sign), m.horizon_x
     # the point's rest-distance from the centre and its vertex, to double-double: the ends are
@@ -263,16 +267,19 @@ def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum]) -> LabRow:
         rho, rho_lo = 0.0, 0.0
     srho, srho_lo, axc, ax = sig * rho, sig * rho_lo, abs(xc), abs(x_lab)
     highs, lows = [], []
-    for f_hi, f_lo, g_hi, g_lo, abs_f, abs_g in sums:
-        if axc + rho * abs_f <= ax + rho * abs_g:
-            anchor, anchor_lo, hi, lo = xc, 0.0, f_hi, f_lo
-        else:
-            anchor, anchor_lo, hi, lo = x_lab, x_lo, g_hi, g_lo
-        p, pe = two_prod(srho, hi)
-        s, se = two_sum(anchor, p)
-        s, e = two_sum(s, se + (pe + (srho * lo + srho_lo * hi) + anchor_lo))
-        highs.append(s)
-        lows.append(e)
+    for f_float, f1_float, abs_f, abs_f1, v, sign in sums:
+        by_centre, by_vertex = axc + rho * abs_f, ax + rho * abs_f1
+        from_centre = by_centre <= by_vertex
+        if not exact:
+            total = xc + srho * f_float if from_centre else x_lab + srho * f1_float
+            if abs(total) * _CANCELLATION >= (by_centre if from_centre else by_vertex):
+                highs.append(total)
+                lows.append(0.0)
+                continue
+        anchor = (xc, 0.0) if from_centre else (x_lab, x_lo)
+        hi, lo = _anchored_dd(anchor, (srho, srho_lo), v, sign, not from_centre)
+        highs.append(hi)
+        lows.append(lo)
     return LabRow(rho, x_lab, *highs, low=tuple(lows))  # type: ignore[arg-type]
 
 
@@ -290,20 +297,36 @@ def _factor_dd(v: ExactVelocity, sign: float) -> DD:
     return dd.sqrt(dd.div(_one_plus_dd(sign, v), _one_plus_dd(-sign, v)))
 
 
-_AnchorSum = tuple[float, float, float, float, float, float]
+_AnchorSum = tuple[float, float, float, float, ExactVelocity, float]
 
 
 def _two_anchor_sums(v: ExactVelocity, sign: float) -> _AnchorSum:
-    """``(F, F - 1)`` to double-double for the factor ``F`` of :func:`_factor_dd`, and their float
-    magnitudes: ``F_hi, F_lo, (F-1)_hi, (F-1)_lo, |F|, |F - 1|``.
+    """``(F, F - 1, |F|, |F - 1|, v, sign)`` in float64 for the factor ``F`` of :func:`_factor_dd`.
 
     A row's tangent intercept and switch-event light-cone coordinates are ``x_C + sign rho F`` (from
-    the centre) or ``x_V + sign rho (F - 1)`` (from the vertex).
+    the centre) or ``x_V + sign rho (F - 1)`` (from the vertex); ``F - 1`` is
+    ``-(gamma v)^2/((gamma + 1) gamma)`` for ``1/gamma`` and ``expm1(sign theta)`` for
+    ``exp(sign theta)``, without cancellation.
     """
-    f_hi, f_lo = _factor_dd(v, sign)
-    g_hi, g_lo = two_sum(f_hi, -1.0)
-    g_hi, g_lo = two_sum(g_hi, g_lo + f_lo)
-    return f_hi, f_lo, g_hi, g_lo, abs(f_hi), abs(g_hi)
+    if sign == 0.0:
+        g, u = v.lorentz_factor(), v.proper_velocity()
+        f, f1 = 1.0 / g, -u * u / ((g + 1.0) * g)
+    else:
+        theta = sign * v.rapidity()
+        f, f1 = math.exp(theta), math.expm1(theta)
+    return f, f1, abs(f), abs(f1), v, sign
+
+
+def _anchored_dd(anchor: DD, srho: DD, v: ExactVelocity, sign: float, minus_one: bool) -> DD:
+    """``anchor + sign_rho (F - [1 if minus_one])`` to double-double, ``F`` from :func:`_factor_dd`:
+    an exact product and an exact sum."""
+    hi, lo = _factor_dd(v, sign)
+    if minus_one:
+        hi, e = two_sum(hi, -1.0)
+        hi, lo = two_sum(hi, e + lo)
+    p, pe = two_prod(srho[0], hi)
+    s, se = two_sum(anchor[0], p)
+    return two_sum(s, se + (pe + (srho[0] * lo + srho[1] * hi) + anchor[1]))
 
 
 def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatArray) -> MotionPlan:

@@ -334,7 +334,7 @@ class Scene:
         if isinstance(source, str) and source != self.origin_event.value:
             self.source_event(source, frame)  # names the valid sources if this one is not
             spec = next(s for s in self.event_specs if s.name == source)
-            row = self.rods[spec.rod].motion.lab_rows(ENDS)[spec.end]
+            row = self.rods[spec.rod].motion.lab_rows(ENDS, exact=True)[spec.end]
             if spec.phase == "start":
                 return (-row.minus_u_start, -row.low[1]), (row.w_start, row.low[2])
             return (-row.minus_u_stop, -row.low[4]), (row.w_stop, row.low[5])

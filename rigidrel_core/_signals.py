@@ -127,7 +127,7 @@ def signal_arrival_on(
     """
     u0, w0 = source
     up, down = frame.doppler_factors()
-    row = motion.lab_rows(np.array([fraction]))[0]
+    row = motion.lab_rows(np.array([fraction]), exact=True)[0]
     lo = row.low
     u_start, w_start = (-row.minus_u_start, -lo[1]), (row.w_start, lo[2])
     u_stop, w_stop = (-row.minus_u_stop, -lo[4]), (row.w_stop, lo[5])
