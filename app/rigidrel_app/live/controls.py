@@ -190,21 +190,20 @@ class NumberControl:
     def wire(self, a: Actions, current: Callable[[], float], act: Callable[[float], None], place: Place) -> None:
         """Guard the slider (and the box); either one sets the number through ``act``; a refusal's
         notice shows in the folder ``place``."""
-        e = self
 
         def judge_slider(position: float) -> Verdict:
-            verdict, e._clamped_to = e.entry.judge_position(position, e._clamped_to)
+            verdict, self._clamped_to = self.entry.judge_position(position, self._clamped_to)
             return verdict
 
         def slider_position() -> float:
-            return e.entry.to_slider(current())
+            return self.entry.to_slider(current())
 
         def box_text() -> str:
-            return e.entry.text(current())
+            return self.entry.text(current())
 
         guard_number(self.slider, a, judge=judge_slider, act=act, put_back=slider_position, place=place)
         if self.box is not None:
-            guard_number(self.box, a, judge=lambda t: e.entry.read(t), act=act, put_back=box_text, place=place)
+            guard_number(self.box, a, judge=lambda t: self.entry.read(t), act=act, put_back=box_text, place=place)
 
 
 def hidden_box_css(controls: Sequence[NumberControl]) -> str:
