@@ -119,7 +119,7 @@ def relative_rapidity(v: ExactVelocity, frame: ExactVelocity) -> float:
 _TINY_GAP = 2.0**-53
 
 
-def _one_minus(v: ExactVelocity) -> DD:
+def one_minus_dd(v: ExactVelocity) -> DD:
     """``1 - v`` as a double-double: from ``hi + lo`` (exactly), or the stored gap where that is the
     more accurate (``v`` within 2**-53 of light)."""
     if v.hi >= 0.5 and v.gap < _TINY_GAP:
@@ -127,8 +127,8 @@ def _one_minus(v: ExactVelocity) -> DD:
     return _dd.add_float((-v.hi, -v.lo), 1.0)
 
 
-def _one_plus(v: ExactVelocity) -> DD:
-    """``1 + v`` as a double-double (see :func:`_one_minus`)."""
+def one_plus_dd(v: ExactVelocity) -> DD:
+    """``1 + v`` as a double-double (see :func:`one_minus_dd`)."""
     if v.hi <= -0.5 and v.gap < _TINY_GAP:
         return v.gap, 0.0
     return _dd.add_float((v.hi, v.lo), 1.0)
@@ -143,7 +143,7 @@ def compose_velocities(a: ExactVelocity, b: ExactVelocity) -> ExactVelocity:
     within 1e-30 of light compose without cancellation, and the gap is correctly rounded.
     ``ValueError`` if the composed gap is below float64's range (the speed would be light's).
     """
-    a_minus, a_plus, b_minus, b_plus = _one_minus(a), _one_plus(a), _one_minus(b), _one_plus(b)
+    a_minus, a_plus, b_minus, b_plus = one_minus_dd(a), one_plus_dd(a), one_minus_dd(b), one_plus_dd(b)
     if a.hi * b.hi < 0.0 and abs(a.hi) >= 0.5 and abs(b.hi) >= 0.5:
         s = _dd.add(_dd.mul(a_plus, b_plus), _dd.mul(a_minus, b_minus))
         denominator = (0.5 * s[0], 0.5 * s[1])

@@ -48,7 +48,7 @@ import numpy.typing as npt
 
 from . import _dd as dd
 from ._dd import DD, two_prod, two_sum
-from ._exact import BELOW_ONE, ExactVelocity, relative_rapidity
+from ._exact import BELOW_ONE, ExactVelocity, one_minus_dd, one_plus_dd, relative_rapidity
 from ._frame import Frame
 from ._validate import non_decreasing
 
@@ -195,6 +195,16 @@ class RigidMotion:
         default_factory=dict[bytes, "tuple[LabRow, ...]"], init=False, repr=False, compare=False
     )
 
+    @functools.cached_property
+    def rapidity_change(self) -> float:
+        """``|theta_f - theta_i|`` (lab rapidities, invariant): a point at rest-distance ``rho`` from
+        the centre ages ``rho |theta_f - theta_i|`` during the change (proper acceleration ``1/rho``)."""
+        return abs(relative_rapidity(self.velocity_final, self.velocity_initial))
+
+    def radius(self, fraction: float) -> float:
+        """Rest-distance of material point ``fraction`` from the centre (see :func:`lab_row`)."""
+        return self.lab_rows(np.array([fraction]))[0].radius
+
     def lab_rows(self, fractions: FloatArray, *, exact: bool = False) -> tuple[LabRow, ...]:
         """The frame-independent constants of material points ``fractions`` (see :func:`lab_row`),
         worked out once per set of fractions; ``exact`` also fills their double-double low parts."""
@@ -283,18 +293,13 @@ def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum], exact: bool = 
     return LabRow(rho, x_lab, *highs, low=tuple(lows))  # type: ignore[arg-type]
 
 
-def _one_plus_dd(sign: float, v: ExactVelocity) -> DD:
-    """``1 + sign v`` to double-double from the velocity's parts."""
-    s, e = two_sum(1.0, sign * v.hi)
-    return two_sum(s, e + sign * v.lo)
-
-
 def _factor_dd(v: ExactVelocity, sign: float) -> DD:
     """To double-double: ``1/gamma = sqrt((1 - v)(1 + v))`` for ``sign = 0``, else
     ``exp(sign theta) = sqrt((1 + sign v)/(1 - sign v))`` (``theta = atanh v``)."""
+    plus, minus = one_plus_dd(v), one_minus_dd(v)
     if sign == 0.0:
-        return dd.sqrt(dd.mul(_one_plus_dd(1.0, v), _one_plus_dd(-1.0, v)))
-    return dd.sqrt(dd.div(_one_plus_dd(sign, v), _one_plus_dd(-sign, v)))
+        return dd.sqrt(dd.mul(plus, minus))
+    return dd.sqrt(dd.div(plus, minus) if sign > 0.0 else dd.div(minus, plus))
 
 
 _AnchorSum = tuple[float, float, float, float, ExactVelocity, float]
@@ -374,8 +379,7 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
         same_side = sig * x_c >= 0.0  # the direct sum x'_C + sign q_0 does not cancel
         c_i = m.velocity_initial.lorentz_factor() / math.cosh(th_i)
         c_f = m.velocity_final.lorentz_factor() / math.cosh(th_f)
-        # proper time the change takes per unit rest-distance: the lab rapidity change (invariant)
-        turn = abs(relative_rapidity(m.velocity_final, m.velocity_initial))
+        turn = m.rapidity_change  # the proper time the change takes per unit rest-distance
         for rho, x_lab, a_i, minus_u, w, a_f, minus_u_stop, w_stop, _ in m.lab_rows(fractions):
             q0 = math.hypot(rho, t_c)
             x_hyp = x_c + sig * q0 if same_side else x_lab * (xc - sig * rho) / (x_c - sig * q0)

@@ -373,13 +373,8 @@ class Scene:
             tau = as_real("proper_time", proper_time, "a finite number")
         motion = self.rods[i].motion
         name = f"comoving with {self.rods[i].name} at f = {f:g}"
-        rho = (
-            motion.radius_left + motion.sign * f * motion.length
-            if 0.0 < f < 1.0
-            else (motion.radius_left if f == 0.0 else motion.radius_right)
-        )
-        turn = abs(relative_rapidity(motion.velocity_final, motion.velocity_initial))
-        if tau >= rho * turn:
+        rho = motion.radius(f)
+        if tau >= rho * motion.rapidity_change:
             return Frame(motion.velocity_final, name)
         if tau <= 0.0:
             return Frame(motion.velocity_initial, name)
