@@ -108,8 +108,11 @@ class Parameter:
 
     def check(self, value: object) -> float:
         """``value`` as a float if it lies in :attr:`domain`; else :class:`ParameterError` naming it."""
-        if type(value) is float and -math.inf < value < math.inf and value in self.domain:
-            return value  # the common case, without composing the message
+        domain = self.domain
+        if type(value) is float and (
+            domain.lo < value < domain.hi or (-math.inf < value < math.inf and value in domain)
+        ):
+            return value  # the common case (a float in range, so finite), without composing the message
         allowed = f"a finite number {self.domain.text()}"
         x = as_real(self.name, value, allowed)
         if x not in self.domain:
@@ -181,6 +184,7 @@ class SceneDescription:
     order: int = 100
     """Position in the app's menu (teaching order)."""
     parameter_map: Mapping[str, Parameter] = field(init=False, repr=False, compare=False)
+    _defaults: Mapping[str, float | None] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         names = [p.name for p in self.parameters]
@@ -189,6 +193,7 @@ class SceneDescription:
         if self.default_frame not in self.frames or self.frames[:1] != ("lab",) or self.default_frame == "lab":
             raise ValueError(f"{self.kind}: frames must start with 'lab' and hold a default other than the lab")
         object.__setattr__(self, "parameter_map", MappingProxyType({p.name: p for p in self.parameters}))
+        object.__setattr__(self, "_defaults", MappingProxyType(self.defaults()))
 
     def parameter(self, name: str) -> Parameter:
         try:
@@ -206,9 +211,11 @@ class SceneDescription:
         A constructor that builds on another scene's (a registered variant) gets its scene
         stamped with this description's kind and parameters, so that the scene names its own
         description (:func:`rigidrel_core.describe`)."""
+        known = self.parameter_map
         for name in values:
-            self.parameter(name)
-        given = {**self.defaults(), **values}
+            if name not in known:
+                self.parameter(name)  # names the parameters there are
+        given = {**self._defaults, **values}
         scene = self.constructor(**given)
         if scene.kind == self.kind:
             return scene

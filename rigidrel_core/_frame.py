@@ -29,7 +29,7 @@ from ._validate import ParameterError, check_velocity
 FloatArray = npt.NDArray[np.float64]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Frame:
     """An inertial frame: its velocity relative to the lab (c = 1) and an optional name.
 
@@ -41,6 +41,13 @@ class Frame:
 
     velocity: ExactVelocity
     name: str | None = None
+
+    def __init__(self, velocity: ExactVelocity, name: str | None = None) -> None:
+        # into the instance's dict, not through one object.__setattr__ call each (the generated
+        # __init__): a scene makes its frame presets on every slider change
+        fields = self.__dict__
+        fields["velocity"] = velocity
+        fields["name"] = name
 
     # ------------------------------------------------------------------ constructors
     @classmethod

@@ -64,8 +64,9 @@ _SHUFFLED_MIN = 4096
 #: enough samples: on such a machine 4096 was 1.3 times slower than 32768 on sorted curved
 #: pieces, 65536 a few percent faster.
 _BLOCK = 32768
-#: Up to this many samples (rows x times) are computed in Python floats, one at a time.
-_SCALAR_MAX = 32
+#: Up to this many samples (rows x times) are computed in Python floats, one at a time (measured
+#: crossover with the branch-free form's numpy calls: 150 to 200 samples for 4 rows).
+_SCALAR_MAX = 128
 #: The three pieces of a row, in time order (see :func:`_piece`).
 _BEFORE, _CURVED, _AFTER = 0, 1, 2
 #: Stand-in for a zero radius in a denominator that is then multiplied by zero.
@@ -168,7 +169,7 @@ def _hyperbola(t: FloatArray, c: _RowArrays, out: FloatArray, work: FloatArray) 
     return np.add(out, c.x_hyp, out)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class RigidMotion:
     """One rod: inertial, one Born-rigid velocity change, inertial (lab description).
 
@@ -195,6 +196,31 @@ class RigidMotion:
         default_factory=dict[bytes, "tuple[LabRow, ...]"], init=False, repr=False, compare=False
     )
 
+    def __init__(
+        self,
+        length: float,
+        sign: Literal[1, -1],
+        horizon_x: float,
+        radius_left: float,
+        radius_right: float,
+        vertex_left: float,
+        velocity_initial: ExactVelocity,
+        velocity_final: ExactVelocity,
+    ) -> None:
+        # the instance's dict filled at once, not through one object.__setattr__ call per field (the
+        # generated __init__): every scene change makes its motions
+        self.__dict__.update(
+            length=length,
+            sign=sign,
+            horizon_x=horizon_x,
+            radius_left=radius_left,
+            radius_right=radius_right,
+            vertex_left=vertex_left,
+            velocity_initial=velocity_initial,
+            velocity_final=velocity_final,
+            _lab_rows={},
+        )
+
     @functools.cached_property
     def rapidity_change(self) -> float:
         """``|theta_f - theta_i|`` (lab rapidities, invariant): a point at rest-distance ``rho`` from
@@ -213,12 +239,11 @@ class RigidMotion:
         if rows is None:
             if len(self._lab_rows) >= _MAX_CACHED_FRACTIONS:
                 self._lab_rows.clear()
-            sums = [
-                _two_anchor_sums(v, sign)
-                for v in (self.velocity_initial, self.velocity_final)
-                for sign in (0.0, -1.0, 1.0)
-            ]
-            rows = tuple(lab_row(self, f, sums, exact) for f in fractions.tolist())
+            sums = (*_anchor_sums(self.velocity_initial), *_anchor_sums(self.velocity_final))
+            if exact:
+                rows = tuple(lab_row(self, f, sums, True) for f in fractions.tolist())
+            else:
+                rows = _float_lab_rows(self, fractions.tolist(), sums)
             self._lab_rows[key] = rows
         return rows
 
@@ -249,7 +274,7 @@ class LabRow(NamedTuple):
 
 
 def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum], exact: bool = False) -> LabRow:
-    """The lab constants of fraction ``f`` (``sums``: :func:`_two_anchor_sums` of the motion's
+    """The lab constants of fraction ``f`` (``sums``: :func:`_anchor_sums` of the motion's
     ``1/gamma`` and ``exp(-+theta)`` before and after).
 
     Each is ``x_C + sign rho F`` (from the centre) or ``x_V + sign rho (F - 1)`` (from the vertex),
@@ -269,15 +294,20 @@ def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum], exact: bool = 
         along, along_lo = m.length, 0.0
     else:
         along, along_lo = two_prod(f, m.length)
-    rho, rho_lo = two_sum(m.radius_left, sig * along)
-    rho_lo += sig * along_lo
-    x_lab, x_lo = two_sum(m.vertex_left, along)
-    x_lo += along_lo
+    # two_sum(radius_left, sig along) and two_sum(vertex_left, along), written out
+    a, b = m.radius_left, sig * along
+    rho = a + b
+    t = rho - a
+    rho_lo = (a - (rho - t)) + (b - t) + sig * along_lo
+    a = m.vertex_left
+    x_lab = a + along
+    t = x_lab - a
+    x_lo = (a - (x_lab - t)) + (along - t) + along_lo
     if rho < 0.0:  # a point beyond the centre cannot be (radii are >= 0); only rounding gets here
         rho, rho_lo = 0.0, 0.0
     srho, srho_lo, axc, ax = sig * rho, sig * rho_lo, abs(xc), abs(x_lab)
     highs, lows = [], []
-    for f_float, f1_float, abs_f, abs_f1, v, sign in sums:
+    for k, (f_float, f1_float, abs_f, abs_f1) in enumerate(sums):
         by_centre, by_vertex = axc + rho * abs_f, ax + rho * abs_f1
         from_centre = by_centre <= by_vertex
         if not exact:
@@ -287,10 +317,62 @@ def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum], exact: bool = 
                 lows.append(0.0)
                 continue
         anchor = (xc, 0.0) if from_centre else (x_lab, x_lo)
-        hi, lo = _anchored_dd(anchor, (srho, srho_lo), v, sign, not from_centre)
+        v = m.velocity_initial if k < 3 else m.velocity_final
+        hi, lo = _anchored_dd(anchor, (srho, srho_lo), v, _FACTOR_SIGNS[k % 3], not from_centre)
         highs.append(hi)
         lows.append(lo)
-    return LabRow(rho, x_lab, *highs, low=tuple(lows))  # type: ignore[arg-type]
+    return LabRow._make((rho, x_lab, *highs, tuple(lows)))
+
+
+_NO_LOW_PARTS = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+
+
+def _float_lab_rows(m: RigidMotion, fractions: list[float], sums: Sequence[_AnchorSum]) -> tuple[LabRow, ...]:
+    """``lab_row(m, f, sums)`` for every fraction: the same operations, written out for the common
+    case where no sum cancels (each row is then six float sums, each from the centre or from the
+    vertex); a row where one does is made by :func:`lab_row` itself (double-double)."""
+    sig, xc = float(m.sign), m.horizon_x
+    r_left, v_left, length = m.radius_left, m.vertex_left, m.length
+    axc = abs(xc)
+    (f1, g1, af1, ag1), (f2, g2, af2, ag2), (f3, g3, af3, ag3) = sums[0], sums[1], sums[2]
+    (f4, g4, af4, ag4), (f5, g5, af5, ag5), (f6, g6, af6, ag6) = sums[3], sums[4], sums[5]
+    c = _CANCELLATION
+    rows = []
+    for f in fractions:
+        along = 0.0 if f == 0.0 else length if f == 1.0 else f * length  # lab_row's, without the low parts
+        rho = r_left + sig * along  # the high parts of lab_row's two_sums
+        x_lab = v_left + along
+        srho, ax = sig * rho, abs(x_lab)
+        # each sum: from the centre (x_C + sign rho F) or the vertex (x_V + sign rho (F - 1)),
+        # whichever has the smaller terms; kept if it keeps 1/64 of them
+        b1, d1 = axc + rho * af1, ax + rho * ag1
+        s1 = xc + srho * f1 if b1 <= d1 else x_lab + srho * g1
+        b2, d2 = axc + rho * af2, ax + rho * ag2
+        s2 = xc + srho * f2 if b2 <= d2 else x_lab + srho * g2
+        b3, d3 = axc + rho * af3, ax + rho * ag3
+        s3 = xc + srho * f3 if b3 <= d3 else x_lab + srho * g3
+        b4, d4 = axc + rho * af4, ax + rho * ag4
+        s4 = xc + srho * f4 if b4 <= d4 else x_lab + srho * g4
+        b5, d5 = axc + rho * af5, ax + rho * ag5
+        s5 = xc + srho * f5 if b5 <= d5 else x_lab + srho * g5
+        b6, d6 = axc + rho * af6, ax + rho * ag6
+        s6 = xc + srho * f6 if b6 <= d6 else x_lab + srho * g6
+        if (
+            rho >= 0.0
+            and abs(s1) * c >= (b1 if b1 <= d1 else d1)
+            and abs(s2) * c >= (b2 if b2 <= d2 else d2)
+            and abs(s3) * c >= (b3 if b3 <= d3 else d3)
+            and abs(s4) * c >= (b4 if b4 <= d4 else d4)
+            and abs(s5) * c >= (b5 if b5 <= d5 else d5)
+            and abs(s6) * c >= (b6 if b6 <= d6 else d6)
+        ):
+            rows.append(LabRow(rho, x_lab, s1, s2, s3, s4, s5, s6, _NO_LOW_PARTS))
+        else:  # a radius below 0 (rounding) or a sum that cancels: lab_row, to double-double
+            rows.append(lab_row(m, f, sums))
+    return tuple(rows)
+
+
+_NO_LOW_PARTS = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 
 
 def _factor_dd(v: ExactVelocity, sign: float) -> DD:
@@ -302,24 +384,40 @@ def _factor_dd(v: ExactVelocity, sign: float) -> DD:
     return dd.sqrt(dd.div(plus, minus) if sign > 0.0 else dd.div(minus, plus))
 
 
-_AnchorSum = tuple[float, float, float, float, ExactVelocity, float]
+#: ``(F, F - 1, |F|, |F - 1|)`` of one factor ``F`` (see :func:`_anchor_sums`).
+_AnchorSum = tuple[float, float, float, float]
+#: The ``sign`` of :func:`_factor_dd` for the three factors of :func:`_anchor_sums`, in its order.
+_FACTOR_SIGNS = (0.0, -1.0, 1.0)
 
 
-def _two_anchor_sums(v: ExactVelocity, sign: float) -> _AnchorSum:
-    """``(F, F - 1, |F|, |F - 1|, v, sign)`` in float64 for the factor ``F`` of :func:`_factor_dd`.
+def _anchor_sums(v: ExactVelocity) -> tuple[_AnchorSum, _AnchorSum, _AnchorSum]:
+    """``(F, F - 1, |F|, |F - 1|)`` in float64 for the three factors ``F`` of :func:`_factor_dd`
+    (``sign`` 0, -1, +1: ``1/gamma``, ``exp(-theta)``, ``exp(theta)``).
 
     A row's tangent intercept and switch-event light-cone coordinates are ``x_C + sign rho F`` (from
     the centre) or ``x_V + sign rho (F - 1)`` (from the vertex); ``F - 1`` is
     ``-(gamma v)^2/((gamma + 1) gamma)`` for ``1/gamma`` and ``expm1(sign theta)`` for
-    ``exp(sign theta)``, without cancellation.
+    ``exp(sign theta)``, without cancellation. The velocity's ``1 -+ v``, ``gamma``, ``gamma v`` and
+    ``theta`` are formed once, inline, with the operations of :class:`ExactVelocity`'s methods (this
+    runs for every new scene).
     """
-    if sign == 0.0:
-        g, u = v.lorentz_factor(), v.proper_velocity()
-        f, f1 = 1.0 / g, -u * u / ((g + 1.0) * g)
+    hi, lo = v.hi, v.lo
+    one_minus = v.gap if hi >= 0.5 else (1.0 - hi) - lo
+    one_plus = v.gap if hi <= -0.5 else (1.0 + hi) + lo
+    root = math.sqrt(one_minus * one_plus)
+    g, u = 1.0 / root, hi / root  # lorentz_factor(), proper_velocity()
+    if hi >= 0.0:  # rapidity()
+        theta = 0.5 * math.log1p(2.0 * (hi + lo) / one_minus)
     else:
-        theta = sign * v.rapidity()
-        f, f1 = math.exp(theta), math.expm1(theta)
-    return f, f1, abs(f), abs(f1), v, sign
+        theta = -0.5 * math.log1p(-2.0 * (hi + lo) / one_plus)
+    f1 = -u * u / ((g + 1.0) * g)
+    e_minus, e_minus1 = math.exp(-theta), math.expm1(-theta)
+    e_plus, e_plus1 = math.exp(theta), math.expm1(theta)
+    return (
+        (1.0 / g, f1, abs(1.0 / g), abs(f1)),
+        (e_minus, e_minus1, e_minus, abs(e_minus1)),
+        (e_plus, e_plus1, e_plus, abs(e_plus1)),
+    )
 
 
 def _anchored_dd(anchor: DD, srho: DD, v: ExactVelocity, sign: float, minus_one: bool) -> DD:
@@ -361,25 +459,53 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
     crossing ``x'_C + sign q_0``, or, when those two cancel, ``x_V (x_C - sign rho)/(x'_C - sign q_0)``
     (the product of the quadratic's roots). One row of plain float arithmetic per rod and fraction.
     """
-    sh = frame.proper_velocity
-    chm1 = frame.lorentz_factor_minus_one()
-    ch = 1.0 + chm1
-    up, down = frame.doppler_factors()  # exp(psi), exp(-psi)
+    fv = frame.velocity
+    f_hi, f_lo = fv.hi, fv.lo
+    f_minus = fv.gap if f_hi >= 0.5 else (1.0 - f_hi) - f_lo  # the frame's 1 - beta, 1 + beta
+    f_plus = fv.gap if f_hi <= -0.5 else (1.0 + f_hi) + f_lo
+    root = math.sqrt(f_minus * f_plus)
+    sh = f_hi / root  # sinh psi = gamma beta
+    g = 1.0 / root
+    ch = 1.0 + sh * sh / (math.sqrt(1.0 + sh * sh) + 1.0)  # 1 + (gamma - 1), accurate for small beta
+    up, down = g * f_plus, g * f_minus  # exp(psi), exp(-psi)
     rows: list[tuple[float, ...]] = []
     # Plans have few rows (2 per rod for the ends, 11 for the ticks): float arithmetic on
-    # Python floats is many times cheaper here than numpy calls on tiny arrays.
+    # Python floats is many times cheaper here than numpy calls on tiny arrays. Each velocity's
+    # 1 -+ v, gamma and rapidity relative to the frame are written out with the operations of
+    # ExactVelocity's methods and relative_rapidity (a call costs as much as the arithmetic).
     for m in motions:
-        th_i = relative_rapidity(m.velocity_initial, frame.velocity)
-        th_f = relative_rapidity(m.velocity_final, frame.velocity)
+        vi, vf = m.velocity_initial, m.velocity_final
+        hi, lo = vi.hi, vi.lo
+        i_minus = vi.gap if hi >= 0.5 else (1.0 - hi) - lo
+        i_plus = vi.gap if hi <= -0.5 else (1.0 + hi) + lo
+        d = (hi - f_hi) + (lo - f_lo)
+        if d >= 0.0:
+            th_i = 0.5 * math.log1p(2.0 * d / (i_minus * f_plus))
+        else:
+            th_i = -0.5 * math.log1p(-2.0 * d / (i_plus * f_minus))
+        c_i = 1.0 / math.sqrt(i_minus * i_plus) / math.cosh(th_i)
+        hi, lo = vf.hi, vf.lo
+        s_minus = vf.gap if hi >= 0.5 else (1.0 - hi) - lo
+        s_plus = vf.gap if hi <= -0.5 else (1.0 + hi) + lo
+        d = (hi - f_hi) + (lo - f_lo)
+        if d >= 0.0:
+            th_f = 0.5 * math.log1p(2.0 * d / (s_minus * f_plus))
+        else:
+            th_f = -0.5 * math.log1p(-2.0 * d / (s_plus * f_minus))
+        c_f = 1.0 / math.sqrt(s_minus * s_plus) / math.cosh(th_f)
+        # |theta_f - theta_i|: the proper time the change takes per unit rest-distance
+        d = (hi - vi.hi) + (lo - vi.lo)
+        if d >= 0.0:
+            turn = abs(0.5 * math.log1p(2.0 * d / (s_minus * i_plus)))
+        else:
+            turn = abs(-0.5 * math.log1p(-2.0 * d / (s_plus * i_minus)))
         sig, xc = float(m.sign), m.horizon_x
         sinh_i, sinh_f = math.sinh(th_i), math.sinh(th_f)
         w_i, w_f = math.tanh(th_i), math.tanh(th_f)
         t_c = -xc * sh
+        two_t_c = 2.0 * t_c
         x_c = xc * ch
         same_side = sig * x_c >= 0.0  # the direct sum x'_C + sign q_0 does not cancel
-        c_i = m.velocity_initial.lorentz_factor() / math.cosh(th_i)
-        c_f = m.velocity_final.lorentz_factor() / math.cosh(th_f)
-        turn = m.rapidity_change  # the proper time the change takes per unit rest-distance
         for rho, x_lab, a_i, minus_u, w, a_f, minus_u_stop, w_stop, _ in m.lab_rows(fractions):
             q0 = math.hypot(rho, t_c)
             x_hyp = x_c + sig * q0 if same_side else x_lab * (xc - sig * rho) / (x_c - sig * q0)
@@ -408,13 +534,15 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
                     th_i,
                     th_f,
                     rho * turn,
+                    rho * rho,
+                    two_t_c,
                 )
             )
-    table = np.array(rows, dtype=np.float64).reshape(-1, len(_PLAN_FIELDS)).T
+    table = np.array(rows, dtype=np.float64) if rows else np.empty((0, len(_PLAN_FIELDS)))
     # a frozen dataclass's __init__ sets each of its fields through object.__setattr__: filling
     # the instance dict at once is a third of the plan's cost cheaper, and the same object
     plan = object.__new__(MotionPlan)
-    plan.__dict__.update(zip(_PLAN_FIELDS, table, strict=True))
+    plan.__dict__["_table"] = table  # each field is a column of it, made on first use (__getattr__)
     return plan
 
 
@@ -446,49 +574,87 @@ class MotionPlan:
     rapidity_stop: FloatArray
     proper_time_change: FloatArray
     """``rho |theta_f - theta_i|``: the proper time the change takes (lab rapidities, invariant)."""
+    radius2: FloatArray
+    """``rho * rho`` (the branch-free form's square)."""
+    two_t_vertex: FloatArray
+    """``2 t_vertex``."""
+    _table: FloatArray = field(init=False, repr=False, compare=False)
+    """Every field above as one ``(rows, fields)`` array (the fields are its columns)."""
+
+    def __getattr__(self, name: str) -> FloatArray:
+        """A field not yet looked up: its column of the plan's table, kept (a view each; the
+        branch-free form reads none of them, only :attr:`_columns`)."""
+        index = _FIELD_INDEX.get(name)
+        table = self.__dict__.get("_table")
+        if index is None or table is None:
+            raise AttributeError(name)
+        column = table[:, index]
+        self.__dict__[name] = column
+        return column
+
+    @property
+    def rows(self) -> int:
+        """How many rows (material points of all rods) the plan has."""
+        return self._table.shape[0]
 
     def column(self, name: str) -> FloatArray:
         return getattr(self, name)[:, None]
 
-    @functools.cached_property
+    @property
     def _columns(self) -> tuple[FloatArray, ...]:
-        """The branch-free form's constants as ``(rows, 1)`` columns: sign, radius squared (an
-        array multiply), q0, t_vertex, 2 t_vertex, x_hyp, t_start, t_stop; then the two lines'
-        slopes and intercepts as ``(2, rows, 1)`` (before the start, after the stop)."""
-        tv = self.t_vertex[:, None]
+        """The branch-free form's constants as ``(rows, 1)`` columns: sign, radius squared, q0,
+        t_vertex, 2 t_vertex, x_hyp, t_start, t_stop; then the two lines' slopes and intercepts as
+        ``(2, rows, 1)`` (before the start, after the stop). Views of the plan's table: no arithmetic;
+        made once (kept in the instance's dict: ``functools.cached_property`` takes a lock each time)."""
+        columns = self.__dict__.get("_columns_kept")
+        if columns is None:
+            columns = self.__dict__["_columns_kept"] = self._make_columns()
+        return columns
+
+    def _make_columns(self) -> tuple[FloatArray, ...]:
+        c = self._table.T[:, :, None]
         return (
-            self.sign[:, None],
-            self.radius[:, None] ** 2,
-            self.q0[:, None],
-            tv,
-            2.0 * tv,
-            self.x_hyp[:, None],
-            self.t_start[:, None],
-            self.t_stop[:, None],
-            np.array([self.w_start, self.w_stop])[:, :, None],
-            np.array([self.x0_start, self.x0_stop])[:, :, None],
+            c[_SIGN],
+            c[_RADIUS2],
+            c[_Q0],
+            c[_T_VERTEX],
+            c[_TWO_T_VERTEX],
+            c[_X_HYP],
+            c[_T_START],
+            c[_T_STOP],
+            c[_W_START : _W_STOP + 1 : _W_STOP - _W_START],
+            c[_X0_START : _X0_STOP + 1 : _X0_STOP - _X0_START],
         )
 
-    @functools.cached_property
+    @property
     def _rows(self) -> list[_Row]:
-        """Each row's constants as Python floats, for the paths that take one row at a time."""
+        """Each row's constants as Python floats, for the paths that take one row at a time (made once)."""
+        rows = self.__dict__.get("_rows_kept")
+        if rows is None:
+            rows = self.__dict__["_rows_kept"] = self._make_rows()
+        return rows
+
+    def _make_rows(self) -> list[_Row]:
+        table = self._table
+        # the radius squared by numpy scalars (libm pow), as the sorted path has always squared
+        pow_squares = [float(r**2) for r in table[:, _RADIUS]]
         return [
-            _Row(sign, rho * rho, float(pow_rho), q0, tv, 2.0 * tv, *rest)
-            for sign, rho, pow_rho, q0, tv, *rest in zip(
-                self.sign.tolist(),
-                self.radius.tolist(),
-                [r**2 for r in self.radius],  # numpy scalars: libm pow, as the sorted path has always squared
-                self.q0.tolist(),
-                self.t_vertex.tolist(),
-                self.x_hyp.tolist(),
-                self.t_start.tolist(),
-                self.t_stop.tolist(),
-                self.w_start.tolist(),
-                self.x0_start.tolist(),
-                self.w_stop.tolist(),
-                self.x0_stop.tolist(),
-                strict=True,
+            _Row(
+                row[_SIGN],
+                row[_RADIUS2],
+                pow_square,
+                row[_Q0],
+                row[_T_VERTEX],
+                row[_TWO_T_VERTEX],
+                row[_X_HYP],
+                row[_T_START],
+                row[_T_STOP],
+                row[_W_START],
+                row[_X0_START],
+                row[_W_STOP],
+                row[_X0_STOP],
             )
+            for row, pow_square in zip(table.tolist(), pow_squares, strict=True)
         ]
 
     # ---------------------------------------------------------------- sampling
@@ -510,7 +676,7 @@ class MotionPlan:
         time check finds out on the way); ``None``: find out here.
         """
         n = t.size
-        if self.radius.size * n <= _SCALAR_MAX:
+        if self.rows * n <= _SCALAR_MAX:
             return self._positions_scalar(t)
         if n < PIECEWISE_MIN:
             return self._positions_block(t)
@@ -528,17 +694,18 @@ class MotionPlan:
         ``np.sqrt`` both round correctly), so the results are bitwise the same.
         """
         times = t.tolist()
+        sqrt = math.sqrt
         out: list[float] = []
         for sign, r2, _, q0, tv, two_tv, x_hyp, t_start, t_stop, w_start, x0_start, w_stop, x0_stop in self._rows:
-            for x in times:
-                if x > t_stop:
-                    out.append(w_stop * x + x0_stop)
-                elif x < t_start:
-                    out.append(w_start * x + x0_start)
-                else:
-                    s = x - tv
-                    out.append((x - two_tv) * x / (math.sqrt(s * s + r2) + q0) * sign + x_hyp)
-        return np.array(out, dtype=np.float64).reshape(self.radius.size, len(times))
+            out += [
+                w_stop * x + x0_stop
+                if x > t_stop
+                else w_start * x + x0_start
+                if x < t_start
+                else (x - two_tv) * x / (sqrt((s := x - tv) * s + r2) + q0) * sign + x_hyp
+                for x in times
+            ]
+        return np.array(out, dtype=np.float64).reshape(self.rows, len(times))
 
     def _positions_block(self, t: FloatArray) -> FloatArray:
         with np.errstate(over="ignore", invalid="ignore"):  # lanes that overflow are discarded by np.where
@@ -568,7 +735,7 @@ class MotionPlan:
         """Sorted times: each row's pieces are runs of ``t`` (two binary searches), each evaluated
         with its own formula only, in blocks of ``_BLOCK`` so that the work stays in cache."""
         n = t.size
-        out = np.empty((self.radius.size, n))
+        out = np.empty((self.rows, n))
         i0 = np.searchsorted(t, self.t_start, side="left").tolist()
         i1 = np.searchsorted(t, self.t_stop, side="right").tolist()
         work = np.empty(min(n, _BLOCK))
@@ -603,7 +770,7 @@ class MotionPlan:
         row back costs about as much again.
         """
         n = t.size
-        out = np.empty((self.radius.size, n))
+        out = np.empty((self.rows, n))
         m = min(n, _BLOCK)
         before, after, curved = np.empty(m, dtype=bool), np.empty(m, dtype=bool), np.empty(m, dtype=bool)
         work, gathered, values = np.empty(m), np.empty(m), np.empty(m)
@@ -721,4 +888,10 @@ class MotionPlan:
 
 
 #: MotionPlan's fields in declaration order (the columns ``plan_motions`` fills).
-_PLAN_FIELDS = tuple(MotionPlan.__dataclass_fields__)
+_PLAN_FIELDS = tuple(name for name in MotionPlan.__dataclass_fields__ if name != "_table")
+_FIELD_INDEX = {name: i for i, name in enumerate(_PLAN_FIELDS)}
+_SIGN, _RADIUS, _RADIUS2, _Q0, _T_VERTEX, _TWO_T_VERTEX, _X_HYP, _T_START, _T_STOP = (
+    _PLAN_FIELDS.index(name)
+    for name in ("sign", "radius", "radius2", "q0", "t_vertex", "two_t_vertex", "x_hyp", "t_start", "t_stop")
+)
+_W_START, _W_STOP, _X0_START, _X0_STOP = (_PLAN_FIELDS.index(n) for n in ("w_start", "w_stop", "x0_start", "x0_stop"))

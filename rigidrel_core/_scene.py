@@ -28,10 +28,11 @@ FloatArray = npt.NDArray[np.float64]
 
 #: The two ends of a rod as material coordinates (fractions of the rest length from the left end).
 ENDS = np.array([0.0, 1.0])
+_ENDS_BYTES = ENDS.tobytes()
 _MAX_CACHED_PLANS = 64
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Rod:
     """One rod of a scene: its motion and its rest mass before and after (heat adds mass)."""
 
@@ -39,6 +40,10 @@ class Rod:
     motion: RigidMotion
     mass_before: float
     mass_after: float
+
+    def __init__(self, name: str, motion: RigidMotion, mass_before: float, mass_after: float) -> None:
+        # into the instance's dict at once (the generated __init__ calls object.__setattr__ per field)
+        self.__dict__.update(name=name, motion=motion, mass_before=mass_before, mass_after=mass_after)
 
 
 @dataclass(frozen=True)
@@ -72,7 +77,7 @@ class Obstacle:
         return x0 + w * (tt - t0)
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)
 class Scene:
     """A solved scene (see :func:`rigidrel_core.build_scene` and the constructors).
 
@@ -94,6 +99,33 @@ class Scene:
     origin_event: OriginEvent
     obstacles: tuple[Obstacle, ...] = ()
     _plans: dict[tuple[object, ...], MotionPlan] = field(default_factory=dict, init=False, repr=False)
+
+    def __init__(
+        self,
+        kind: str,
+        parameters: Mapping[str, float],
+        rods: tuple[Rod, ...],
+        event_specs: tuple[EventSpec, ...],
+        frames: Mapping[str, Frame],
+        external_source: ExternalSource,
+        heat: float,
+        origin_event: OriginEvent,
+        obstacles: tuple[Obstacle, ...] = (),
+    ) -> None:
+        # the instance's dict filled at once: the generated __init__ of a frozen dataclass calls
+        # object.__setattr__ once per field, and every slider change builds a scene
+        self.__dict__.update(
+            kind=kind,
+            parameters=parameters,
+            rods=rods,
+            event_specs=event_specs,
+            frames=frames,
+            external_source=external_source,
+            heat=heat,
+            origin_event=origin_event,
+            obstacles=obstacles,
+            _plans={},
+        )
 
     # ------------------------------------------------------------------ summary
     @property
@@ -140,7 +172,7 @@ class Scene:
 
     # ----------------------------------------------------------------- sampling
     def _plan(self, frame: Frame, fractions: FloatArray, rod: int | None = None) -> MotionPlan:
-        key = (frame.key(), fractions.tobytes(), rod)
+        key = (frame.key(), _ENDS_BYTES if fractions is ENDS else fractions.tobytes(), rod)
         plan = self._plans.get(key)
         if plan is None:
             rods = self.rods if rod is None else (self.rods[rod],)

@@ -34,6 +34,8 @@ def as_real(name: str, value: object, allowed: str) -> float:
 
 def check_velocity(name: str, value: object) -> float:
     """A velocity in the open interval (-1, 1) (c = 1)."""
+    if type(value) is float and -1.0 < value < 1.0:
+        return value  # the common case, without the number checks
     allowed = "a finite number in (-1, 1)"
     x = as_real(name, value, allowed)
     if not -1.0 < x < 1.0:
@@ -41,10 +43,17 @@ def check_velocity(name: str, value: object) -> float:
     return x
 
 
+_FLOAT64 = np.dtype(np.float64)
+
+
 def _real_array(name: str, allowed: str, value: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """``value`` as a float64 array; complex, object or text arrays are refused, never cut to a part."""
-    if isinstance(value, np.ndarray) and value.dtype.kind in "biuf":
-        return value.astype(np.float64, copy=False)
+    if isinstance(value, np.ndarray):
+        dtype = value.dtype
+        if dtype == _FLOAT64:
+            return value  # what astype(float64, copy=False) returns, without the call
+        if dtype.kind in "biuf":
+            return value.astype(np.float64, copy=False)
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):
@@ -56,6 +65,9 @@ def _real_array(name: str, allowed: str, value: npt.ArrayLike) -> npt.NDArray[np
 
 #: Up to this many times are checked as Python floats: cheaper than numpy's two reductions.
 _FEW_TIMES = 16
+#: Below this many times the bound is checked on ``|t|`` (one reduction, a temporary copy); from
+#: here on by min and max (no copy to allocate).
+_FEW_TIMES_ABS = 4096
 
 
 @functools.cache
@@ -88,11 +100,14 @@ def check_times_ordered(
     if order_from is not None and arr.ndim == 1 and arr.size >= order_from:
         ordered = non_decreasing(arr)
     if ordered:
-        lo, hi = arr[0], arr[-1]
+        within = arr[0] >= -MAX_ABS_TIME and arr[-1] <= MAX_ABS_TIME
+    elif arr.size < _FEW_TIMES_ABS:  # one reduction of |t| (a small temporary) instead of min and max
+        within = np.maximum.reduce(np.abs(arr), axis=None) <= MAX_ABS_TIME
     else:  # the ufuncs' own reductions: arr.min() and arr.max() add a Python layer (~10 % here)
         lo, hi = np.minimum.reduce(arr, axis=None), np.maximum.reduce(arr, axis=None)
-    # NaN propagates through min/max; inf fails the bound.
-    if not (lo >= -MAX_ABS_TIME and hi <= MAX_ABS_TIME):
+        within = lo >= -MAX_ABS_TIME and hi <= MAX_ABS_TIME
+    # NaN propagates through the reductions; inf fails the bound.
+    if not within:
         bad = arr[~(np.abs(arr) <= MAX_ABS_TIME)].ravel()[0]
         raise ParameterError(name, allowed, float(bad))
     return arr, ordered

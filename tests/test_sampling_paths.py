@@ -27,7 +27,7 @@ FloatArray = npt.NDArray[np.float64]
 
 SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 #: Input sizes around every threshold of the sampler's choice of path (and several blocks long).
-SIZES = (1, 2, 3, 5, 8, 11, 17, 64, 256, 2047, 2048, 2049, 4095, 4096, 32768, 32769, 70000)
+SIZES = (1, 2, 3, 5, 8, 11, 17, 31, 32, 33, 63, 64, 65, 256, 2047, 2048, 2049, 4095, 4096, 32768, 32769, 70000)
 
 
 def reference_branch_free(plan: MotionPlan, t: FloatArray) -> FloatArray:
