@@ -239,11 +239,11 @@ class RigidMotion:
         if rows is None:
             if len(self._lab_rows) >= _MAX_CACHED_FRACTIONS:
                 self._lab_rows.clear()
-            sums = (*_anchor_sums(self.velocity_initial), *_anchor_sums(self.velocity_final))
             if exact:
+                sums = (*_anchor_sums(self.velocity_initial), *_anchor_sums(self.velocity_final))
                 rows = tuple(lab_row(self, f, sums, True) for f in fractions.tolist())
             else:
-                rows = _float_lab_rows(self, fractions.tolist(), sums)
+                rows = _float_lab_rows(self, fractions.tolist())
             self._lab_rows[key] = rows
         return rows
 
@@ -327,15 +327,27 @@ def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum], exact: bool = 
 _NO_LOW_PARTS = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 
 
-def _float_lab_rows(m: RigidMotion, fractions: list[float], sums: Sequence[_AnchorSum]) -> tuple[LabRow, ...]:
+def _float_lab_rows(m: RigidMotion, fractions: list[float]) -> tuple[LabRow, ...]:
     """``lab_row(m, f, sums)`` for every fraction: the same operations, written out for the common
     case where no sum cancels (each row is then six float sums, each from the centre or from the
     vertex); a row where one does is made by :func:`lab_row` itself (double-double)."""
     sig, xc = float(m.sign), m.horizon_x
     r_left, v_left, length = m.radius_left, m.vertex_left, m.length
     axc = abs(xc)
-    (f1, g1, af1, ag1), (f2, g2, af2, ag2), (f3, g3, af3, ag3) = sums[0], sums[1], sums[2]
-    (f4, g4, af4, ag4), (f5, g5, af5, ag5), (f6, g6, af6, ag6) = sums[3], sums[4], sums[5]
+    sums = (*_anchor_sums(m.velocity_initial), *_anchor_sums(m.velocity_final))
+    (
+        (f1, g1, af1, ag1),
+        (f2, g2, af2, ag2),
+        (f3, g3, af3, ag3),
+        (f4, g4, af4, ag4),
+        (f5, g5, af5, ag5),
+        (
+            f6,
+            g6,
+            af6,
+            ag6,
+        ),
+    ) = sums
     c = _CANCELLATION
     rows = []
     for f in fractions:
@@ -367,9 +379,48 @@ def _float_lab_rows(m: RigidMotion, fractions: list[float], sums: Sequence[_Anch
             and abs(s6) * c >= (b6 if b6 <= d6 else d6)
         ):
             rows.append(LabRow(rho, x_lab, s1, s2, s3, s4, s5, s6, _NO_LOW_PARTS))
-        else:  # a radius below 0 (rounding) or a sum that cancels: lab_row, to double-double
+        elif rho < 0.0:  # a radius below 0 (rounding): lab_row clamps it
             rows.append(lab_row(m, f, sums))
+        else:  # a sum that cancels: that one to double-double, as lab_row does it
+            rows.append(
+                _redo_cancelled(
+                    m, f, rho, x_lab, (s1, s2, s3, s4, s5, s6), (b1, b2, b3, b4, b5, b6), (d1, d2, d3, d4, d5, d6)
+                )
+            )
     return tuple(rows)
+
+
+def _redo_cancelled(
+    m: RigidMotion,
+    f: float,
+    rho: float,
+    x_lab: float,
+    totals: tuple[float, ...],
+    by_centre: tuple[float, ...],
+    by_vertex: tuple[float, ...],
+) -> LabRow:
+    """:func:`lab_row` for a row of :func:`_float_lab_rows` (``rho >= 0``) some of whose float sums
+    cancel: those are redone to double-double (:func:`_anchored_dd`, with lab_row's low parts of
+    the radius and the vertex), the others kept."""
+    sig, xc = float(m.sign), m.horizon_x
+    along_lo = 0.0 if f in (0.0, 1.0) else two_prod(f, m.length)[1]
+    along = 0.0 if f == 0.0 else m.length if f == 1.0 else f * m.length
+    rho_lo = two_sum(m.radius_left, sig * along)[1] + sig * along_lo
+    x_lo = two_sum(m.vertex_left, along)[1] + along_lo
+    srho = (sig * rho, sig * rho_lo)
+    highs, lows = [], []
+    for k, (total, b, d) in enumerate(zip(totals, by_centre, by_vertex, strict=True)):
+        from_centre = b <= d
+        if abs(total) * _CANCELLATION >= (b if from_centre else d):
+            highs.append(total)
+            lows.append(0.0)
+            continue
+        v = m.velocity_initial if k < 3 else m.velocity_final
+        anchor = (xc, 0.0) if from_centre else (x_lab, x_lo)
+        hi, lo = _anchored_dd(anchor, srho, v, _FACTOR_SIGNS[k % 3], not from_centre)
+        highs.append(hi)
+        lows.append(lo)
+    return LabRow._make((rho, x_lab, *highs, tuple(lows)))
 
 
 _NO_LOW_PARTS = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)

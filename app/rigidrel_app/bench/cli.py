@@ -49,7 +49,8 @@ METRIC = (
 )
 TIMING = (
     "seconds per sample = best wall time of repeated calls / samples; each call goes from the scene's "
-    "parameters to the positions (scene solution, frame, slices); mpmath is timed once"
+    "parameters to the positions (scene solution, frame, slices); the core and the textbook formulas are "
+    "called in turn, one call each; mpmath is timed once"
 )
 
 

@@ -4,8 +4,10 @@ For each case (:data:`rigidrel_app.bench.scenes.CASES`) the 50-digit reference i
 (that call is also the mpmath method's timing); then every other method setting is
 called on exactly the same ``(scene, frame velocity, times)``:
 
-* seconds per sample = the best wall time of a few repeated calls / number of samples
-  (each call does everything from the scene's parameters to the positions);
+* seconds per sample = the best wall time of repeated calls / number of samples
+  (each call does everything from the scene's parameters to the positions); the two closed
+  forms (the core and the textbook formulas, microseconds a call) are called in turn, one
+  call each, so that a busy spell on a shared machine falls on both alike;
 * max error = max over samples and rod ends of ``|x' - x'_ref| / max(|x'_ref|, L_ref(t'))``,
   ``L_ref`` the rod's equal-time length in the frame (the metric of tests/test_accuracy.py),
   from the first call's output.
@@ -45,6 +47,8 @@ class Timing:
 
 #: One call, no repeats (mpmath, and the untimed stability maps).
 ONCE = Timing(1, 1, 0.0, 0.0)
+#: The two closed forms (microseconds a call): timed alternately, call for call.
+CLOSED_FORMS = frozenset({MethodName.CORE, MethodName.TEXTBOOK})
 
 
 @dataclass(frozen=True)
@@ -100,30 +104,71 @@ def method_settings(
     return tuple(out)
 
 
-def timed(call: Callable[[], FloatArray], timing: Timing) -> tuple[FloatArray | None, str | None, float, int]:
-    """``(first output, failure, best seconds, repeats)``; a failing call is timed once."""
+Timed = tuple[FloatArray | None, str | None, float, int]
+"""``(first output, failure, best seconds, repeats)`` of one timed method setting."""
+
+
+def _failure(exc: Exception) -> str:
+    return f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}"
+
+
+def timed(call: Callable[[], FloatArray], timing: Timing) -> Timed:
+    """``(first output, failure, best seconds, repeats)``; a failing call is timed once. Warnings are
+    silenced around the whole loop, not inside the timed calls."""
     best = float("inf")
     first: FloatArray | None = None
     total = 0.0
     repeats = 0
-    while True:
-        start = time.perf_counter()
-        try:
-            with warnings.catch_warnings(), np.errstate(all="ignore"):
-                warnings.simplefilter("ignore")
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        while True:
+            start = time.perf_counter()
+            try:
                 out = call()
-        except (ValueError, ArithmeticError, RuntimeError) as exc:
-            reason = f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}"
-            return None, reason, time.perf_counter() - start, 1
-        elapsed = time.perf_counter() - start
-        if first is None:
-            first = out
-        best = min(best, elapsed)
-        total += elapsed
-        repeats += 1
-        enough = repeats >= timing.min_repeats and total >= timing.min_seconds
-        if enough or repeats >= timing.max_repeats or total >= timing.max_seconds:
-            return first, None, best, repeats
+            except (ValueError, ArithmeticError, RuntimeError) as exc:
+                return None, _failure(exc), time.perf_counter() - start, 1
+            elapsed = time.perf_counter() - start
+            if first is None:
+                first = out
+            best = min(best, elapsed)
+            total += elapsed
+            repeats += 1
+            enough = repeats >= timing.min_repeats and total >= timing.min_seconds
+            if enough or repeats >= timing.max_repeats or total >= timing.max_seconds:
+                return first, None, best, repeats
+
+
+def timed_alternately(calls: Sequence[Callable[[], FloatArray]], timing: Timing) -> list[Timed]:
+    """:func:`timed` for several calls at once, one call of each in turn, so that a busy spell on a
+    shared machine falls on all of them alike; each stops on its own limits (a failing call is
+    timed once and dropped)."""
+    best = [float("inf")] * len(calls)
+    first: list[FloatArray | None] = [None] * len(calls)
+    failure: list[str | None] = [None] * len(calls)
+    total = [0.0] * len(calls)
+    repeats = [0] * len(calls)
+    running = list(range(len(calls)))
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        while running:
+            for i in list(running):
+                start = time.perf_counter()
+                try:
+                    out = calls[i]()
+                except (ValueError, ArithmeticError, RuntimeError) as exc:
+                    failure[i], best[i], repeats[i] = _failure(exc), time.perf_counter() - start, 1
+                    running.remove(i)
+                    continue
+                elapsed = time.perf_counter() - start
+                if first[i] is None:
+                    first[i] = out
+                best[i] = min(best[i], elapsed)
+                total[i] += elapsed
+                repeats[i] += 1
+                enough = repeats[i] >= timing.min_repeats and total[i] >= timing.min_seconds
+                if enough or repeats[i] >= timing.max_repeats or total[i] >= timing.max_seconds:
+                    running.remove(i)
+    return [(None if failure[i] else first[i], failure[i], best[i], repeats[i]) for i in range(len(calls))]
 
 
 def max_error(x: FloatArray | None, ref: ReferenceSlices) -> tuple[float | None, str | None]:
@@ -161,10 +206,11 @@ def run_case(case: BenchCase, settings: Sequence[MethodSetting], n_samples: int,
 
     mp_error, _ = max_error(ref.hi, ref)
     results = [result(MPMATH, mp_seconds, 1, mp_error, None)]
-    for ms in settings:
-        out, failure, seconds, repeats = timed(
-            functools.partial(ms.evaluate, case.scene, case.frame_velocity, t), timing
-        )
+    calls = [functools.partial(ms.evaluate, case.scene, case.frame_velocity, t) for ms in settings]
+    closed = [i for i, ms in enumerate(settings) if ms.method in CLOSED_FORMS]
+    timings = dict(zip(closed, timed_alternately([calls[i] for i in closed], timing), strict=True))
+    for i, ms in enumerate(settings):
+        out, failure, seconds, repeats = timings[i] if i in timings else timed(calls[i], timing)
         err, bad = max_error(out, ref)
         results.append(result(ms, seconds, repeats, err, failure or bad))
     return results
@@ -228,7 +274,19 @@ def throughput(
     frame, plus a marginal cost per sample). A method stops growing once one call takes longer
     than ``max_call_seconds``; mpmath is timed once per count."""
     out: list[ThroughputPoint] = []
-    for ms in (*settings, MPMATH):
+    closed = [ms for ms in settings if ms.method in CLOSED_FORMS]
+    for n in counts:  # the closed forms alternately, as in run_case
+        t = sample_times(case, n)
+        calls = [functools.partial(ms.evaluate, case.scene, case.frame_velocity, t) for ms in closed]
+        growing = []
+        for ms, (_, failure, seconds, _) in zip(closed, timed_alternately(calls, timing), strict=True):
+            if failure is not None:
+                continue
+            out.append(ThroughputPoint(ms.method, ms.series, ms.setting, int(t.size), seconds / t.size))
+            if seconds <= max_call_seconds:
+                growing.append(ms)
+        closed = growing
+    for ms in (*(ms for ms in settings if ms.method not in CLOSED_FORMS), MPMATH):
         how = ONCE if ms.method is MethodName.MPMATH else timing
         for n in counts:
             t = sample_times(case, n)
