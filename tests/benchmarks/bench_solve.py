@@ -1,13 +1,15 @@
 """Per-scene solve and construction times, before and after, in one run (not a test: machines are noisy).
 
     python -m tests.benchmarks.bench_solve [--repeat 41] [--number 200] [--baseline REV] [--only TEXT]
-                                           [--json] [--profile]
+                                           [--clock cpu|wall] [--json] [--profile]
 
 "Before" is ``rigidrel_core`` as of git revision ``--baseline`` (default: the last revision that
 solved scenes in 60-digit ``decimal``), unpacked with ``git archive`` into a temporary directory
 and imported as ``rigidrel_core_baseline`` beside today's ``rigidrel_core``. Both are warmed up,
 then timed in alternation (one block of ``--number`` calls of every case per round, ``--repeat``
-rounds), and the median over the rounds of each block's mean is printed, in microseconds.
+rounds), and the median over the rounds of each block's mean is printed, in microseconds. The
+clock is this thread's CPU time (``--clock wall`` for wall time): on a shared machine, time given
+to other processes is not counted, though their use of the caches still is.
 
 * solve: a scene's scalar solution without the Scene object, its frame presets and checks:
   ``solve_collision`` for the collision (the target: under 10 us); the bounce's velocity and heat
@@ -26,12 +28,14 @@ import cProfile
 import importlib
 import io
 import json
+import os
 import pstats
 import statistics
 import subprocess
 import sys
 import tarfile
 import tempfile
+import time
 import timeit
 from collections.abc import Callable
 from pathlib import Path
@@ -150,7 +154,11 @@ def cases(core: ModuleType) -> dict[str, Case]:
 
 
 def run(
-    repeat: int = 41, number: int = 200, baseline: str | None = DECIMAL_REVISION, only: str = ""
+    repeat: int = 41,
+    number: int = 200,
+    baseline: str | None = DECIMAL_REVISION,
+    only: str = "",
+    clock: Callable[[], float] = time.thread_time,
 ) -> dict[str, dict[str, float]]:
     """Median microseconds per call of every case (whose name contains ``only``), ``{"after": ..., "before": ...}``."""
     with tempfile.TemporaryDirectory() as tmp:
@@ -167,7 +175,7 @@ def run(
         for _ in range(repeat):
             for name in versions["after"]:
                 for v, c in versions.items():
-                    samples[v][name].append(timeit.timeit(c[name], number=number) / number * 1e6)
+                    samples[v][name].append(timeit.Timer(c[name], timer=clock).timeit(number) / number * 1e6)
     return {v: {k: statistics.median(s) for k, s in by_case.items()} for v, by_case in samples.items()}
 
 
@@ -190,10 +198,13 @@ def main() -> None:
     parser.add_argument("--number", type=int, default=200, help="calls per timed block")
     parser.add_argument("--baseline", default=DECIMAL_REVISION, help="git revision timed as 'before' ('' for none)")
     parser.add_argument("--only", default="", help="time only the cases whose name contains this")
+    parser.add_argument("--clock", choices=("cpu", "wall"), default="cpu", help="this thread's CPU time, or wall time")
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--profile", action="store_true", help="add a cProfile of today's collision construction")
     args = parser.parse_args()
-    figures = run(args.repeat, args.number, args.baseline or None, args.only)
+    clock = time.thread_time if args.clock == "cpu" else time.perf_counter
+    print(f"load average (1 min) {os.getloadavg()[0]:.2f} on {os.cpu_count()} cores; clock: {args.clock}")
+    figures = run(args.repeat, args.number, args.baseline or None, args.only, clock)
     if args.json:
         print(json.dumps(figures, indent=2))
     else:
