@@ -195,6 +195,11 @@ class RigidMotion:
         default_factory=dict[bytes, "tuple[LabRow, ...]"], init=False, repr=False, compare=False
     )
 
+    @property
+    def length_final(self) -> float:
+        """Rest length after the change: ``length`` (Born-rigid)."""
+        return self.length
+
     @functools.cached_property
     def rapidity_change(self) -> float:
         """``|theta_f - theta_i|`` (lab rapidities, invariant): a point at rest-distance ``rho`` from
@@ -645,11 +650,14 @@ class MotionPlan:
                                 x[idx] = _piece(piece, tg, c, values[: idx.size], wk[: idx.size])
         return out
 
-    def equal_time_lengths(self, t: FloatArray, rest_lengths: FloatArray) -> FloatArray:
+    def equal_time_lengths(
+        self, t: FloatArray, rest_lengths: FloatArray, rest_lengths_after: FloatArray | None = None
+    ) -> FloatArray:
         """``x_right - x_left`` for rows given as (left, right) pairs, one pair per rod.
 
         While both ends coast on the same inertial piece the length is exactly
         ``L / cosh(theta')`` (Lorentz contraction); otherwise the difference of positions.
+        ``rest_lengths_after``: each rod's rest length after its change, if not ``rest_lengths``.
         """
         x = self.positions(t)
         left, right = slice(0, None, 2), slice(1, None, 2)
@@ -657,7 +665,8 @@ class MotionPlan:
         before = (t < self.t_start[left, None]) & (t < self.t_start[right, None])
         after = (t > self.t_stop[left, None]) & (t > self.t_stop[right, None])
         contracted_before = (rest_lengths / np.cosh(self.rapidity_start[left]))[:, None]
-        contracted_after = (rest_lengths / np.cosh(self.rapidity_stop[left]))[:, None]
+        after_rest = rest_lengths if rest_lengths_after is None else rest_lengths_after
+        contracted_after = (after_rest / np.cosh(self.rapidity_stop[left]))[:, None]
         out = np.where(before, contracted_before, out)
         return np.where(after, contracted_after, out)
 

@@ -85,8 +85,8 @@ SHIP_LENGTH = Parameter(
     "l (ship)",
     "length unit",
     SIZE,
-    None,
-    "rest length l of each ship (none: a tenth of the separation)",
+    0.1,
+    "rest length l of each ship (the constructor's default, none: a tenth of the separation)",
     Slider(0.01, 0.9, 0.01),
     typical=(0.01, 0.9),
     optional=True,
@@ -98,7 +98,7 @@ BREAKING_STRAIN = Parameter(
     "breaking strain",
     "",
     Interval(0.0, math.inf),
-    None,
+    0.25,
     "the string's strain (rest length over its unstretched length, minus 1) at which it breaks (none: never)",
     Slider(0.01, 2.0, 0.01),
     typical=(0.01, 2.0),
@@ -192,6 +192,28 @@ class BellScene(Scene):
             theta = theta_v - math.acosh(max(1.0, (r + s * math.cosh(theta_v)) / d))
         big_r = r + ship
         return (big_r * math.sinh(theta), -r + big_r * math.cosh(theta))
+
+    def notes(self, frame: Frame = LAB) -> tuple[str, ...]:
+        """The string's story and the rear ends' distance in the ships' frame after, in words."""
+        frame = check_frame(frame)
+        g = self.rods[0].motion.velocity_final.lorentz_factor()
+        lines = [
+            f"the rear ends stay {self.separation:.6g} apart in the lab; in the ships' frame after they are "
+            f"gamma s = {g * self.separation:.6g} apart",
+            f"the string's rest length grows from s - l = {self.string_unstretched:.6g} to gamma s - l = "
+            f"{self.string_final:.6g} (strain {self.final_strain:.4g}); the Born-rigid rod keeps {self.separation:.6g}",
+        ]
+        event = self.string_break_in(frame)
+        if self.breaking_strain is None:
+            lines.append("no breaking strain given: the string stretches and holds")
+        elif event is None:
+            lines.append(f"the string holds: its strain never reaches the breaking strain {self.breaking_strain:.4g}")
+        else:
+            lines.append(
+                f"the string breaks at strain {self.breaking_strain:.4g}: at its rear end, (t, x) = "
+                f"({event[0]:.6g}, {event[1]:.6g}) in this frame"
+            )
+        return tuple(lines)
 
     def string_break_in(self, frame: Frame = LAB) -> tuple[float, float] | None:
         """The break event in ``frame`` (``None`` if the string never breaks)."""
@@ -292,6 +314,10 @@ BELL_SPACESHIPS = SceneDescription(
         ScenePreset(
             "Bell's spaceships: the string breaks at 10% strain",
             {"v": 0.6, "separation": 1.0, "acceleration": 0.5, "breaking_strain": 0.1},
+        ),
+        ScenePreset(
+            "Bell's spaceships: a string that holds",
+            {"v": 0.6, "separation": 1.0, "acceleration": 0.5, "breaking_strain": 1.0},
         ),
     ),
     order=60,
