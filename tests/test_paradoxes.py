@@ -289,3 +289,14 @@ def test_pole_barn_against_the_50_digit_reference(case: dict[str, Any]) -> None:
 def test_pole_barn_refuses_an_unknown_model() -> None:
     with pytest.raises(rr.ParameterError, match=r"^model must be one of"):
         rr.pole_barn(0.8, 1.0, model="elastic")  # type: ignore[arg-type]
+
+
+def test_paradox_figures_state_the_verdicts() -> None:
+    """The captions of the two figures carry the core's numbers and verdicts."""
+    from rigidrel_app.export.paradox_figures import paradox_figures
+
+    bell, pole = paradox_figures()
+    assert "γs = 1.25 apart" in bell.caption and "from rest length 0.9 to 1.15" in bell.caption
+    assert "comes to rest at x = 1; it is never entirely inside" in pole.caption
+    assert "x = 0.3333; it is entirely inside" in pole.caption
+    assert bell.chart.items and pole.chart.items
