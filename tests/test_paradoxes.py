@@ -154,7 +154,7 @@ def reference_cases(kind: str) -> list[dict[str, Any]]:
 @pytest.mark.parametrize("case", reference_cases("bell-spaceships"), ids=lambda c: str(c["params"]))
 def test_bell_string_against_the_50_digit_reference(case: dict[str, Any]) -> None:
     """The string's final rest length and the break event (found there by bisection on the definition)."""
-    params = {k: None if v is None else float.fromhex(v) for k, v in case["params"].items()}
+    params: dict[str, Any] = {k: None if v is None else float.fromhex(v) for k, v in case["params"].items()}
     scene = rr.bell_spaceships(**params)  # the constructor's defaults, as the reference's
     extra = {k: float(v) for k, v in case["extra"].items()}
     assert scene.string_final == pytest.approx(extra["string_final"], rel=TOL)

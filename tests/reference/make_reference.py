@@ -143,7 +143,8 @@ def hair_off(v: Mp, sign: int) -> float:
     """``tanh(atanh(v) + sign HAIR)`` at 50 digits, rounded to float64 (it rounds back to ``v``
     itself when ``HAIR`` is below half an ulp of ``v``, i.e. at ``gamma`` of a few thousand)."""
     with reference_precision():
-        return float(mp.tanh(mp.atanh(v) + sign * F(HAIR)))
+        off: Mp = mp.tanh(mp.atanh(v) + sign * F(HAIR))
+        return float(off)
 
 
 def frames_for(ref: RefScene, rng: random.Random) -> list[tuple[float, str]]:
