@@ -252,8 +252,10 @@ def bell_spaceships(
     separation = SEPARATION.check(separation)
     acceleration = ACCELERATION_REAR.check(acceleration)
     ship = 0.1 * separation if ship_length is None else SHIP_LENGTH.check(ship_length)
-    if not ship < separation:
-        raise ParameterError("ship_length", f"a length below the separation {separation:g}", ship_length)
+    if not ship < separation:  # names both: either may be the one to change
+        raise ParameterError(
+            "parameters", "such that ship_length < separation", {"separation": separation, "ship_length": ship}
+        )
     strain = None if breaking_strain is None else BREAKING_STRAIN.check(breaking_strain)
     velocity = ExactVelocity.from_float(v)
     rho = _inverse(acceleration)
