@@ -26,6 +26,7 @@ from ._frame import Frame as Frame
 from ._kinds import ObstacleKind as ObstacleKind
 from ._kinds import OriginEvent as OriginEvent
 from ._motion import RigidMotion as RigidMotion
+from ._plastic import PlasticMotion as PlasticMotion
 from ._registry import build_scene as build_scene
 from ._registry import default_frame as default_frame
 from ._registry import describe as describe
@@ -44,18 +45,26 @@ from ._validate import ParameterError as ParameterError
 from .scenes.acceleration import constant_acceleration as constant_acceleration
 from .scenes.acceleration import deceleration as deceleration
 from .scenes.acceleration import velocity_change as velocity_change
+from .scenes.bell import BellScene as BellScene
+from .scenes.bell import bell_spaceships as bell_spaceships
 from .scenes.collision import CollisionSolution as CollisionSolution
 from .scenes.collision import rod_collision as rod_collision
 from .scenes.collision import solve_collision as solve_collision
 from .scenes.impulse import impulsive_start as impulsive_start
+from .scenes.pole_barn import DoorOrder as DoorOrder
+from .scenes.pole_barn import PoleBarnScene as PoleBarnScene
+from .scenes.pole_barn import PoleVerdict as PoleVerdict
+from .scenes.pole_barn import pole_barn as pole_barn
 from .scenes.wall import wall_collision as wall_collision
 
 __all__ = [
     "ENDS",
     "LAB",
+    "BellScene",
     "CausalRelation",
     "ChangeVerdict",
     "CollisionSolution",
+    "DoorOrder",
     "EventDescription",
     "EventSpec",
     "ExactVelocity",
@@ -68,12 +77,16 @@ __all__ = [
     "Overlay",
     "Parameter",
     "ParameterError",
+    "PlasticMotion",
+    "PoleBarnScene",
+    "PoleVerdict",
     "RigidMotion",
     "Rod",
     "Scene",
     "SceneDescription",
     "ScenePreset",
     "Slider",
+    "bell_spaceships",
     "build_scene",
     "causal_relation",
     "constant_acceleration",
@@ -81,6 +94,7 @@ __all__ = [
     "default_frame",
     "describe",
     "impulsive_start",
+    "pole_barn",
     "register_scene",
     "rod_collision",
     "scene_descriptions",

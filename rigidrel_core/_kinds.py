@@ -39,3 +39,6 @@ class ObstacleKind(StrEnum):
     """Things in a scene that are not rods: they have inertial worldlines and are drawn, not solved."""
 
     WALL = "wall"
+    """A wall at rest that stops what hits it (the barn's back wall)."""
+    BARN_DOOR = "barn door"
+    """A barn's front door at rest: open until its closing event, closed after; nothing hits it."""

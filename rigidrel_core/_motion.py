@@ -221,6 +221,11 @@ class RigidMotion:
             _lab_rows={},
         )
 
+    @property
+    def length_final(self) -> float:
+        """Rest length after the change: ``length`` (Born-rigid)."""
+        return self.length
+
     @functools.cached_property
     def rapidity_change(self) -> float:
         """``|theta_f - theta_i|`` (lab rapidities, invariant): a point at rest-distance ``rho`` from
@@ -590,6 +595,11 @@ def plan_motions(motions: Sequence[RigidMotion], frame: Frame, fractions: FloatA
                 )
             )
     table = np.array(rows, dtype=np.float64) if rows else np.empty((0, len(_PLAN_FIELDS)))
+    return plan_from_table(table)
+
+
+def plan_from_table(table: FloatArray) -> MotionPlan:
+    """A plan whose fields are the columns of ``table`` (``(rows, fields)``, in :data:`PLAN_FIELDS` order)."""
     # a frozen dataclass's __init__ sets each of its fields through object.__setattr__: filling
     # the instance dict at once is a third of the plan's cost cheaper, and the same object
     plan = object.__new__(MotionPlan)
@@ -647,6 +657,11 @@ class MotionPlan:
     def rows(self) -> int:
         """How many rows (material points of all rods) the plan has."""
         return self._table.shape[0]
+
+    @property
+    def table(self) -> FloatArray:
+        """Every field as one ``(rows, fields)`` array, columns in :data:`PLAN_FIELDS` order (read only)."""
+        return self._table
 
     def column(self, name: str) -> FloatArray:
         return getattr(self, name)[:, None]
@@ -863,11 +878,14 @@ class MotionPlan:
                                 x[idx] = _piece(piece, tg, c, values[: idx.size], wk[: idx.size])
         return out
 
-    def equal_time_lengths(self, t: FloatArray, rest_lengths: FloatArray) -> FloatArray:
+    def equal_time_lengths(
+        self, t: FloatArray, rest_lengths: FloatArray, rest_lengths_after: FloatArray | None = None
+    ) -> FloatArray:
         """``x_right - x_left`` for rows given as (left, right) pairs, one pair per rod.
 
         While both ends coast on the same inertial piece the length is exactly
         ``L / cosh(theta')`` (Lorentz contraction); otherwise the difference of positions.
+        ``rest_lengths_after``: each rod's rest length after its change, if not ``rest_lengths``.
         """
         x = self.positions(t)
         left, right = slice(0, None, 2), slice(1, None, 2)
@@ -875,7 +893,8 @@ class MotionPlan:
         before = (t < self.t_start[left, None]) & (t < self.t_start[right, None])
         after = (t > self.t_stop[left, None]) & (t > self.t_stop[right, None])
         contracted_before = (rest_lengths / np.cosh(self.rapidity_start[left]))[:, None]
-        contracted_after = (rest_lengths / np.cosh(self.rapidity_stop[left]))[:, None]
+        after_rest = rest_lengths if rest_lengths_after is None else rest_lengths_after
+        contracted_after = (after_rest / np.cosh(self.rapidity_stop[left]))[:, None]
         out = np.where(before, contracted_before, out)
         return np.where(after, contracted_after, out)
 
@@ -940,6 +959,8 @@ class MotionPlan:
 
 #: MotionPlan's fields in declaration order (the columns ``plan_motions`` fills).
 _PLAN_FIELDS = tuple(name for name in MotionPlan.__dataclass_fields__ if name != "_table")
+#: The plan's fields in the order of its table's columns.
+PLAN_FIELDS = _PLAN_FIELDS
 _FIELD_INDEX = {name: i for i, name in enumerate(_PLAN_FIELDS)}
 _SIGN, _RADIUS, _RADIUS2, _Q0, _T_VERTEX, _TWO_T_VERTEX, _X_HYP, _T_START, _T_STOP = (
     _PLAN_FIELDS.index(name)

@@ -20,7 +20,8 @@ from ._budget import ExternalSource, FourMomentumBudget
 from ._exact import ExactVelocity, relative_rapidity
 from ._frame import LAB, Frame, check_frame
 from ._kinds import ObstacleKind, OriginEvent
-from ._motion import PIECEWISE_MIN, MotionPlan, RigidMotion, plan_motions
+from ._motion import PIECEWISE_MIN, MotionPlan
+from ._plastic import Motion, plan_rods
 from ._signals import ChangeVerdict, Exact, _event, change_verdict, signal_arrival_on
 from ._validate import ParameterError, as_real, check_fractions, check_times, check_times_ordered
 
@@ -37,11 +38,12 @@ class Rod:
     """One rod of a scene: its motion and its rest mass before and after (heat adds mass)."""
 
     name: str
-    motion: RigidMotion
+    motion: Motion
+    """Born-rigid (:class:`RigidMotion`) or stopped point by point (:class:`PlasticMotion`)."""
     mass_before: float
     mass_after: float
 
-    def __init__(self, name: str, motion: RigidMotion, mass_before: float, mass_after: float) -> None:
+    def __init__(self, name: str, motion: Motion, mass_before: float, mass_after: float) -> None:
         # into the instance's dict at once (the generated __init__ calls object.__setattr__ per field)
         self.__dict__.update(name=name, motion=motion, mass_before=mass_before, mass_after=mass_after)
 
@@ -176,7 +178,7 @@ class Scene:
         plan = self._plans.get(key)
         if plan is None:
             rods = self.rods if rod is None else (self.rods[rod],)
-            plan = plan_motions([r.motion for r in rods], frame, fractions)
+            plan = plan_rods([r.motion for r in rods], frame, fractions)
             if len(self._plans) >= _MAX_CACHED_PLANS:
                 self._plans.clear()
             self._plans[key] = plan
@@ -253,7 +255,8 @@ class Scene:
         frame = check_frame(frame)
         tt = check_times("t", t)
         rest = np.array([r.motion.length for r in self.rods])
-        lengths = self._plan(frame, ENDS).equal_time_lengths(tt.ravel(), rest)
+        rest_after = np.array([r.motion.length_final for r in self.rods])
+        lengths = self._plan(frame, ENDS).equal_time_lengths(tt.ravel(), rest, rest_after)
         return lengths.reshape((self.n_rods, *tt.shape))
 
     def switch_times(self, frame: Frame = LAB, *, fractions: npt.ArrayLike = ENDS) -> FloatArray:
@@ -278,6 +281,12 @@ class Scene:
         t0, t1 = min(times), max(times)
         scale = max(t1 - t0, max(r.motion.length for r in self.rods) / frame.lorentz_factor)
         return (t0 - margin * scale, t1 + margin * scale)
+
+    def notes(self, frame: Frame = LAB) -> tuple[str, ...]:
+        """What a scene says in words beside its events, seen from ``frame`` (a paradox's verdicts);
+        none for most scenes."""
+        del frame
+        return ()
 
     # ------------------------------------------------------------------- budget
     def budget(self, frame: Frame = LAB) -> FourMomentumBudget:

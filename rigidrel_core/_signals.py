@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -28,6 +28,9 @@ import numpy.typing as npt
 from ._exact import relative_rapidity
 from ._frame import Frame
 from ._motion import RigidMotion
+
+if TYPE_CHECKING:
+    from ._plastic import PlasticMotion
 from ._validate import ParameterError, as_real
 
 CausalKind = Literal["timelike", "lightlike", "spacelike"]
@@ -107,7 +110,11 @@ def _minus(a: Exact, b: Exact) -> float:
 
 
 def signal_arrival_on(
-    motion: RigidMotion, fraction: float, frame: Frame, source: tuple[Exact, Exact], direction: int | None
+    motion: RigidMotion | PlasticMotion,
+    fraction: float,
+    frame: Frame,
+    source: tuple[Exact, Exact],
+    direction: int | None,
 ) -> Event | None:
     """Where a light ray leaving ``source`` meets material point ``fraction`` of ``motion``, as frame
     ``(t, x)``; ``None`` if it never does.

@@ -4,7 +4,8 @@
 
 Writes assets/app.png (the app in headless Chromium: Fig. 3's collision seen from the
 barycentric frame, paused mid-collision), assets/figures/fig1-4.{svg,png} (the paper's
-figures) and assets/rod-collision-lanes.gif (the lanes of that collision).
+figures), assets/figures/{bell-spaceships,pole-barn}.{svg,png,txt} (the paradoxes) and
+assets/rod-collision-lanes.gif (the lanes of that collision).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from pathlib import Path
 import rigidrel_core as rr
 from rigidrel_app.backends.raster import write_gif
 from rigidrel_app.export.figures import write_figures
+from rigidrel_app.export.paradox_figures import write_paradox_figures
 from rigidrel_app.export.recording import playback_times
 from rigidrel_app.live.server import App
 from rigidrel_app.view.scene_view import build_drawing
@@ -54,6 +56,7 @@ def main() -> None:
     ASSETS.mkdir(exist_ok=True)
     app_screenshot(ASSETS / "app.png")
     write_figures(ASSETS / "figures")
+    write_paradox_figures(ASSETS / "figures")
     lanes_gif(ASSETS / "rod-collision-lanes.gif")
     print(f"assets written: {ASSETS} ({CHROMIUM})")
 

@@ -20,7 +20,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import rigidrel_core as rr
-from rigidrel_core._motion import MotionPlan, plan_motions
+from rigidrel_core._motion import MotionPlan
+from rigidrel_core._plastic import plan_rods
 from tests.strategies import scene_and_frame
 
 FloatArray = npt.NDArray[np.float64]
@@ -132,7 +133,7 @@ def test_every_path_matches_the_sampler_as_it_was(
     """Through the plan and through the scene's samplers (which pass the order their time check
     found): the path chosen, whichever it is, gives what the sampler gave before."""
     scene, frame = scene_frame
-    plan = plan_motions([r.motion for r in scene.rods], frame, fractions)
+    plan = plan_rods([r.motion for r in scene.rods], frame, fractions)
     t = data.draw(time_sets(scene, frame, fractions))
     expected = reference_positions(plan, t)
     assert plan.positions(t).tobytes() == expected.tobytes()
@@ -151,7 +152,7 @@ def test_each_path_matches_its_reference_at_any_size(
     sorted reference on sorted times; the Python-float, branch-free and shuffled paths equal the
     branch-free reference on any times."""
     scene, frame = scene_frame
-    plan = plan_motions([r.motion for r in scene.rods], frame, fractions)
+    plan = plan_rods([r.motion for r in scene.rods], frame, fractions)
     lo, hi = scene.time_window(frame)
     n = data.draw(st.sampled_from(SIZES))
     t = np.linspace(lo, hi, n)
@@ -171,7 +172,7 @@ def test_the_benchmark_cases_match() -> None:
 
     rng = np.random.default_rng(0)
     for scene, frame, t in (paper_case(100_000), curved_case(100_000)):
-        plan = plan_motions([r.motion for r in scene.rods], frame, rr.ENDS)
+        plan = plan_rods([r.motion for r in scene.rods], frame, rr.ENDS)
         assert scene.positions(t, frame).tobytes() == reference_sorted(plan, t).tobytes()
         shuffled = rng.permutation(t)
         assert scene.positions(shuffled, frame).tobytes() == reference_branch_free(plan, shuffled).tobytes()
@@ -183,7 +184,7 @@ def test_each_path_keeps_its_own_square_of_the_radius(a_front: float) -> None:
     sorted path's) and ``rho * rho`` (the branch-free form's): the two forms disagree there in the
     last bit of some positions, and each path must still give exactly what its form gave."""
     scene = rr.constant_acceleration(v=0.8, length=1.0, a_front=a_front)
-    plan = plan_motions([r.motion for r in scene.rods], rr.LAB, rr.ENDS)
+    plan = plan_rods([r.motion for r in scene.rods], rr.LAB, rr.ENDS)
     assert any(r**2 != r * r for r in plan.radius)
     switch = scene.switch_times(rr.LAB).reshape(-1, 2)
     t = np.linspace(switch[:, 0].max(), switch[:, 1].min(), 40_000)

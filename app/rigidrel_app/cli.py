@@ -110,6 +110,7 @@ def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
         "final_velocities": list(scene.final_velocities),
         "frame_presets": {k: f.beta for k, f in scene.frames.items()},
         "budget": budget.as_dict(),
+        "notes": list(scene.notes(frame)),
     }
 
 
@@ -146,6 +147,7 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
         src = {"drive": "from the drive", "wall": "from the wall"}[budget.external_source]
         lines.append(f"  {src:<31}{'':>12}{_g(budget.external[0]):>16}{_g(budget.external[1]):>16}")
     lines.append(f"  heat (rest energy created): {_g(budget.heat)}")
+    lines += ["", *(f"note  {n}" for n in scene.notes(frame))] if scene.notes(frame) else []
     return "\n".join(lines)
 
 

@@ -276,7 +276,7 @@ def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) 
 def rod_extents(img: np.ndarray) -> np.ndarray:
     """Leftmost and rightmost pixel column of each rod colour, shape (rods, 2)."""
     out = []
-    for color in ROD_COLORS:
+    for color in ROD_COLORS[:2]:  # the two rods of the scenes drawn here (a third colour is for a third rod)
         rgb = np.array([int(color[i : i + 2], 16) for i in (1, 3, 5)], dtype=float)
         columns = np.nonzero((np.abs(img - rgb).sum(axis=-1) < 60).any(axis=0))[0]
         assert columns.size, f"no pixel of rod colour {color}"

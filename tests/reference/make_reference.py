@@ -33,6 +33,7 @@ regenerate it.
 Run from the repository root (about 8 minutes)::
 
     python -m tests.reference.make_reference                  # writes tests/reference/reference.json
+    python -m tests.reference.make_reference --append         # only the cases the table lacks (the same result)
     python -m tests.reference.make_reference --out /tmp/r.json  # elsewhere, e.g. to compare
 """
 
@@ -51,10 +52,12 @@ import mpmath as mp
 
 from rigidrel_app.bench.reference import (
     BUILDERS,
+    PARADOXES,
     REFERENCE_DIGITS,
     REFERENCES,
     F,
     Mp,
+    ReferenceCase,
     RefScene,
     boost_event,
     frame_slice_and_clock,
@@ -110,27 +113,38 @@ def sample_times(events_frame: list[Mp], scale: float, rng: random.Random, *, fe
 
 
 # ------------------------------------------------------------------ cases
+#: Fixed cases from this order on follow the random cases (groups added after the random cases were
+#: drawn), so that adding them leaves every earlier case, frames and times included, as it was.
+AFTER_RANDOM = PARADOXES
+
+
 def cases() -> list[dict[str, object]]:
-    """Every scene family's fixed cases by ``order``, then :data:`RANDOM_CASES` drawn cases."""
+    """Every scene family's fixed cases by ``order`` up to :data:`AFTER_RANDOM`, then
+    :data:`RANDOM_CASES` drawn cases, then the fixed cases from :data:`AFTER_RANDOM` on."""
     fixed = sorted((c for r in REFERENCES.values() for c in r.cases), key=lambda c: c.order)
     orders = [c.order for c in fixed]
     if len(set(orders)) != len(orders):
         raise ValueError(f"two reference cases share an order: {orders}")
-    out: list[dict[str, object]] = [{"kind": c.kind, "params": dict(c.params), "group": c.group} for c in fixed]
+
+    def entry(c: ReferenceCase) -> dict[str, object]:
+        return {"kind": c.kind, "params": dict(c.params), "group": c.group}
+
+    out: list[dict[str, object]] = [entry(c) for c in fixed if c.order < AFTER_RANDOM]
     rng = random.Random(CASES_SEED)
     drawn = [r for r in REFERENCES.values() if r.draw is not None]
     for _ in range(RANDOM_CASES):
         ref = rng.choice(drawn)
         assert ref.draw is not None
         out.append({"kind": ref.kind, "params": ref.draw(rng), "group": "random"})
-    return out
+    return out + [entry(c) for c in fixed if c.order >= AFTER_RANDOM]
 
 
 def hair_off(v: Mp, sign: int) -> float:
     """``tanh(atanh(v) + sign HAIR)`` at 50 digits, rounded to float64 (it rounds back to ``v``
     itself when ``HAIR`` is below half an ulp of ``v``, i.e. at ``gamma`` of a few thousand)."""
     with reference_precision():
-        return float(mp.tanh(mp.atanh(v) + sign * F(HAIR)))
+        off: Mp = mp.tanh(mp.atanh(v) + sign * F(HAIR))
+        return float(off)
 
 
 def frames_for(ref: RefScene, rng: random.Random) -> list[tuple[float, str]]:
@@ -152,18 +166,33 @@ def frames_for(ref: RefScene, rng: random.Random) -> list[tuple[float, str]]:
     return list(first.items())
 
 
-def build_case(case: dict[str, object], rng: random.Random) -> dict[str, object]:
+def case_frames(
+    case: dict[str, object], rng: random.Random
+) -> tuple[RefScene, list[tuple[float, str, dict[str, tuple[Mp, Mp]], list[float]]]]:
+    """A case's reference scene and its frames: ``(beta, role, events there, sample times)``; all of
+    the case's draws from the stream ``rng`` (the slices at those times draw nothing)."""
     kind = str(case["kind"])
     params: dict[str, Any] = dict(case["params"])  # type: ignore[arg-type]
     few = case.get("group") == "random"
     with reference_precision():
         ref = BUILDERS[kind](FRACTIONS, **params)
-        frames = []
+        out = []
         for beta_f, role in frames_for(ref, rng):
-            beta = F(beta_f)
-            ev_frame = {k: boost_event(e, beta) for k, e in ref.events.items()}
+            ev_frame = {k: boost_event(e, F(beta_f)) for k, e in ref.events.items()}
             scale = float(max(ref.lengths_rest))
             times = sample_times([e[0] for e in ev_frame.values()], scale, rng, few=few and role not in FULL_ROLES)
+            out.append((beta_f, role, ev_frame, times))
+    return ref, out
+
+
+def build_case(case: dict[str, object], rng: random.Random) -> dict[str, object]:
+    kind = str(case["kind"])
+    params: dict[str, Any] = dict(case["params"])  # type: ignore[arg-type]
+    ref, planned = case_frames(case, rng)
+    with reference_precision():
+        frames = []
+        for beta_f, role, ev_frame, times in planned:
+            beta = F(beta_f)
             exact = [[[frame_slice_and_clock(w, beta, F(t)) for t in times] for w in rod] for rod in ref.worldlines]
             frames.append(
                 {
@@ -199,12 +228,29 @@ def main(argv: list[str] | None = None) -> None:
         prog="python -m tests.reference.make_reference", description=(__doc__ or "").splitlines()[0]
     )
     parser.add_argument("--out", type=Path, default=OUT, help=f"where to write the table (default: {OUT})")
-    out: Path = parser.parse_args(argv).out
+    parser.add_argument(
+        "--append",
+        action="store_true",
+        help="keep the cases the committed table already has (the generator's first cases, unchanged) and "
+        "build only those after them, the stream replayed through the kept ones: the same table as a full run",
+    )
+    args = parser.parse_args(argv)
+    out: Path = args.out
     rng = random.Random(FRAMES_SEED)
     t0 = time.perf_counter()
     all_cases = cases()
-    built = []
-    for i, case in enumerate(all_cases):
+    built: list[dict[str, object]] = []
+    if args.append:
+        kept = json.loads(OUT.read_text())["cases"]
+        for committed, case in zip(kept, all_cases):
+            if committed["kind"] != case["kind"]:
+                raise SystemExit("--append: the committed table's cases are not the generator's first cases")
+            _, planned = case_frames(case, rng)  # the draws a full run makes for this case
+            replayed = [[beta.hex(), [t.hex() for t in times]] for beta, _, _, times in planned]
+            if replayed != [[f["beta"], f["times"]] for f in committed["frames"]]:
+                raise SystemExit(f"--append: case {len(built)} does not replay its frames and times")
+            built.append(committed)
+    for i, case in enumerate(all_cases[len(built) :], start=len(built)):
         built.append(build_case(case, rng))
         print(f"{i + 1}/{len(all_cases)} {case['kind']} {time.perf_counter() - t0:.1f}s", file=sys.stderr)
     table = {"generator": "tests/reference/make_reference.py", "mp_dps": REFERENCE_DIGITS, "cases": built}

@@ -16,6 +16,7 @@ import rigidrel_core as rr
 
 from .sampling import ADAPTIVE, Sampler
 from .vocabulary import (
+    DOOR_COLOR,
     FRAME_COLOR,
     INK,
     LIGHT_COLOR,
@@ -173,7 +174,10 @@ def minkowski_static(
     # obstacles (a wall): straight worldlines
     tt = np.array([t0, t1])
     for obstacle in scene.obstacles:
-        items.append(Polyline(obstacle.positions(tt, frame), tt, Style(WALL_COLOR, 5.0, name=obstacle.name)))
+        style = Style(WALL_COLOR, 5.0, name=obstacle.name)
+        if obstacle.kind is rr.ObstacleKind.BARN_DOOR:  # the door's worldline, dashed: nothing hits it
+            style = Style(DOOR_COLOR, 2.5, "dash", name=obstacle.name)
+        items.append(Polyline(obstacle.positions(tt, frame), tt, style))
     # world tubes and worldlines
     lines = sampler.worldlines(scene, frame, DIAGRAM_FRACTIONS, t_range, px_per_x)
     for r, rod in enumerate(scene.rods):

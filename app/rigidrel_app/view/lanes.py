@@ -16,7 +16,7 @@ import numpy.typing as npt
 
 import rigidrel_core as rr
 
-from .vocabulary import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, Label, Segments, Style
+from .vocabulary import DOOR_COLOR, FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, Label, Segments, Style
 
 #: Material points with ticks: every tenth of the rest length.
 TICK_FRACTIONS = np.linspace(0.0, 1.0, 11)
@@ -132,6 +132,8 @@ def obstacle_box(obstacle: rr.Obstacle, x: float, geo: LaneGeometry) -> Box:
     towards negative x, where the rods never are)."""
     if obstacle.kind is rr.ObstacleKind.WALL:
         return Box(x - 0.02, x, geo.wall_height, WALL_COLOR, z=0.5 * (geo.wall_height - geo.rod_height))
+    if obstacle.kind is rr.ObstacleKind.BARN_DOOR:  # a thin bar whose inner face is at x (the barn lies below x)
+        return Box(x, x + 0.01, geo.wall_height, DOOR_COLOR, z=0.5 * (geo.wall_height - geo.rod_height))
     raise ValueError(f"no lane drawing for obstacle kind {obstacle.kind!r}")
 
 

@@ -188,9 +188,10 @@ def readout_markdown(resolved: Resolved) -> str:
     params = [f"{d.parameter(k).symbol} = {format_value(v)}" for k, v in scene.parameters.items()]
     v = ", ".join(f"{r.name}: {v:+.4f}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
     ev = " · ".join(f"{k} ({_fixed(t)}, {_fixed(x)})" for k, (t, x) in scene.events.items())
+    notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame))  # a paradox's verdicts, in words
     return (
         f"**Scene** {', '.join(params)}  \n**Final velocities** {v}  \n**Events (lab t, x)** {ev}  \n"
-        f"**Frame** {frame_title(frame)}  \n**Clocks** {CLOCK_RULE}"
+        f"**Frame** {frame_title(frame)}  \n**Clocks** {CLOCK_RULE}{notes}"
     )
 
 

@@ -21,10 +21,12 @@ Dash = Literal["solid", "dash", "dot", "dashdot"]
 Anchor = Literal["left", "right", "center"]
 
 # palette (colour-blind safe: blue / orange / purple, Okabe-Ito)
-ROD_COLORS = ("#0072B2", "#E8710A")
+ROD_COLORS = ("#0072B2", "#E8710A", "#009E73")  # a third rod (Bell's comparison rod): Okabe-Ito green
 FRAME_COLOR = "#7B3FA0"
 LIGHT_COLOR = "#C9A400"
 WALL_COLOR = "#6E6E6E"
+DOOR_COLOR = "#8C5A2B"
+"""A barn's front door (an obstacle nothing hits)."""
 INK = "#222222"
 
 

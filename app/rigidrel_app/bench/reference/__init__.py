@@ -382,6 +382,8 @@ VELOCITY_CHANGES = 500
 WEAK_ACCELERATION = 600
 """``a'_F L0 = 1e-3 .. 1e-7``: every point's radius ``rho = 1/a'`` is ``10^3 .. 10^7`` rest lengths,
 so clocks advance ``rho`` times the rapidity change, read in frames far from the lab."""
+PARADOXES = 700
+"""Bell's spaceships and the pole in the barn (Born-rigid and signal-limited stops)."""
 #: Each group's name in the committed table (``order // 100 * 100`` is a fixed case's group;
 #: the random cases form the group ``"random"``).
 GROUP_NAMES: Mapping[int, str] = MappingProxyType(
@@ -392,6 +394,7 @@ GROUP_NAMES: Mapping[int, str] = MappingProxyType(
         MASS_RATIOS_AND_SIZES: "mass-ratios-sizes",
         VELOCITY_CHANGES: "velocity-changes",
         WEAK_ACCELERATION: "weak-acceleration",
+        PARADOXES: "paradoxes",
     }
 )
 

@@ -1,0 +1,123 @@
+"""Reference of Bell's spaceships (the paper's Sec. 1 citation, with Sec. 3's constant acceleration).
+
+Each material point at lab ``xi`` (at rest before ``t = 0``) follows Eq. (4) with its own proper
+acceleration ``alpha = 1/(1/a + d)``, ``d`` its rest-distance from its rod's rear end (Eq. (15)):
+the rear ship on ``[0, l]``, the front ship on ``[s, s + l]``, the Born-rigid comparison rod on
+``[0, s]``. Each reaches ``V`` at ``T = gamma V / alpha`` (Eq. (9)).
+
+The string's rest length is found by its definition, not by the core's closed form: at the rear
+ship's rapidity ``theta`` its front end is at lab ``(R sinh theta, -1/a + R cosh theta)``
+(``R = 1/a + l``); boosted into the frame of rapidity ``theta`` it has a frame time, at which the
+front ship's rear end is sliced by root finding (:func:`frame_slice`); the difference of the two
+positions is the string's rest length. The break (given a breaking strain) is the ``theta`` where
+that length reaches ``(1 + e_b)(s - l)``, by bisection.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import mpmath as mp
+
+from . import (
+    PARADOXES,
+    F,
+    Mp,
+    ReferenceCase,
+    RefScene,
+    SceneReference,
+    Worldline,
+    accelerating_point,
+    at_reference_precision,
+    boost_event,
+    frame_slice,
+    gamma_of,
+    material_point,
+)
+
+
+@at_reference_precision
+def string_rest_length(theta: Mp, a: Mp, ship: Mp, front_rear: Worldline) -> Mp:
+    """The string's rest length in the rear ship's comoving frame at its rapidity ``theta``."""
+    r = 1 / a
+    big_r = r + ship
+    end = (big_r * mp.sinh(theta), -r + big_r * mp.cosh(theta))
+    beta = mp.tanh(theta)
+    t_frame, x_frame = boost_event(end, beta)
+    return frame_slice(front_rear, beta, t_frame) - x_frame
+
+
+@at_reference_precision
+def ref_bell_spaceships(
+    fractions: Sequence[float],
+    v: float,
+    separation: float,
+    acceleration: float,
+    ship_length: float | None = None,
+    breaking_strain: float | None = None,
+) -> RefScene:
+    """Three rods (rear ship, front ship, comparison rod); events ``T_B1``, ``T_F1``, ``T_B2``, ``T_F2``,
+    ``T_Frod``; extras: the string's final rest length and, given a breaking strain it reaches, the
+    break event's lab ``(t, x)`` (``break_t``, ``break_x``)."""
+    V, s, a = F(v), F(separation), F(acceleration)
+    ship = s / 10 if ship_length is None else F(ship_length)
+    g = gamma_of(V)
+    r = 1 / a
+
+    def point(start: Mp, d: Mp) -> Worldline:
+        return accelerating_point(start + d, 1 / (r + d), V)
+
+    def stop(start: Mp, d: Mp) -> tuple[Mp, Mp]:
+        return (g * V * (r + d), start + d + (g - 1) * (r + d))
+
+    rear = [point(mp.mpf(0), material_point(f, ship)) for f in fractions]
+    front = [point(s, material_point(f, ship)) for f in fractions]
+    rod = [point(mp.mpf(0), material_point(f, s)) for f in fractions]
+    events = {
+        "T_B1": stop(mp.mpf(0), mp.mpf(0)),
+        "T_F1": stop(mp.mpf(0), ship),
+        "T_B2": stop(s, mp.mpf(0)),
+        "T_F2": stop(s, ship),
+        "T_Frod": stop(mp.mpf(0), s),
+    }
+    front_rear = point(s, mp.mpf(0))
+    theta_v = mp.atanh(V)
+    extra = {"string_final": string_rest_length(theta_v, a, ship, front_rear), "rears_apart_after": g * s}
+    if breaking_strain is not None:
+        target = (1 + F(breaking_strain)) * (s - ship)
+        if string_rest_length(theta_v, a, ship, front_rear) >= target:
+            lo, hi = mp.mpf(0), theta_v
+            while hi - lo > theta_v * mp.mpf(10) ** -45:
+                mid = (lo + hi) / 2
+                if string_rest_length(mid, a, ship, front_rear) < target:
+                    lo = mid
+                else:
+                    hi = mid
+            theta = (lo + hi) / 2
+            extra["break_t"] = (r + ship) * mp.sinh(theta)
+            extra["break_x"] = -r + (r + ship) * mp.cosh(theta)
+    zero = mp.mpf(0)
+    return RefScene([rear, front, rod], events, [zero, zero, zero], [V, V, V], [ship, ship, s], extra)
+
+
+BELL_SPACESHIPS = SceneReference(
+    "bell-spaceships",
+    60,
+    ref_bell_spaceships,
+    (
+        ReferenceCase("bell-spaceships", {"v": 0.6, "separation": 1.0, "acceleration": 0.5}, PARADOXES + 1),
+        ReferenceCase(
+            "bell-spaceships",
+            {"v": 0.9, "separation": 2.0, "acceleration": 3.0, "ship_length": 0.5, "breaking_strain": 0.5},
+            PARADOXES + 2,
+        ),
+        ReferenceCase(
+            "bell-spaceships",
+            {"v": 0.6, "separation": 1.0, "acceleration": 0.5, "breaking_strain": 0.1},
+            PARADOXES + 3,
+        ),
+        ReferenceCase("bell-spaceships", {"v": 1 - 1e-9, "separation": 1.0, "acceleration": 1e-3}, PARADOXES + 4),
+    ),
+)
+
+SCENES = (BELL_SPACESHIPS,)

@@ -1,0 +1,328 @@
+r"""Bell's spaceships: two ships with the same proper acceleration, a string between them.
+
+The paper's introduction cites Bell's spaceships, which its author treated with the constant
+acceleration of Sec. 3. Units c = 1. Two ships start at rest at lab ``t = 0``; their rear ends are
+a lab distance ``s`` (``separation``) apart, at ``x = 0`` and ``x = s``. Each ship is a short
+Born-rigid rod of rest length ``l`` (``ship_length``) whose rear end has the proper acceleration
+``a``; its front end then has ``a / (1 + a l)`` (Sec. 3, Eq. (15) solved for ``a'_F``). Both rear
+ends reach ``V`` at the same lab instant ``T_B = gamma V / a`` (Eq. (9)): the lab distance of the
+rears stays ``s`` throughout, so in the ships' rest frame after, it is ``gamma s`` (the rear
+ends' events at lab ``T_B`` are simultaneous in the lab, not in that frame).
+
+**The string** joins the rear ship's front end (rest-distance ``R = 1/a + l`` from its centre
+``C_1 = (0, -1/a)``) to the front ship's rear end (radius ``r = 1/a`` about ``C_2 = (0, s - 1/a)``).
+Its proper length at an instant is its rest length in the rear ship's momentarily comoving
+frame: while the rear ship is at rapidity ``theta`` (its whole body: it is Born-rigid), that
+frame's line of simultaneity through the string's rear end passes through ``C_1``. Boosting
+``C_2 - C_1 = (0, s)`` into it gives ``(-s sinh theta, s cosh theta)``, so the front ship's rear
+end is met on its hyperbola where ``r sinh(phi - theta) = s sinh theta`` and
+
+.. math::
+    D(\theta) = s\cosh\theta + \sqrt{r^2 + s^2\sinh^2\theta}
+    \quad(\phi = \theta + \operatorname{asinh}(s \sinh\theta / r) \le \theta_V),
+
+    D(\theta) = \frac{r + s\cosh\theta_V}{\cosh(\theta_V - \theta)}
+    \quad\text{(the front ship's rear already coasting)},
+
+is that rear end's distance from ``C_1``; the string is ``D(theta) - r - l`` long: ``s - l`` at
+rest, ``gamma s - l`` once both ships coast (``theta = theta_V``), and increasing in between.
+Its strain is ``(D - r - l)/(s - l) - 1``. Given a breaking strain ``e_b``, it breaks where
+``D = r + l + (1 + e_b)(s - l)``: ``cosh theta = (D^2 - r^2 + s^2)/(2 D s)`` (the first form
+squared) or ``theta = theta_V - acosh((r + s gamma)/D)`` (the second); the break event is the
+string's rear end there, ``C_1 + R (sinh theta, cosh theta)``.
+
+**The comparison rod** spans the same two rear ends, rest length ``s``, with the same rear
+acceleration ``a``: Born-rigid, its front end accelerates less, ``a / (1 + a s)`` (Eq. (15)),
+and reaches ``V`` later, at ``gamma V (1/a + s)``; it keeps its rest length ``s``, so its front end
+falls behind the front ship's rear.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+
+import numpy as np
+import numpy.typing as npt
+
+from .. import _dd
+from .._build import ACCELERATION, SIZE, V, checked_scene, rigid_motion
+from .._description import EventDescription, Interval, OriginEvent, Parameter, SceneDescription, ScenePreset, Slider
+from .._exact import REST, ExactVelocity
+from .._frame import LAB, Frame, check_frame
+from .._scene import EventSpec, Rod, Scene
+from .._validate import ParameterError, check_times
+
+FloatArray = npt.NDArray[np.float64]
+
+SEPARATION = Parameter(
+    "separation",
+    "s",
+    "s (rear ends apart)",
+    "length unit",
+    SIZE,
+    1.0,
+    "lab distance s of the two ships' rear ends (the same at every lab time)",
+    Slider(0.1, 10.0, 0.1),
+    typical=(0.1, 10.0),
+)
+ACCELERATION_REAR = Parameter(
+    "acceleration",
+    "a",
+    "a (rear ends)",
+    "1/length unit",
+    ACCELERATION,
+    0.5,
+    "proper acceleration a of each ship's rear end; each stops at lab t = γV/a (Sec. 3, Eq. (9))",
+    Slider(0.05, 5.0, 0.05),
+    typical=(0.05, 5.0),
+)
+SHIP_LENGTH = Parameter(
+    "ship_length",
+    "l",
+    "l (ship)",
+    "length unit",
+    SIZE,
+    0.1,
+    "rest length l of each ship (the constructor's default, none: a tenth of the separation)",
+    Slider(0.01, 0.9, 0.01),
+    typical=(0.01, 0.9),
+    optional=True,
+    constraint="ship_length < separation",
+)
+BREAKING_STRAIN = Parameter(
+    "breaking_strain",
+    "e_b",
+    "breaking strain",
+    "",
+    Interval(0.0, math.inf),
+    0.25,
+    "the string's strain (rest length over its unstretched length, minus 1) at which it breaks (none: never)",
+    Slider(0.01, 2.0, 0.01),
+    typical=(0.01, 2.0),
+    optional=True,
+)
+
+#: Rods of the scene, in order.
+REAR_SHIP, FRONT_SHIP, COMPARISON_ROD = 0, 1, 2
+_EVENTS = (
+    EventSpec("T_B1", REAR_SHIP, 0, "stop"),
+    EventSpec("T_F1", REAR_SHIP, 1, "stop"),
+    EventSpec("T_B2", FRONT_SHIP, 0, "stop"),
+    EventSpec("T_F2", FRONT_SHIP, 1, "stop"),
+    EventSpec("T_Frod", COMPARISON_ROD, 1, "stop"),
+)
+FRAMES = ("lab", "ships after")
+
+
+@dataclass(frozen=True, eq=False)
+class BellScene(Scene):
+    """Bell's spaceships (see :mod:`rigidrel_core.scenes.bell`): rods ``0`` the rear ship, ``1`` the
+    front ship, ``2`` the Born-rigid comparison rod; the string from rod 0's front to rod 1's rear."""
+
+    separation: float = 1.0
+    ship_length: float = 0.1
+    acceleration: float = 0.5
+    breaking_strain: float | None = None
+
+    @property
+    def string_unstretched(self) -> float:
+        """The string's rest length at the start, ``s - l``."""
+        return self.separation - self.ship_length
+
+    @property
+    def string_final(self) -> float:
+        """The string's rest length once both ships coast, ``gamma s - l``."""
+        return self.separation * self.rods[0].motion.velocity_final.lorentz_factor() - self.ship_length
+
+    def string_rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """The string's rest length when the rear ship has lab rapidity ``theta`` (clipped to
+        ``[0, theta_V]``): ``D(theta) - r - l`` of the module docstring, each form without
+        cancellation (``sqrt(r^2 + q^2) - r = q^2 / (sqrt(r^2 + q^2) + r)``)."""
+        theta_v = self.rods[0].motion.velocity_final.rapidity()
+        theta = np.clip(np.asarray(rapidity, dtype=np.float64), 0.0, theta_v)
+        s, r, ship = self.separation, 1.0 / self.acceleration, self.ship_length
+        q = s * np.sinh(theta)
+        root = np.hypot(r, q)
+        on_hyperbola = s * np.cosh(theta) + q * q / (root + r) - ship
+        half = np.sinh(0.5 * (theta_v - theta))
+        coasting = (s * math.cosh(theta_v) - 2.0 * r * half * half) / np.cosh(theta_v - theta) - ship
+        phi = theta + np.arcsinh(q / r)
+        return np.where(phi <= theta_v, on_hyperbola, coasting)
+
+    def string_rapidities(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+        """The rear ship's lab rapidity when its front end (the string's rear end) is at frame time
+        ``t'``: its clock ``tau`` over its radius ``R = 1/a + l`` (proper acceleration ``1/R``),
+        clipped to ``[0, theta_V]``; an invariant of the event."""
+        frame = check_frame(frame)
+        tt = check_times("t", t)
+        tau = self.proper_times(tt, frame, fractions=np.array([1.0]))[REAR_SHIP, 0]
+        radius = 1.0 / self.acceleration + self.ship_length
+        return np.clip(tau / radius, 0.0, self.rods[0].motion.velocity_final.rapidity())
+
+    def string_rest_lengths(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+        """The string's proper length when its rear end is at frame time ``t'``: its rest length in
+        the rear ship's momentarily comoving frame. Shape of ``t``."""
+        return self.string_rest_length_at_rapidity(self.string_rapidities(t, frame))
+
+    def string_strains(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+        """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
+        return self.string_rest_lengths(t, frame) / self.string_unstretched - 1.0
+
+    @property
+    def final_strain(self) -> float:
+        """The strain once both ships coast: ``(gamma - 1) s / (s - l)``."""
+        g = self.rods[0].motion.velocity_final.lorentz_factor()
+        return (g - 1.0) * self.separation / self.string_unstretched
+
+    @property
+    def string_break(self) -> tuple[float, float] | None:
+        """Lab ``(t, x)`` of the string's rear end when the strain reaches the breaking strain, or
+        ``None`` (no breaking strain, or one the string never reaches)."""
+        e_b = self.breaking_strain
+        if e_b is None or e_b > self.final_strain:
+            return None
+        s, r, ship = self.separation, 1.0 / self.acceleration, self.ship_length
+        theta_v = self.rods[0].motion.velocity_final.rapidity()
+        d = r + ship + (1.0 + e_b) * self.string_unstretched
+        theta = math.acosh(max(1.0, (d * d - r * r + s * s) / (2.0 * d * s)))
+        if theta + math.asinh(s * math.sinh(theta) / r) > theta_v:  # the front ship's rear coasts there
+            theta = theta_v - math.acosh(max(1.0, (r + s * math.cosh(theta_v)) / d))
+        big_r = r + ship
+        return (big_r * math.sinh(theta), -r + big_r * math.cosh(theta))
+
+    def notes(self, frame: Frame = LAB) -> tuple[str, ...]:
+        """The string's story and the rear ends' distance in the ships' frame after, in words."""
+        frame = check_frame(frame)
+        g = self.rods[0].motion.velocity_final.lorentz_factor()
+        lines = [
+            f"the rear ends stay {self.separation:.6g} apart in the lab; in the ships' frame after they are "
+            f"gamma s = {g * self.separation:.6g} apart",
+            f"the string's rest length grows from s - l = {self.string_unstretched:.6g} to gamma s - l = "
+            f"{self.string_final:.6g} (strain {self.final_strain:.4g}); the Born-rigid rod keeps {self.separation:.6g}",
+        ]
+        event = self.string_break_in(frame)
+        if self.breaking_strain is None:
+            lines.append("no breaking strain given: the string stretches and holds")
+        elif event is None:
+            lines.append(f"the string holds: its strain never reaches the breaking strain {self.breaking_strain:.4g}")
+        else:
+            lines.append(
+                f"the string breaks at strain {self.breaking_strain:.4g}: at its rear end, (t, x) = "
+                f"({event[0]:.6g}, {event[1]:.6g}) in this frame"
+            )
+        return tuple(lines)
+
+    def string_break_in(self, frame: Frame = LAB) -> tuple[float, float] | None:
+        """The break event in ``frame`` (``None`` if the string never breaks)."""
+        frame = check_frame(frame)
+        event = self.string_break
+        if event is None:
+            return None
+        t, x = (frame @ np.array(event)).tolist()
+        return (t, x)
+
+
+def _inverse(a: float) -> _dd.DD:
+    return _dd.div((1.0, 0.0), (a, 0.0))
+
+
+def bell_spaceships(
+    v: float,
+    separation: float,
+    acceleration: float,
+    ship_length: float | None = None,
+    breaking_strain: float | None = None,
+    mass: float = 1.0,
+) -> BellScene:
+    """Bell's spaceships (module docstring): rear ends at 0 and ``separation``, each with proper
+    acceleration ``acceleration`` from lab ``t = 0`` until it reaches ``v`` at ``T_B = gamma v / a``
+    (Sec. 3, Eq. (9)); ships of rest length ``ship_length`` (default ``0.1 separation``), Born-rigid
+    (front ends at ``a / (1 + a l)``, Eq. (15)); a string from the rear ship's front to the front
+    ship's rear, breaking at ``breaking_strain`` if given; and the Born-rigid comparison rod on
+    ``[0, separation]`` with the same rear acceleration (its front end at ``a / (1 + a s)``).
+
+    Events: ``"T_B1"``, ``"T_F1"`` (rear ship's rear and front reach ``v``), ``"T_B2"``, ``"T_F2"``
+    (front ship's), ``"T_Frod"`` (the comparison rod's front). ``T_B1`` and ``T_B2`` share a lab
+    time; in the frame ``"ships after"`` the two rear ends end ``gamma separation`` apart.
+    """
+    v = V.check(v)
+    separation = SEPARATION.check(separation)
+    acceleration = ACCELERATION_REAR.check(acceleration)
+    ship = 0.1 * separation if ship_length is None else SHIP_LENGTH.check(ship_length)
+    if not ship < separation:  # names both: either may be the one to change
+        raise ParameterError(
+            "parameters", "such that ship_length < separation", {"separation": separation, "ship_length": ship}
+        )
+    strain = None if breaking_strain is None else BREAKING_STRAIN.check(breaking_strain)
+    velocity = ExactVelocity.from_float(v)
+    rho = _inverse(acceleration)
+    rods = (
+        Rod("rear ship", rigid_motion(REST, velocity, ship, rho, 0.0), mass, mass),
+        Rod("front ship", rigid_motion(REST, velocity, ship, rho, separation), mass, mass),
+        Rod("Born-rigid rod", rigid_motion(REST, velocity, separation, rho, 0.0), mass, mass),
+    )
+    params: dict[str, float] = {"v": v, "separation": separation, "acceleration": acceleration}
+    if ship_length is not None:
+        params["ship_length"] = ship
+    if strain is not None:
+        params["breaking_strain"] = strain
+    frames: Mapping[str, Frame] = MappingProxyType({"lab": LAB, "ships after": Frame(velocity, "ships after")})
+    scene = BellScene(
+        kind=BELL_SPACESHIPS.kind,
+        parameters=MappingProxyType(params),
+        rods=rods,
+        event_specs=_EVENTS,
+        frames=frames,
+        external_source="drive",
+        heat=0.0,
+        origin_event=OriginEvent.START,
+        separation=separation,
+        ship_length=ship,
+        acceleration=acceleration,
+        breaking_strain=strain,
+    )
+    checked_scene(scene)
+    return scene
+
+
+BELL_SPACESHIPS = SceneDescription(
+    kind="bell-spaceships",
+    title="Bell's spaceships",
+    summary=(
+        "Two ships with the same proper acceleration stay a lab distance s apart; the string between "
+        "them stretches to γ s − l in their frame. A Born-rigid rod beside them does not stretch."
+    ),
+    source="Sec. 1; Sec. 3",
+    constructor=bell_spaceships,
+    parameters=(V, SEPARATION, ACCELERATION_REAR, SHIP_LENGTH, BREAKING_STRAIN),
+    frames=FRAMES,
+    default_frame="ships after",
+    events=(
+        EventDescription("T_B1", "the rear ship's rear end reaches V", "Sec. 3, Eq. (9)"),
+        EventDescription("T_F1", "the rear ship's front end (the string's rear end) reaches V", "Sec. 3, Eq. (9)"),
+        EventDescription("T_B2", "the front ship's rear end reaches V, at the lab time of T_B1", "Sec. 3, Eq. (9)"),
+        EventDescription("T_F2", "the front ship's front end reaches V", "Sec. 3, Eq. (9)"),
+        EventDescription(
+            "T_Frod", "the Born-rigid rod's front end reaches V (it accelerates less)", "Sec. 3, Eqs. (9), (15)"
+        ),
+    ),
+    presets=(
+        ScenePreset(
+            "Bell's spaceships, V = 0.6", {"v": 0.6, "separation": 1.0, "acceleration": 0.5}, frame="ships after"
+        ),
+        ScenePreset(
+            "Bell's spaceships: the string breaks at 10% strain",
+            {"v": 0.6, "separation": 1.0, "acceleration": 0.5, "breaking_strain": 0.1},
+        ),
+        ScenePreset(
+            "Bell's spaceships: a string that holds",
+            {"v": 0.6, "separation": 1.0, "acceleration": 0.5, "breaking_strain": 1.0},
+        ),
+    ),
+    order=60,
+)
+
+SCENES = (BELL_SPACESHIPS,)

@@ -1,0 +1,302 @@
+"""The two paradoxes: Bell's spaceships and the pole in the barn (Born-rigid beside signal-limited).
+
+Checks named in the scenes' docstrings: Bell's rear ends end gamma s apart in the ships' frame
+(1.25 at V = 0.6); the string's rest length by its definition (the comoving frame, sliced by the
+scene's own samplers) and against the 50-digit reference; the pole's rear end never nearer the
+wall than L0 (Born-rigid) and resting at x = 1/3 (signal-limited, V = 0.8, c_s = 1); verdicts the
+same in every frame; the signal-limited stop's causality and its 4-momentum bookkeeping with heat.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import rigidrel_core as rr
+from rigidrel_core.scenes.bell import COMPARISON_ROD, REAR_SHIP
+
+SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+#: Relative tolerance of closed forms against each other and against the 50-digit reference.
+TOL = 1e-12
+#: Born rigidity as the property tests check it (a comoving frame formed from a sampled velocity).
+TOL_RIGID = 1e-9
+
+REFERENCE = json.loads((Path(__file__).parent / "reference" / "reference.json").read_text())
+
+speeds = st.floats(0.05, 0.99)
+frames = st.floats(-0.99, 0.99).map(rr.Frame.from_velocity)
+
+
+@st.composite
+def bell_scenes(draw: st.DrawFn) -> rr.BellScene:
+    separation = draw(st.floats(0.1, 10.0))
+    return rr.bell_spaceships(
+        draw(speeds),
+        separation,
+        draw(st.floats(0.05, 5.0)),
+        ship_length=draw(st.floats(0.01, 0.9)) * separation,
+        breaking_strain=draw(st.none() | st.floats(0.01, 2.0)),
+    )
+
+
+@st.composite
+def pole_scenes(draw: st.DrawFn) -> rr.PoleBarnScene:
+    length = draw(st.floats(0.1, 10.0))
+    return rr.pole_barn(
+        draw(speeds),
+        length,
+        barn_length=draw(st.floats(0.05, 2.0)) * length,
+        model="both",
+        sound_speed=draw(st.floats(0.05, 1.0)),
+        door_time=draw(st.none() | st.floats(-3.0, 3.0)),
+    )
+
+
+# ---------------------------------------------------------------- Bell's spaceships
+def test_bell_rear_ends_end_gamma_separation_apart_at_six_tenths() -> None:
+    """V = 0.6, s = 1, a = 0.5: both rear ends stop at lab t = gamma V / a = 1.5; in the ships' frame
+    after, their rear ends are gamma s = 1.25 apart, the string 1.15 long (0.9 at the start)."""
+    scene = rr.bell_spaceships(0.6, 1.0, 0.5)
+    assert scene.events["T_B1"][0] == scene.events["T_B2"][0] == 1.5
+    after = scene.frame("ships after")
+    t_late = scene.events_in(after)["T_Frod"][0] + 1.0
+    x = scene.positions([t_late], after)
+    assert x[1, 0, 0] - x[0, 0, 0] == pytest.approx(1.25, rel=TOL)
+    assert scene.string_unstretched == pytest.approx(0.9, rel=TOL)
+    assert scene.string_final == pytest.approx(1.15, rel=TOL)
+    assert scene.string_rest_lengths([-1.0, 100.0]) == pytest.approx([0.9, 1.15], rel=TOL)
+
+
+@SETTINGS
+@given(scene=bell_scenes(), frame=frames, u=st.floats(0.0, 1.0))
+def test_bell_separation_in_the_ships_frame_is_gamma_separation(scene: rr.BellScene, frame: rr.Frame, u: float) -> None:
+    """Once every end coasts, the rear ends are gamma s apart in the ships' frame; at every instant of
+    any frame the lab distance of the rear ends is s while both are seen at equal lab time."""
+    after = scene.frame("ships after")
+    g = scene.rods[0].motion.velocity_final.lorentz_factor()
+    t_late = max(t for t, _ in scene.events_in(after).values()) + 1.0
+    x = scene.positions([t_late], after)
+    assert x[1, 0, 0] - x[0, 0, 0] == pytest.approx(g * scene.separation, rel=TOL)
+    t0, t1 = scene.time_window(rr.LAB)
+    x_lab = scene.positions([t0 + u * (t1 - t0)])
+    assert x_lab[1, 0, 0] - x_lab[0, 0, 0] == pytest.approx(scene.separation, rel=TOL)
+    del frame
+
+
+@SETTINGS
+@given(scene=bell_scenes(), u=st.floats(0.0, 1.0))
+def test_bell_string_rest_length_is_its_length_in_the_rear_ships_comoving_frame(scene: rr.BellScene, u: float) -> None:
+    """The closed form against the definition: the comoving frame of the string's rear end (the
+    scene's own), the front ship's rear end sliced there at the same frame time."""
+    t_end = scene.events["T_F2"][0]
+    t = u * 1.2 * t_end
+    comoving = scene.comoving_frame(REAR_SHIP, 1.0, t=t)
+    rear_end = comoving @ np.array([t, scene.positions([t])[0, 1, 0]])
+    front_rear = scene.positions([rear_end[0]], comoving)[1, 0, 0]
+    scale = scene.separation * scene.rods[0].motion.velocity_final.lorentz_factor()
+    assert abs(scene.string_rest_lengths([t])[0] - (front_rear - rear_end[1])) <= 1e-10 * scale
+
+
+@SETTINGS
+@given(scene=bell_scenes(), frame=frames)
+def test_bell_string_stretches_monotonically_and_breaks_where_its_strain_is_the_breaking_strain(
+    scene: rr.BellScene, frame: rr.Frame
+) -> None:
+    t0, t1 = scene.time_window(frame)
+    lengths = scene.string_rest_lengths(np.linspace(t0, t1, 101), frame)
+    assert np.all(np.diff(lengths) >= -1e-12 * scene.string_final)
+    assert scene.string_unstretched * (1 - TOL) <= lengths.min() <= lengths.max() <= scene.string_final * (1 + TOL)
+    event = scene.string_break_in(frame)
+    if scene.breaking_strain is None or scene.breaking_strain > scene.final_strain:
+        assert event is None
+    else:
+        assert event is not None
+        strain = scene.string_strains([event[0]], frame)[0]
+        assert strain == pytest.approx(scene.breaking_strain, rel=1e-9, abs=1e-12)
+        x_end = scene.positions([event[0]], frame)[REAR_SHIP, 1, 0]
+        assert x_end == pytest.approx(event[1], rel=1e-12, abs=1e-12 * scene.separation)
+
+
+@SETTINGS
+@given(scene=bell_scenes(), frame=frames, f=st.floats(0.0, 1.0), u=st.floats(0.0, 1.0))
+def test_bell_comparison_rod_keeps_its_rest_length_and_its_front_accelerates_less(
+    scene: rr.BellScene, frame: rr.Frame, f: float, u: float
+) -> None:
+    """The Born-rigid rod on [0, s]: its rest length s in the comoving frame of any of its points, its
+    rear end on the rear ship's worldline, its front end reaching V at gamma V (1/a + s) (Eq. (15):
+    ``a'_F = a / (1 + a s)``), after the front ship's rear end."""
+    rod = COMPARISON_ROD
+    t0, t1 = scene.time_window(frame)
+    t = t0 + u * (t1 - t0)
+    comoving = scene.comoving_frame(rod, f, t=t, frame=frame)
+    x = scene.material_positions([t], frame, fractions=[f])[rod, 0, 0]
+    t_c = float((comoving @ (frame.inverse() @ np.array([t, x])))[0])
+    assert scene.lengths([t_c], comoving)[rod, 0] == pytest.approx(scene.separation, rel=TOL_RIGID)
+    both = scene.positions([t], frame)
+    assert both[rod, 0, 0] == both[REAR_SHIP, 0, 0]
+    g = scene.rods[0].motion.velocity_final.lorentz_factor()
+    v = scene.rods[0].motion.velocity_final.value
+    assert scene.events["T_Frod"][0] == pytest.approx(g * v * (1.0 / scene.acceleration + scene.separation), rel=TOL)
+    assert scene.events["T_Frod"][0] > scene.events["T_B2"][0]
+
+
+def reference_cases(kind: str) -> list[dict[str, Any]]:
+    return [c for c in REFERENCE["cases"] if c["kind"] == kind]
+
+
+@pytest.mark.parametrize("case", reference_cases("bell-spaceships"), ids=lambda c: str(c["params"]))
+def test_bell_string_against_the_50_digit_reference(case: dict[str, Any]) -> None:
+    """The string's final rest length and the break event (found there by bisection on the definition)."""
+    params: dict[str, Any] = {k: None if v is None else float.fromhex(v) for k, v in case["params"].items()}
+    scene = rr.bell_spaceships(**params)  # the constructor's defaults, as the reference's
+    extra = {k: float(v) for k, v in case["extra"].items()}
+    assert scene.string_final == pytest.approx(extra["string_final"], rel=TOL)
+    if "break_t" in extra:
+        assert scene.string_break == pytest.approx((extra["break_t"], extra["break_x"]), rel=1e-11)
+    else:
+        assert scene.string_break is None
+
+
+def test_bell_events_command_prints_the_string(capsys: pytest.CaptureFixture[str]) -> None:
+    from rigidrel_app.cli import main
+
+    assert main(["events", "bell-spaceships", "--v", "0.6", "--separation", "1", "--acceleration", "0.5"]) == 0
+    out = capsys.readouterr().out
+    assert "gamma s = 1.25 apart" in out
+    assert "gamma s - l = 1.15" in out
+
+
+def test_pole_barn_events_command_prints_the_verdicts(capsys: pytest.CaptureFixture[str]) -> None:
+    from rigidrel_app.cli import main
+
+    assert main(["events", "pole-barn", "--v", "0.8", "--length", "1", "--barn-length", "0.6", "--json"]) == 0
+    notes = json.loads(capsys.readouterr().out)["notes"]
+    assert notes[1].startswith("Born-rigid pole: is never entirely inside")
+    assert notes[2].startswith("signal-limited pole (c_s = 1): is entirely inside the barn")
+
+
+# ---------------------------------------------------------------- the pole in the barn
+def test_pole_barn_checks_at_eight_tenths() -> None:
+    """V = 0.8, L0 = 1, D = 0.6 (= L0/gamma): the Born-rigid pole's rear end never gets nearer the wall
+    than 1.0; the signal-limited pole's (c_s = 1) stops at x = 1/3, inside the barn."""
+    scene = rr.pole_barn(0.8, 1.0, 0.6, model="both")
+    t = np.linspace(-5.0, 5.0, 20001)
+    rear = scene.positions(t)[:, 1]
+    assert rear[0].min() == pytest.approx(1.0, rel=TOL)
+    assert rear[0].min() >= 1.0 - 1e-15
+    assert rear[1, -1] == pytest.approx(1.0 / 3.0, rel=TOL)
+    assert scene.events["T_s"] == pytest.approx((1.0 / 3.0, 1.0 / 3.0), rel=TOL)
+    born, signal = scene.verdicts()
+    assert not born.inside_barn_frame and not born.inside_pole_frame
+    assert born.door_barn_frame is rr.DoorOrder.NEVER_PASSES
+    assert signal.inside_barn_frame and signal.inside_pole_frame
+    assert signal.door_barn_frame is rr.DoorOrder.SAME_EVENT  # the default door time: as the rear passes
+    c_s = 0.5
+    slow = rr.pole_barn(0.8, 1.0, 0.6, model="signal", sound_speed=c_s)
+    assert slow.rods[0].motion.length_final == pytest.approx(c_s / ((5 / 3) * (c_s + 0.8)), rel=TOL)
+
+
+@SETTINGS
+@given(scene=pole_scenes(), frame=frames)
+def test_pole_barn_verdicts_are_the_same_in_every_frame(scene: rr.PoleBarnScene, frame: rr.Frame) -> None:
+    """Whether each pole is ever entirely inside, and the door's order against its rear end, come out
+    the same in any frame as in the barn's, and agree with the resting place of the rear end."""
+    for verdict in scene.verdicts():
+        i = verdict.rod
+        assert scene.inside_in(frame, i) == verdict.inside_barn_frame == verdict.inside_pole_frame
+        assert verdict.inside_barn_frame == (verdict.rear_rest_x <= scene.barn_length)
+        assert scene.door_order_in(frame, i) is verdict.door_barn_frame is verdict.door_pole_frame
+
+
+@SETTINGS
+@given(scene=pole_scenes(), frame=frames, f=st.floats(0.0, 1.0), u=st.floats(0.0, 1.0))
+def test_born_pole_keeps_its_rest_length(scene: rr.PoleBarnScene, frame: rr.Frame, f: float, u: float) -> None:
+    t0, t1 = scene.time_window(frame)
+    t = t0 + u * (t1 - t0)
+    comoving = scene.comoving_frame(0, f, t=t, frame=frame)
+    x = scene.material_positions([t], frame, fractions=[f])[0, 0, 0]
+    t_c = float((comoving @ (frame.inverse() @ np.array([t, x])))[0])
+    length = scene.rods[0].motion.length
+    assert scene.lengths([t_c], comoving)[0, 0] == pytest.approx(length, rel=TOL_RIGID)
+
+
+@SETTINGS
+@given(scene=pole_scenes(), frame=frames, u=st.floats(0.0, 1.0))
+def test_signal_pole_changes_velocity_only_inside_the_stop_fronts_future_cone(
+    scene: rr.PoleBarnScene, frame: rr.Frame, u: float
+) -> None:
+    """Every material point of the signal-limited pole keeps its initial velocity at every event outside
+    the future light cone of the contact (the stop front leaves it at c_s <= 1); its kink lies on the
+    front ``x = c_s t`` in the lab, inside or on that cone in every frame."""
+    fractions = np.linspace(0.0, 1.0, 9)
+    t0, t1 = scene.time_window(frame)
+    t = np.linspace(t0, t1, 41)
+    x = scene.material_positions(t, frame, fractions=fractions)[1]
+    v = scene.velocities(t, frame, fractions=fractions)[1]
+    v_initial = math.tanh(rr.Frame(scene.rods[1].motion.velocity_initial).relative_to(frame))
+    outside = t[None, :] < np.abs(x)
+    assert np.all(np.abs(v[outside] - v_initial) <= 1e-12)
+    motion = scene.rods[1].motion
+    assert isinstance(motion, rr.PlasticMotion)
+    for f in fractions:
+        t_k, x_k = motion.kink(float(f))
+        assert x_k == pytest.approx(scene.sound_speed * t_k, rel=1e-15, abs=1e-300)
+        t_f, x_f = frame @ np.array([t_k, x_k])
+        assert t_f >= abs(x_f) - 1e-12 * max(abs(t_f), 1.0)
+    del u
+
+
+@SETTINGS
+@given(scene=pole_scenes(), frame=frames)
+def test_signal_pole_four_momentum_with_heat(scene: rr.PoleBarnScene, frame: rr.Frame) -> None:
+    """The plastic stop turns the kinetic energy into heat in the pole: its rest mass grows from M to
+    gamma M; in the barn's frame the wall gives momentum gamma M V and no energy; in every frame
+    before + from the wall = after, and the masses are invariants."""
+    single = rr.pole_barn(
+        -scene.rods[1].motion.velocity_initial.value,
+        scene.rods[1].motion.length,
+        model="signal",
+        sound_speed=scene.sound_speed,
+    )
+    g = single.rods[0].motion.velocity_initial.lorentz_factor()
+    lab = single.budget(rr.LAB)
+    assert lab.rest_mass_after[0] == pytest.approx(g, rel=TOL)
+    assert single.heat == pytest.approx(g - 1.0, rel=1e-9)
+    assert abs(lab.external[0]) <= TOL * g
+    assert lab.external[1] == pytest.approx(g * -single.rods[0].motion.velocity_initial.value, rel=TOL)
+    here = scene.budget(frame)
+    np.testing.assert_allclose(here.total_before + here.external, here.total_after, rtol=1e-12, atol=1e-12)
+    e, p = here.after[1]
+    assert math.sqrt((e - p) * (e + p)) == pytest.approx(scene.rods[1].mass_after, rel=1e-9)
+
+
+@pytest.mark.parametrize("case", reference_cases("pole-barn"), ids=lambda c: str(c["params"]))
+def test_pole_barn_against_the_50_digit_reference(case: dict[str, Any]) -> None:
+    params = {k: None if v is None else float.fromhex(v) for k, v in case["params"].items()}
+    scene = rr.build_scene("pole-barn", **params)
+    extra = {k: float(v) for k, v in case["extra"].items()}
+    assert scene.rods[1].motion.length_final == pytest.approx(extra["rest_length_signal"], rel=TOL)
+    assert scene.heat == pytest.approx(extra["heat"], rel=1e-12)
+
+
+def test_pole_barn_refuses_an_unknown_model() -> None:
+    with pytest.raises(rr.ParameterError, match=r"^model must be one of"):
+        rr.pole_barn(0.8, 1.0, model="elastic")  # type: ignore[arg-type]
+
+
+def test_paradox_figures_state_the_verdicts() -> None:
+    """The captions of the two figures carry the core's numbers and verdicts."""
+    from rigidrel_app.export.paradox_figures import paradox_figures
+
+    bell, pole = paradox_figures()
+    assert "γs = 1.25 apart" in bell.caption and "from rest length 0.9 to 1.15" in bell.caption
+    assert "comes to rest at x = 1; it is never entirely inside" in pole.caption
+    assert "x = 0.3333; it is entirely inside" in pole.caption
+    assert bell.chart.items and pole.chart.items
