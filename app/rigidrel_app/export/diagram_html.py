@@ -45,6 +45,8 @@ LENGTH_PX = ((LENGTH_DOMAIN[1] - LENGTH_DOMAIN[0]) * _PLOT_W, (LENGTH_Y_DOMAIN[1
 #: Round values per slider (besides the settings' own): every pair is a precomputed frame of the page.
 SLIDER_A_STEPS = 9
 SLIDER_B_STEPS = 5
+#: Values of the frame slider (slider B of a scene with one slider parameter).
+FRAME_STEPS = 7
 #: The frame velocities of slider B for a scene with a single slider parameter: even steps over the
 #: app's β slider.
 FRAME_SLIDER = rr.Slider(CUSTOM_BETA[0], CUSTOM_BETA[1], 0.01)
@@ -66,13 +68,27 @@ class SliderAxis:
         return s.with_value(self.parameter, value)
 
     def own(self, s: Settings) -> float | None:
-        v = s.beta if self.parameter is None else s.value(self.parameter)
-        return None if v is None else round(float(v), 4)
+        """The settings' value of this slider: the parameter's, or the velocity of the settings' frame."""
+        return slider_own(s, self.parameter)
 
     def index(self, s: Settings) -> int:
         """Where the settings' own value sits among the slider's values."""
         own = self.own(s)
         return self.values.index(own) if own in self.values else 0
+
+
+def slider_own(s: Settings, parameter: str | None) -> float | None:
+    """The settings' value of a page slider (rounded to 4 digits): ``parameter``'s, or for the frame
+    slider (``None``) the velocity of the frame the settings resolve to (a preset such as "rod after"
+    too), so that the page opens on the settings' own frame."""
+    if parameter is not None:
+        v = s.value(parameter)
+    elif s.frame == CUSTOM_FRAME:
+        v = s.beta
+    else:
+        r = resolve(s)
+        v = None if isinstance(r, str) else r.frame.beta
+    return None if v is None else round(float(v), 4)
 
 
 def _even_grid(lo: float, hi: float, step: float, own: float | None, log: bool) -> tuple[float, ...]:
@@ -137,8 +153,7 @@ def slider_axes(s: Settings) -> tuple[SliderAxis, SliderAxis]:
         own = s.value(p.name)
         axes.append(_axis(p.label, p.name, page_values(p.slider, most, own), s, fmt))
     if len(axes) < 2:
-        own = s.beta if s.frame == CUSTOM_FRAME else None
-        values = page_values(FRAME_SLIDER, SLIDER_B_STEPS, own)
+        values = page_values(FRAME_SLIDER, FRAME_STEPS, slider_own(s, None))
         axes.append(_axis("frame β", None, values, s, lambda v: f"{v:+.2f}"))
     return axes[0], axes[1]
 

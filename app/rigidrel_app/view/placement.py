@@ -34,6 +34,8 @@ GAP_PX = 6.0
 MARGIN_PX = 1.5
 #: Rings of candidate spots: the first touches the point, the others need a leader line.
 RINGS = 4
+#: Rings tried when none of the first :data:`RINGS` has a spot clear of labels and markers.
+FAR_RINGS = 12
 
 
 @dataclass(frozen=True)
@@ -69,7 +71,9 @@ def text_box_px(text: str, size: float) -> tuple[float, float]:
     return width, LINE_EM * size
 
 
-def candidate_offsets(width: float, height: float, size: float, first: str = "left") -> list[tuple[float, float, bool]]:
+def candidate_offsets(
+    width: float, height: float, size: float, first: str = "left", rings: int = RINGS
+) -> list[tuple[float, float, bool]]:
     """Where a label's centre may go relative to its point, (right, up) CSS pixels, in the order tried,
     each with whether it needs a leader line. Ring 0 touches the point: beside it, above and below
     it (centred, then starting or ending at it), on the diagonals. Rings 1.. repeat the directions
@@ -89,7 +93,7 @@ def candidate_offsets(width: float, height: float, size: float, first: str = "le
     if first == "right":
         sides = [(-sx, sy) for sx, sy in sides]
     out: list[tuple[float, float, bool]] = []
-    for ring in range(RINGS):
+    for ring in range(rings):
         gap = GAP_PX + ring * 1.2 * size
         for sx, sy in sides:
             out.append((sx * (hw + gap), sy * (hh + gap), ring > 0))
@@ -203,6 +207,39 @@ def label_box(chart: Chart, area: tuple[float, float], label: Label) -> Box:
     return Box(cx - 0.5 * w, cy - 0.5 * h, cx + 0.5 * w, cy + 0.5 * h)
 
 
+def _best_spot(
+    ax: float,
+    ay: float,
+    w: float,
+    h: float,
+    label: Label,
+    area: tuple[float, float],
+    taken: list[Box],
+    obs: Obstacles,
+    leaders: Obstacles | None,
+    rings: int,
+) -> tuple[int, int, float, float, bool] | None:
+    """The first candidate spot clear of everything, else the one crossing the fewest curves among
+    those clear of labels, markers and (unless ``leaders`` is ``None``) leader lines:
+    ``(crossings, order, dx, dy, leader)``, or ``None`` if no spot is clear of labels and markers."""
+    best: tuple[int, int, float, float, bool] | None = None
+    for order, (dx, dy, leader) in enumerate(candidate_offsets(w, h, label.size, label.anchor, rings)):
+        box = Box(ax + dx - 0.5 * w, ay - dy - 0.5 * h, ax + dx + 0.5 * w, ay - dy + 0.5 * h)
+        if not box.inside(*area):
+            continue
+        grown = box.grown(MARGIN_PX)
+        if any(grown.meets(b) for b in taken) or any(box.meets(m) for m in obs.markers):
+            continue
+        if leaders is not None and (leaders.crossings(grown) or (leader and _leader_meets(ax, ay, box, taken))):
+            continue
+        crossings = obs.crossings(grown)
+        if crossings == 0:
+            return (0, order, dx, dy, leader)
+        if best is None or crossings < best[0]:
+            best = (crossings, order, dx, dy, leader)
+    return best
+
+
 def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
     """``chart`` with every movable label moved to a free spot (see the module docstring), for a plot
     area of ``area_px`` CSS pixels (width, height). Deterministic: the same chart and area always give
@@ -224,22 +261,11 @@ def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
             out.append(item)
             continue
         w, h = text_box_px(item.text, item.size)
-        best: tuple[int, int, float, float, bool] | None = None  # (crossings, order, dx, dy, leader)
-        for order, (dx, dy, leader) in enumerate(candidate_offsets(w, h, item.size, item.anchor)):
-            box = Box(ax + dx - 0.5 * w, ay - dy - 0.5 * h, ax + dx + 0.5 * w, ay - dy + 0.5 * h)
-            if not box.inside(*area):
-                continue
-            grown = box.grown(MARGIN_PX)
-            if any(grown.meets(b) for b in taken) or any(box.meets(m) for m in obs.markers):
-                continue
-            if leaders.crossings(grown) or (leader and _leader_meets(ax, ay, box, taken)):
-                continue
-            crossings = obs.crossings(grown)
-            if crossings == 0:
-                best = (0, order, dx, dy, leader)
-                break
-            if best is None or crossings < best[0]:
-                best = (crossings, order, dx, dy, leader)
+        best = _best_spot(ax, ay, w, h, item, area, taken, obs, leaders, RINGS)
+        if best is None:  # crowded: farther out, and at last across other leader lines
+            best = _best_spot(ax, ay, w, h, item, area, taken, obs, leaders, FAR_RINGS)
+        if best is None:
+            best = _best_spot(ax, ay, w, h, item, area, taken, obs, None, FAR_RINGS)
         if best is None:  # nowhere free of labels and markers: keep the old spot, with a leader line
             out.append(replace(item, leader=True))
             continue
