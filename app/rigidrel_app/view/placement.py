@@ -6,7 +6,8 @@ A label's text is estimated as a box (:func:`text_box_px`). Each movable label, 
 order, takes the first of its candidate spots (:func:`candidate_offsets`: beside, above, below and
 on the diagonals of its point, then the same directions farther out, where a leader line joins
 the text to its point) whose box stays in the plot area and meets no other label's box, no
-marker and no drawn curve. When every spot meets something, the label takes the spot that meets
+marker and no drawn curve, and lies nearer its own point than any other marker (the text names the
+point nearest it). When every spot meets something, the label takes the spot that meets
 no label or marker and crosses the fewest curve segments, with a leader line. Fixed labels are
 obstacles and never move. Nothing here depends on a plotting library: every backend draws the
 placed offsets.
@@ -33,7 +34,7 @@ GAP_PX = 6.0
 #: Room kept around a box when testing it against curves and other boxes, CSS pixels.
 MARGIN_PX = 1.5
 #: Rings of candidate spots: the first touches the point, the others need a leader line.
-RINGS = 4
+RINGS = 6
 #: Rings tried when none of the first :data:`RINGS` has a spot clear of labels and markers.
 FAR_RINGS = 12
 
@@ -119,6 +120,28 @@ class Obstacles:
     sy1: FloatArray
     markers: tuple[Box, ...]
 
+    def cut_by(self, x0: float, y0: float, x1: float, y1: float) -> bool:
+        """Whether the segment ``(x0, y0) -> (x1, y1)`` crosses any of these segments (orientation tests;
+        touching at an end counts)."""
+        if self.sx0.size == 0:
+            return False
+
+        def side(
+            ax: FloatArray | float,
+            ay: FloatArray | float,
+            bx: FloatArray | float,
+            by: FloatArray | float,
+            cx: FloatArray | float,
+            cy: FloatArray | float,
+        ) -> FloatArray:
+            return np.sign((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+
+        d1 = side(self.sx0, self.sy0, self.sx1, self.sy1, x0, y0)
+        d2 = side(self.sx0, self.sy0, self.sx1, self.sy1, x1, y1)
+        d3 = side(x0, y0, x1, y1, self.sx0, self.sy0)
+        d4 = side(x0, y0, x1, y1, self.sx1, self.sy1)
+        return bool(np.any((d1 * d2 <= 0) & (d3 * d4 <= 0)))
+
     def with_segment(self, x0: float, y0: float, x1: float, y1: float) -> Obstacles:
         return Obstacles(
             np.append(self.sx0, x0), np.append(self.sy0, y0), np.append(self.sx1, x1), np.append(self.sy1, y1), ()
@@ -150,6 +173,23 @@ def _leader_end(ax: float, ay: float, box: Box) -> tuple[float, float]:
     hw, hh = 0.5 * (box.right - box.left), 0.5 * (box.bottom - box.top)
     scale = max(abs(dx) / hw if hw > 0 else 0.0, abs(dy) / hh if hh > 0 else 0.0, 1e-12)
     return cx - dx / scale, cy - dy / scale
+
+
+def _nearer_marker(ax: float, ay: float, box: Box, markers: tuple[Box, ...]) -> bool:
+    """Whether some other marker lies nearer ``box`` than the label's own point ``(ax, ay)``: a text
+    without a leader line names the point nearest to it."""
+    own = _box_distance(box, ax, ay)
+    for m in markers:
+        mx, my = 0.5 * (m.left + m.right), 0.5 * (m.top + m.bottom)
+        if abs(mx - ax) + abs(my - ay) > 1.0 and _box_distance(box, mx, my) < own:
+            return True
+    return False
+
+
+def _box_distance(box: Box, x: float, y: float) -> float:
+    dx = max(box.left - x, 0.0, x - box.right)
+    dy = max(box.top - y, 0.0, y - box.bottom)
+    return float(np.hypot(dx, dy))
 
 
 def _leader_meets(ax: float, ay: float, box: Box, taken: list[Box]) -> bool:
@@ -230,8 +270,13 @@ def _best_spot(
         grown = box.grown(MARGIN_PX)
         if any(grown.meets(b) for b in taken) or any(box.meets(m) for m in obs.markers):
             continue
-        if leaders is not None and (leaders.crossings(grown) or (leader and _leader_meets(ax, ay, box, taken))):
+        if leaders is not None and (
+            leaders.crossings(grown)
+            or (leader and (_leader_meets(ax, ay, box, taken) or leaders.cut_by(ax, ay, *_leader_end(ax, ay, box))))
+        ):
             continue
+        if not leader and _nearer_marker(ax, ay, box, obs.markers):
+            continue  # the text would seem to name another point
         crossings = obs.crossings(grown)
         if crossings == 0:
             return (0, order, dx, dy, leader)
