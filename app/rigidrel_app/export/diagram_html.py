@@ -350,7 +350,7 @@ gd.on('plotly_buttonclicked', function () {
 def diagram_html(settings: Settings) -> str:
     """The standalone page (plotly.js inlined: no network needed)."""
     fig = diagram_figure(settings)
-    return str(
+    page = str(
         pio.to_html(
             jsonable(fig),
             include_plotlyjs=True,
@@ -361,3 +361,5 @@ def diagram_html(settings: Settings) -> str:
             validate=False,
         )
     )
+    # centred on a wide screen (the figure has a fixed size: its labels are placed for it)
+    return page.replace("<body>", f'<body style="margin: 8px auto; width: {PAGE_PX[0]}px">', 1)
