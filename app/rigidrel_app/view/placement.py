@@ -142,28 +142,42 @@ class Obstacles:
         d4 = side(x0, y0, x1, y1, self.sx1, self.sy1)
         return bool(np.any((d1 * d2 <= 0) & (d3 * d4 <= 0)))
 
+    def near(self, region: Box) -> Obstacles:
+        """Only the segments whose bounding boxes meet ``region`` (the rest cannot cross a box in it)."""
+        keep = (
+            (np.maximum(self.sx0, self.sx1) >= region.left)
+            & (np.minimum(self.sx0, self.sx1) <= region.right)
+            & (np.maximum(self.sy0, self.sy1) >= region.top)
+            & (np.minimum(self.sy0, self.sy1) <= region.bottom)
+        )
+        markers = tuple(m for m in self.markers if m.meets(region))
+        return Obstacles(self.sx0[keep], self.sy0[keep], self.sx1[keep], self.sy1[keep], markers)
+
     def with_segment(self, x0: float, y0: float, x1: float, y1: float) -> Obstacles:
         return Obstacles(
             np.append(self.sx0, x0), np.append(self.sy0, y0), np.append(self.sx1, x1), np.append(self.sy1, y1), ()
         )
 
     def crossings(self, box: Box) -> int:
-        """How many curve segments enter ``box`` (slab clipping, all segments at once)."""
+        """How many curve segments enter ``box``: those whose bounding box meets it and whose line does
+        not leave all four corners on one side (all segments at once)."""
         if self.sx0.size == 0:
             return 0
-        dx, dy = self.sx1 - self.sx0, self.sy1 - self.sy0
-        lo = np.zeros_like(dx)
-        hi = np.ones_like(dx)
-        ok = np.ones(dx.shape, dtype=bool)
-        for p, d, a, b in ((self.sx0, dx, box.left, box.right), (self.sy0, dy, box.top, box.bottom)):
-            flat = np.abs(d) < 1e-12
-            ok &= ~flat | ((p >= a) & (p <= b))
-            with np.errstate(divide="ignore", invalid="ignore"):
-                t1 = np.where(flat, -np.inf, (a - p) / np.where(flat, 1.0, d))
-                t2 = np.where(flat, np.inf, (b - p) / np.where(flat, 1.0, d))
-            lo = np.maximum(lo, np.minimum(t1, t2))
-            hi = np.minimum(hi, np.maximum(t1, t2))
-        return int(np.count_nonzero(ok & (lo <= hi)))
+        x0, y0, x1, y1 = self.sx0, self.sy0, self.sx1, self.sy1
+        overlap = (
+            (np.maximum(x0, x1) >= box.left)
+            & (np.minimum(x0, x1) <= box.right)
+            & (np.maximum(y0, y1) >= box.top)
+            & (np.minimum(y0, y1) <= box.bottom)
+        )
+        if not overlap.any():
+            return 0
+        x0, y0, x1, y1 = x0[overlap], y0[overlap], x1[overlap], y1[overlap]
+        dx, dy = x1 - x0, y1 - y0
+        sides = [dx * (cy - y0) - dy * (cx - x0) for cx in (box.left, box.right) for cy in (box.top, box.bottom)]
+        lo = np.minimum(np.minimum(sides[0], sides[1]), np.minimum(sides[2], sides[3]))
+        hi = np.maximum(np.maximum(sides[0], sides[1]), np.maximum(sides[2], sides[3]))
+        return int(np.count_nonzero((lo <= 0.0) & (hi >= 0.0)))
 
 
 def _leader_end(ax: float, ay: float, box: Box) -> tuple[float, float]:
@@ -195,8 +209,16 @@ def _box_distance(box: Box, x: float, y: float) -> float:
 def _leader_meets(ax: float, ay: float, box: Box, taken: list[Box]) -> bool:
     """Whether the leader line to ``box`` would cross a label already placed."""
     ex, ey = _leader_end(ax, ay, box)
-    line = Obstacles(np.array([ax]), np.array([ay]), np.array([ex]), np.array([ey]), ())
-    return any(line.crossings(b.grown(MARGIN_PX)) for b in taken)
+    return any(_segment_meets(ax, ay, ex, ey, b.grown(MARGIN_PX)) for b in taken)
+
+
+def _segment_meets(x0: float, y0: float, x1: float, y1: float, box: Box) -> bool:
+    """Whether the segment ``(x0, y0) -> (x1, y1)`` enters ``box`` (one segment: plain floats)."""
+    if max(x0, x1) < box.left or min(x0, x1) > box.right or max(y0, y1) < box.top or min(y0, y1) > box.bottom:
+        return False
+    dx, dy = x1 - x0, y1 - y0
+    sides = [dx * (cy - y0) - dy * (cx - x0) for cx in (box.left, box.right) for cy in (box.top, box.bottom)]
+    return min(sides) <= 0.0 <= max(sides)
 
 
 def obstacles(chart: Chart, area: tuple[float, float]) -> Obstacles:
@@ -263,7 +285,10 @@ def _best_spot(
     those clear of labels, markers and (unless ``leaders`` is ``None``) leader lines:
     ``(crossings, order, dx, dy, leader)``, or ``None`` if no spot is clear of labels and markers."""
     best: tuple[int, int, float, float, bool] | None = None
-    for order, (dx, dy, leader) in enumerate(candidate_offsets(w, h, label.size, label.anchor, rings)):
+    candidates = candidate_offsets(w, h, label.size, label.anchor, rings)
+    reach = max(max(abs(dx), abs(dy)) for dx, dy, _ in candidates) + w + h
+    obs = obs.near(Box(ax - reach, ay - reach, ax + reach, ay + reach))
+    for order, (dx, dy, leader) in enumerate(candidates):
         box = Box(ax + dx - 0.5 * w, ay - dy - 0.5 * h, ax + dx + 0.5 * w, ay - dy + 0.5 * h)
         if not box.inside(*area):
             continue
