@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -12,11 +13,11 @@ import pytest
 from PIL import Image
 
 import rigidrel_core as rr
-from rigidrel_app.export.diagram_html import diagram_figure
+from rigidrel_app.export.diagram_html import SliderAxis, diagram_figure, slider_axes
 from rigidrel_app.export.figures import paper_figures
 from rigidrel_app.export.recording import record_lanes_html
 from rigidrel_app.view.scene_view import build_drawing
-from rigidrel_app.view.state import Resolved, settings_for
+from rigidrel_app.view.state import CUSTOM_FRAME, Resolved, Settings, settings_for
 from rigidrel_app.view.vocabulary import Polyline
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -137,8 +138,69 @@ def test_every_registered_scene_exports_its_pages(kind: str) -> None:
     sliders = figure["layout"]["sliders"]
     assert len(sliders) == 2 and all(len(s["steps"]) >= 2 for s in sliders)
     assert len(figure["frames"]) >= 4
+    settings = settings_for(scene, frame)
+    for axis in slider_axes(settings):
+        assert_evenly_spaced(axis.values, is_log(settings, axis))
     html = record_lanes_html(build_drawing(Resolved(scene, frame)), seconds=1.0, fps=5.0)
     assert "__VISER_EMBED_DATA__" in html
+
+
+def is_log(settings: Settings, axis: SliderAxis) -> bool:
+    """Whether a page slider is a log slider (a parameter's with ``scale="log"``; the frame's is linear)."""
+    if axis.parameter is None:
+        return False
+    slider = settings.description.parameter(axis.parameter).slider
+    return slider is not None and slider.scale == "log"
+
+
+def assert_evenly_spaced(values: tuple[float, ...], log: bool) -> None:
+    """A page slider's ticks step evenly: equal differences (equal ratios on a log slider)."""
+    v = np.log10(values) if log else np.asarray(values)
+    assert len(values) >= 2 and np.allclose(np.diff(v), np.diff(v)[0], atol=1e-6), values
+
+
+@pytest.mark.parametrize(
+    "settings",
+    [
+        Settings("rod-collision"),
+        Settings.of("rod-collision", v1=0.99, m2=0.01),
+        Settings.of("rod-collision", v1=0.37, m2=3.0),
+        Settings.of("constant-acceleration", v=0.99),
+        Settings("impulsive-start"),
+        replace(Settings("impulsive-start"), frame=CUSTOM_FRAME, beta=0.25),
+    ],
+    ids=lambda s: f"{s.scene}-{s.values}-{s.beta}",
+)
+def test_page_sliders_step_evenly_through_the_settings(settings: Settings) -> None:
+    """Each slider's values are evenly spaced and hold the settings' own value, where the page opens."""
+    figure = diagram_figure(settings)
+    for axis, slider in zip(slider_axes(settings), figure["layout"]["sliders"], strict=True):
+        log = is_log(settings, axis)
+        shown = tuple(v for v in axis.values if axis.fmt(v) in {s["label"] for s in slider["steps"]})
+        assert_evenly_spaced(shown, log)
+        own = axis.own(settings)
+        assert own is not None and slider["steps"][slider["active"]]["label"] == axis.fmt(own)
+
+
+def test_diagram_page_names_each_frames_axes_and_is_sized_for_a_hall() -> None:
+    """t′ and x′ in the barycentric frame (every precomputed frame carries its own names: t and x
+    where the slider reaches the lab); text and lines large enough to project."""
+    figure = diagram_figure(Settings("rod-collision"))
+    layout = figure["layout"]
+    assert layout["yaxis"]["title"]["text"] == "t′" and layout["xaxis"]["title"]["text"].startswith("x′ ")
+    lab = diagram_figure(Settings("impulsive-start"))
+    names = {(f["layout"]["yaxis"]["title"]["text"], f["layout"]["xaxis"]["title"]["text"][:2]) for f in lab["frames"]}
+    assert names == {("t′", "x′"), ("t", "x ")}  # the frame slider passes β = 0, the lab
+    for fig in (figure, lab):
+        lay = fig["layout"]
+        for ax in ("xaxis", "yaxis", "xaxis2", "yaxis2"):
+            assert lay[ax]["tickfont"]["size"] >= 14 and lay[ax]["title"]["font"]["size"] >= 16
+        assert lay["title"]["font"]["size"] >= 16
+        assert all(s["font"]["size"] >= 14 and s["currentvalue"]["font"]["size"] >= 16 for s in lay["sliders"])
+        for frame in fig["frames"]:
+            assert all(a["font"]["size"] >= 16 for a in frame["layout"]["annotations"])
+            widths = [t["line"]["width"] for t in frame["data"] if t.get("line", {}).get("width")]
+            assert widths and min(widths) >= 2.5
 
 
 def test_a_frame_beyond_the_apps_slider_still_exports() -> None:

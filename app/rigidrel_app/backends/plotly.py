@@ -17,12 +17,21 @@ from ..view.vocabulary import Area, Chart, FloatArray, Item, Label, Points, Poly
 
 #: The app's plotly config, sent with every figure: no mode bar, resize with the panel.
 APP_CONFIG: dict[str, Any] = {"displayModeBar": False, "responsive": True}
+#: Smallest sizes drawn (CSS pixels), for a projected page read from the back of a hall: tick labels
+#: and legend, titles and labels, line widths.
+TICK_PX = 14.0
+TITLE_PX = 16.0
+LABEL_PX = 16.0
+LINE_PX = 2.5
+#: A leader line joining a label moved away from its point (placement found no free spot beside it).
+LEADER_PX = 1.5
 
 
 def _plotly_line(style: Style) -> dict[str, Any]:
-    """Plotly line attributes. ``simplify`` off: plotly would otherwise drop vertices it judges
-    collinear (about a pixel), undoing the sampler's chord tolerance and leaving visible corners."""
-    return {"color": style.color, "width": style.width, "dash": style.dash, "simplify": False}
+    """Plotly line attributes, at least :data:`LINE_PX` wide. ``simplify`` off: plotly would otherwise
+    drop vertices it judges collinear (about a pixel), undoing the sampler's chord tolerance and
+    leaving visible corners."""
+    return {"color": style.color, "width": max(style.width, LINE_PX), "dash": style.dash, "simplify": False}
 
 
 def item_to_traces(item: Item) -> list[dict[str, Any]]:
@@ -73,37 +82,67 @@ def item_to_traces(item: Item) -> list[dict[str, Any]]:
 
 
 def label_to_annotation(label: Label) -> dict[str, Any]:
-    return {
+    """A label as a plotly annotation, at least :data:`LABEL_PX` high. A placed label (``offset_px``)
+    is centred that far from its point, joined to it by a leader line if it has one."""
+    ann: dict[str, Any] = {
         "x": label.x,
         "y": label.y,
         "text": label.text,
         "showarrow": False,
         "xanchor": label.anchor,
         "yanchor": "middle",
-        "font": {"color": label.style.color, "size": label.size},
-        "xshift": 6 if label.anchor == "left" else (-6 if label.anchor == "right" else 0),
+        "font": {"color": label.style.color, "size": max(label.size, LABEL_PX)},
     }
+    if label.offset_px is None:
+        ann["xshift"] = 6 if label.anchor == "left" else (-6 if label.anchor == "right" else 0)
+        return ann
+    dx, dy = label.offset_px
+    ann["xanchor"] = "center"
+    if label.leader:  # the text's centre at the arrow's tail, (ax, ay) pixels from the point (y down)
+        ann.update(
+            {
+                "showarrow": True,
+                "arrowhead": 0,
+                "arrowwidth": LEADER_PX,
+                "arrowcolor": label.style.color,
+                "standoff": 4,
+                "ax": dx,
+                "ay": -dy,
+            }
+        )
+    else:
+        ann.update({"xshift": dx, "yshift": dy})
+    return ann
 
 
 def chart_layout(chart: Chart, height: int | None = None) -> dict[str, Any]:
     layout: dict[str, Any] = {
-        "margin": {"l": 48, "r": 10, "t": 30 if chart.title else 8, "b": 84},
+        "margin": {"l": 60, "r": 10, "t": 34 if chart.title else 8, "b": 96},
         "xaxis": {"title": {"text": chart.x_title}, "range": list(chart.x_range), "zeroline": False},
         "yaxis": {"title": {"text": chart.y_title}, "range": list(chart.y_range), "zeroline": False},
         "showlegend": True,
-        "legend": {"orientation": "h", "yanchor": "top", "y": -0.26, "x": 0, "font": {"size": 10}},
+        "legend": {"orientation": "h", "yanchor": "top", "y": -0.26, "x": 0, "font": {"size": TICK_PX}},
         "plot_bgcolor": "white",
         "paper_bgcolor": "white",
-        "font": {"size": 11},
+        "font": {"size": TICK_PX},
         "annotations": [label_to_annotation(i) for i in chart.items if isinstance(i, Label)],
     }
     if chart.title:
-        layout["title"] = {"text": chart.title, "x": 0.02, "y": 0.98, "font": {"size": 13}}
+        layout["title"] = {"text": chart.title, "x": 0.02, "y": 0.98, "font": {"size": TITLE_PX}}
     if chart.equal_aspect:
         layout["yaxis"]["scaleanchor"] = "x"
         layout["yaxis"]["scaleratio"] = 1
     for ax in ("xaxis", "yaxis"):
-        layout[ax].update({"gridcolor": "#e6e6e6", "linecolor": "#999", "mirror": True, "ticks": "outside"})
+        layout[ax].update(
+            {
+                "gridcolor": "#e6e6e6",
+                "linecolor": "#999",
+                "mirror": True,
+                "ticks": "outside",
+                "tickfont": {"size": TICK_PX},
+                "title": {"text": layout[ax]["title"]["text"], "font": {"size": TITLE_PX}},
+            }
+        )
     if height is not None:
         layout["height"] = height
     return layout

@@ -6,7 +6,7 @@ from typing import Any
 
 import rigidrel_core as rr
 
-from ..backends.plotly import chart_to_plotly, jsonable
+from ..backends.plotly import TITLE_PX, chart_to_plotly, jsonable
 from ..view.diagrams import frame_title, minkowski_in_frame
 
 
@@ -29,5 +29,13 @@ def diagram_figure(
 def slide_diagram(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
     """The Minkowski diagram in ``frame`` with a title, for slides (PNG/SVG)."""
     fig = diagram_figure(scene, frame, size=(760, 640))
-    fig["layout"]["title"] = {"text": f"{scene.kind}: Minkowski diagram, {frame_title(frame)} frame", "x": 0.02}
+    layout = fig["layout"]
+    layout["title"] = {
+        "text": f"{scene.kind}: Minkowski diagram, {frame_title(frame)} frame",
+        "x": 0.02,
+        "y": 0.985,
+        "yanchor": "top",
+        "font": {"size": TITLE_PX + 2},
+    }
+    layout["margin"]["t"] = 48
     return fig

@@ -18,6 +18,7 @@ from rigidrel_core import examples
 
 from ..backends.plotly import chart_to_plotly
 from ..view.diagrams import equal_scale_ranges, window_x_range
+from ..view.placement import place_labels
 from ..view.sampling import sample_lengths, sample_worldlines
 from ..view.vocabulary import Anchor, Area, Chart, Dash, Item, Label, Points, Polyline, Style, event_label
 
@@ -91,7 +92,8 @@ def _events(scene: rr.Scene, names: tuple[str, ...], side: dict[str, Anchor] | N
     ]
     for n in names:
         t, x = ev[n]
-        items.append(Label(x, t, event_label(n), Style(_BLACK), anchor=(side or {}).get(n, "left"), size=15))
+        anchor = (side or {}).get(n, "left")
+        items.append(Label(x, t, event_label(n), Style(_BLACK), anchor=anchor, size=16, movable=True))
     return items
 
 
@@ -112,8 +114,14 @@ def figure1() -> PaperFigure:
     return PaperFigure(
         "fig1",
         CAPTIONS["fig1"],
-        Chart(tuple(items), "x / L<sub>0</sub>", "t / L<sub>0</sub>", x_range, t_range, equal_aspect=True),
+        _placed(Chart(tuple(items), "x / L<sub>0</sub>", "t / L<sub>0</sub>", x_range, t_range, equal_aspect=True)),
     )
+
+
+def _placed(chart: Chart) -> Chart:
+    """The chart with its event labels placed clear of each other and of the curves (both the solid
+    and the dashed ones) in the figure's plot area."""
+    return place_labels(chart, _PLOT_AREA)
 
 
 def figure2() -> PaperFigure:
@@ -127,12 +135,14 @@ def figure2() -> PaperFigure:
         t = scene.events[n][0]
         length = float(scene.lengths(np.array([t]))[0, 0])
         items.append(Points(np.array([t]), np.array([length]), Style(_BLACK), size=7))
-        items.append(Label(t, length + 0.008, event_label(n), Style(_BLACK), anchor="left", size=15))
+        items.append(Label(t, length, event_label(n), Style(_BLACK), anchor="left", size=16, movable=True))
     contracted = float(scene.lengths(np.array([t_range[1]]))[0, 0])  # L0/γ once both ends coast
-    items.append(Label(2.15, contracted - 0.012, "L<sub>0</sub>/γ", Style(_GREY), anchor="right", size=13))
-    items.append(Label(0.05, 0.99, "L<sub>0</sub>", Style(_GREY), anchor="left", size=13))
+    items.append(Label(2.15, contracted - 0.012, "L<sub>0</sub>/γ", Style(_GREY), anchor="right", size=16))
+    items.append(Label(0.05, 0.99, "L<sub>0</sub>", Style(_GREY), anchor="left", size=16))
     return PaperFigure(
-        "fig2", CAPTIONS["fig2"], Chart(tuple(items), "t / L<sub>0</sub>", "L / L<sub>0</sub>", t_range, y_range)
+        "fig2",
+        CAPTIONS["fig2"],
+        _placed(Chart(tuple(items), "t / L<sub>0</sub>", "L / L<sub>0</sub>", t_range, y_range)),
     )
 
 
@@ -143,13 +153,13 @@ def _collision(scene: rr.Scene, name: str) -> PaperFigure:
     items = [
         *_tube(scene, t_range, x_range),
         *_events(scene, ("T_1", "T_1'", "T_2", "T_2'"), side),
-        Label(-0.5, t_range[0] + 0.08, "rod 1", Style(_BLACK), anchor="center", size=13),
-        Label(0.5, t_range[0] + 0.08, "rod 2", Style(_GREY), anchor="center", size=13),
+        Label(-0.5, t_range[0] + 0.08, "rod 1", Style(_BLACK), anchor="center", size=16),
+        Label(0.5, t_range[0] + 0.08, "rod 2", Style(_GREY), anchor="center", size=16),
     ]
     return PaperFigure(
         name,
         CAPTIONS[name],
-        Chart(tuple(items), "x / L<sub>0</sub>", "t / L<sub>0</sub>", x_range, t_range, equal_aspect=True),
+        _placed(Chart(tuple(items), "x / L<sub>0</sub>", "t / L<sub>0</sub>", x_range, t_range, equal_aspect=True)),
     )
 
 
@@ -170,7 +180,7 @@ def print_style(chart: Chart) -> dict[str, Any]:
         {
             "showlegend": False,
             "margin": {"l": 70, "r": 30, "t": 20, "b": 60},
-            "font": {"family": _FONT, "size": 15, "color": _BLACK},
+            "font": {"family": _FONT, "size": 16, "color": _BLACK},
         }
     )
     layout.pop("title", None)

@@ -14,6 +14,7 @@ import numpy as np
 
 import rigidrel_core as rr
 
+from .placement import place_labels
 from .sampling import ADAPTIVE, Sampler
 from .vocabulary import (
     DOOR_COLOR,
@@ -38,6 +39,14 @@ from .vocabulary import (
 
 #: Material points drawn in the diagrams (fractions of the rest length).
 DIAGRAM_FRACTIONS = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
+#: Font size of event labels (CSS pixels): legible from the back of a hall.
+EVENT_LABEL_PX = 16.0
+#: Legend name and marker of the rods' ends at the current instant (not the events' black dots).
+ENDS_NOW_NAME = "rod ends now"
+ENDS_NOW_SYMBOL = "diamond-open"
+LENGTH_NOW_NAME = "lengths now"
+#: The length plot's top, per the largest length: room above the rest length for event labels.
+LENGTH_HEADROOM = 1.3
 
 
 @dataclass(frozen=True)
@@ -66,6 +75,11 @@ class View:
     def compares(self) -> bool:
         """Whether the other frame differs from this one (else no second axes or now-line)."""
         return not self.frame.same_velocity(self.other)
+
+
+def typeset_prime(prime: str) -> str:
+    """A :class:`View`'s ASCII prime as printed on axes and labels: ``"'"`` -> ``"′"``."""
+    return prime.replace("'", "′")
 
 
 def frame_title(frame: rr.Frame) -> str:
@@ -120,7 +134,9 @@ def minkowski_in_frame(
     window = scene.time_window(frame)
     x_range, t_range = equal_scale_ranges(window_x_range(scene, (frame,), window), window, area_px)
     label = overlay_label(scene)
-    return minkowski_static(scene, View.alone(frame), t_range, x_range, density * area_px[0], overlay, ADAPTIVE, label)
+    return minkowski_static(
+        scene, View.alone(frame), t_range, x_range, density * area_px[0], overlay, ADAPTIVE, label, area_px
+    )
 
 
 def overlay_label(scene: rr.Scene) -> str:
@@ -138,10 +154,13 @@ def minkowski_static(
     overlay: rr.Scene | None = None,
     sampler: Sampler = ADAPTIVE,
     overlay_label: str = "comparison",
+    area_px: tuple[float, float] | None = None,
 ) -> Chart:
     """Everything in a Minkowski diagram that does not move with playback.
 
     ``overlay`` is a second scene drawn dashed (Fig. 1's impulsive curve), named ``overlay_label``.
+    The event labels are placed (:func:`~rigidrel_app.view.placement.place_labels`) for a plot
+    area of ``area_px`` CSS pixels; ``None``: ``panel_px`` wide at equal scales.
     """
     frame = view.frame
     px_per_x = panel_px / max(x_range[1] - x_range[0], 1e-300)
@@ -155,12 +174,13 @@ def minkowski_static(
         Polyline(np.array([-span, span]), np.array([span, -span]), Style(LIGHT_COLOR, 1.5, "dash", group="cone"))
     )
     # the other frame's time and space axes (x_o = 0 and t_o = 0), through the origin
+    other = typeset_prime(view.other_prime)
     if view.compares:
         ax = Style(
             FRAME_COLOR,
             1.5,
             "dashdot",
-            name=f"t{view.other_prime}, x{view.other_prime} axes of {frame_title(view.other)}",
+            name=f"t{other}, x{other} axes of {frame_title(view.other)}",
             group="axes",
         )
         e = np.array([[[-span, 0.0], [span, 0.0]], [[0.0, -span], [0.0, span]]])
@@ -170,7 +190,7 @@ def minkowski_static(
         # name the other frame's time axis where it leaves the top of the window
         t_label = t0 + 0.92 * (t1 - t0)
         x_label = float(np.interp(t_label, both[0, :, 0], both[0, :, 1]))
-        items.append(Label(x_label, t_label, f"t{view.other_prime}", Style(FRAME_COLOR)))
+        items.append(Label(x_label, t_label, f"t{other}", Style(FRAME_COLOR), size=EVENT_LABEL_PX, movable=True))
     # obstacles (a wall): straight worldlines
     tt = np.array([t0, t1])
     for obstacle in scene.obstacles:
@@ -207,22 +227,26 @@ def minkowski_static(
         ex = np.array([e[1] for e in events.values()])
         items.append(Points(ex, et, Style(INK, name="events", group="events"), size=7))
         for name, (t, x) in events.items():
-            items.append(Label(x, t, event_label(name), Style(INK)))
-    return Chart(
+            items.append(Label(x, t, event_label(name), Style(INK), size=EVENT_LABEL_PX, movable=True))
+    chart = Chart(
         items=tuple(items),
-        x_title=f"x{view.prime}",
-        y_title=f"t{view.prime}",
+        x_title=f"x{typeset_prime(view.prime)}",
+        y_title=f"t{typeset_prime(view.prime)}",
         x_range=x_range,
         y_range=t_range,
         title=f"Minkowski diagram, {frame_title(frame)} frame",
         equal_aspect=True,
     )
+    if area_px is None:
+        area_px = (panel_px, panel_px * (t1 - t0) / max(x_range[1] - x_range[0], 1e-300))
+    return place_labels(chart, area_px)
 
 
 def minkowski_now(view: View, now: float, span: float, ends: FloatArray) -> tuple[Item, ...]:
     """The moving parts: this frame's 'now' line, the other frame's, the rods' current places.
 
     ``ends``: the rods' end positions at ``now`` in this view's frame (from the core), any shape.
+    They are open diamonds named ``rod ends now`` in the legend: the black dots are the named events.
     """
     items: list[Item] = [
         Polyline(
@@ -235,7 +259,8 @@ def minkowski_now(view: View, now: float, span: float, ends: FloatArray) -> tupl
         items.append(
             Polyline(e[:, 1], e[:, 0], Style(FRAME_COLOR, 1.2, "dot", name=f"now: t{view.other_prime} = {now:.3g}"))
         )
-    items.append(Points(ends.ravel(), np.full(ends.size, now), Style(INK), size=6))
+    now_style = Style(INK, name=ENDS_NOW_NAME, group="ends-now")
+    items.append(Points(ends.ravel(), np.full(ends.size, now), now_style, size=11, symbol=ENDS_NOW_SYMBOL))
     return tuple(items)
 
 
@@ -258,38 +283,46 @@ def length_static(
     # the largest length over the window: the rest lengths and the contracted ones at the ends
     probe = np.array([t_range[0], t_range[1]])
     top = max(max(r.motion.length for r in scene.rods), *(float(scene.lengths(probe, f).max()) for f, _, _ in frames))
-    px_per_length = panel_px[1] / (1.12 * top)
+    px_per_length = panel_px[1] / (LENGTH_HEADROOM * top)
     for frame, prime, dash in frames:
         curves = sampler.lengths(scene, frame, t_range, px_per_length)
         for r, rod in enumerate(scene.rods):
             color = ROD_COLORS[r % len(ROD_COLORS)]
-            name = f"{rod.name}, {frame_title(frame)} (t{prime})"
+            short = "lab" if not prime else (frame.name or "custom")  # the chart's title gives β
+            name = f"{rod.name}, {short} (t{typeset_prime(prime)})"
             items.append(Polyline(curves[r].t, curves[r].x, Style(color, 2.5 if not prime else 2.0, dash, name=name)))
         # the named events on the curves
         for name, (te, _) in scene.events_in(frame).items():
             if t_range[0] <= te <= t_range[1]:
                 le = scene.lengths(np.array([te]), frame)[:, 0]
                 rod = scene.event_rod(name)
-                items.append(Points(np.array([te]), le[rod : rod + 1], Style(INK), size=6))
-                items.append(
-                    Label(te, float(le[rod]), event_label(name) + (" (t')" if prime else ""), Style(INK), size=11)
-                )
-    return Chart(
+                items.append(Points(np.array([te]), le[rod : rod + 1], Style(INK), size=7))
+                text = event_label(name) + (" (t′)" if prime else "")
+                items.append(Label(te, float(le[rod]), text, Style(INK), size=EVENT_LABEL_PX, movable=True))
+    chart = Chart(
         items=tuple(items),
-        x_title="time in its own frame (t or t')",
+        x_title="time in its own frame (t or t′)",
         y_title="equal-time length",
         x_range=t_range,
-        y_range=(0.0, top * 1.12 if top > 0 else 1.0),
+        y_range=(0.0, top * LENGTH_HEADROOM if top > 0 else 1.0),
         title="Equal-time length (Fig. 2)",
     )
+    return place_labels(chart, panel_px)
 
 
 def length_now(now: float, y_top: float, lengths: FloatArray) -> tuple[Item, ...]:
     """The current time on the length plot, and each rod's length there in each frame.
 
-    ``lengths``: the rods' equal-time lengths at ``now`` (from the core), any shape.
+    ``lengths``: the rods' equal-time lengths at ``now`` (from the core), any shape. Open diamonds,
+    as the rods' current places on the Minkowski diagrams: the black dots are the named events.
     """
     return (
         Segments(np.array([now]), np.array([0.0]), np.array([now]), np.array([y_top]), Style(INK, 1.2)),
-        Points(np.full(lengths.size, now), lengths.ravel(), Style(INK), size=6),
+        Points(
+            np.full(lengths.size, now),
+            lengths.ravel(),
+            Style(INK, name=LENGTH_NOW_NAME, group="ends-now"),
+            size=11,
+            symbol=ENDS_NOW_SYMBOL,
+        ),
     )

@@ -89,6 +89,7 @@ class Points:
     style: Style = Style()
     size: float = 8.0
     symbol: str = "circle"
+    """A plotly marker symbol name: ``"circle"`` marks events, ``"diamond-open"`` the rods' ends now."""
 
 
 @dataclass(frozen=True)
@@ -100,6 +101,15 @@ class Label:
     style: Style = Style()
     anchor: Anchor = "left"
     size: float = 13.0
+    movable: bool = False
+    """Whether :func:`rigidrel_app.view.placement.place_labels` may move the text off ``(x, y)``
+    (event labels); a fixed label stays where it is and the movable ones avoid it."""
+    offset_px: tuple[float, float] | None = None
+    """Where placement put the text: its centre this many CSS pixels (right, up) from ``(x, y)``,
+    with ``anchor`` ``"center"``. ``None``: not placed, the text starts about 6 px beside
+    ``(x, y)`` on the ``anchor`` side (the old behaviour)."""
+    leader: bool = False
+    """Draw a thin line from ``(x, y)`` to the text: placement found no free spot next to the point."""
 
 
 Item = Polyline | Segments | Area | Points | Label
@@ -117,6 +127,8 @@ class Chart:
     title: str = ""
     equal_aspect: bool = False
     """Minkowski diagrams: one unit of x as long as one unit of t (light at 45 degrees)."""
+    area_px: tuple[float, float] | None = None
+    """The plot area (width, height, CSS pixels) the labels were placed for; ``None``: not placed."""
 
 
 def event_label(name: str) -> str:
