@@ -10,12 +10,14 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import textwrap
 from collections.abc import Sequence
 from typing import Any, NoReturn
 
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
+from .view.signals import signals_in, verdict_lines
 from .view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, format_value, frame_from_text, settings_for
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
@@ -110,6 +112,16 @@ def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
         "final_velocities": list(scene.final_velocities),
         "frame_presets": {k: f.beta for k, f in scene.frames.items()},
         "budget": budget.as_dict(),
+        "signals": [
+            {
+                "arrival": leg.name,
+                "t": leg.arrival[0],
+                "x": leg.arrival[1],
+                "from": {"t": leg.source[0], "x": leg.source[1]},
+            }
+            for leg in signals_in(scene, frame).legs
+        ],
+        "verdicts": list(verdict_lines(scene)),
     }
 
 
@@ -146,7 +158,21 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
         src = {"drive": "from the drive", "wall": "from the wall"}[budget.external_source]
         lines.append(f"  {src:<31}{'':>12}{_g(budget.external[0]):>16}{_g(budget.external[1]):>16}")
     lines.append(f"  heat (rest energy created): {_g(budget.heat)}")
-    return "\n".join(lines)
+    return "\n".join(lines + signal_lines(scene, frame))
+
+
+def signal_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
+    """The light-signal table (from the key event to each far end, S, and back to the near end, R)
+    and the core's causal verdicts, wrapped for a terminal."""
+    signals = signals_in(scene, frame)
+    lines = ["", f"light from {signals.key_phrase}: S reaches a far end, R is the echo back at its near end"]
+    lines.append(f"{'arrival':<8}{'t':>20}{'x':>20}")
+    for leg in signals.legs:
+        lines.append(f"{leg.name:<8}{_g(leg.arrival[0]):>20}{_g(leg.arrival[1]):>20}")
+    lines += ["", "causality (the same in every frame)"]
+    for verdict in verdict_lines(scene):
+        lines += textwrap.wrap(verdict, 100, initial_indent="  ", subsequent_indent="    ")
+    return lines
 
 
 def cmd_events(args: argparse.Namespace) -> int:
