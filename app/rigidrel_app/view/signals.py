@@ -156,7 +156,7 @@ def verdict_lines(scene: rr.Scene) -> tuple[str, ...]:
     """The core's causal verdicts in words, one per rod end that changes away from the key event."""
     verdicts = scene.causal_verdicts()
     if verdicts:
-        return tuple(v.text for v in verdicts)
+        return tuple(v.text[:1].upper() + v.text[1:] for v in verdicts)
     return (
         "A general velocity change has no single cause: its origin is the vertex of the hyperbolas, "
         "where nothing happens. The signal shown leaves where the left end starts to change.",
