@@ -11,6 +11,7 @@ import argparse
 import json
 import sys
 import textwrap
+import time
 from collections.abc import Sequence
 from typing import Any, NoReturn
 
@@ -253,8 +254,14 @@ def build_parser() -> OneLineParser:
     ex_common.add_argument("--seconds", type=_positive, default=10.0, help="length of the animations (default 10 s)")
     ex_common.add_argument("--fps", type=_positive, default=30.0, help="frames per second of the 3-D HTML and MP4")
     ex_common.add_argument("--gif-fps", type=_positive, default=15.0, help="frames per second of the GIF")
-    ex = sub.add_parser("export", help="offline HTML (3-D and diagram), PNG, SVG, GIF and MP4 of a scene")
-    add_scene_subparsers(ex, [ex_common], frame_help + " (default: the scene's default frame)")
+    ex = sub.add_parser(
+        "export",
+        help="offline HTML (3-D and diagram), PNG, SVG, GIF and MP4 of a scene, or a lesson as a page set",
+        description="Export a scene (every lecture format) or, with --lesson, a lesson as a folder of pages.",
+    )
+    ex.add_argument("--lesson", help="a lesson file (TOML) or a built-in lesson's name (paper)")
+    ex.add_argument("--out", dest="lesson_out", help="with --lesson: folder to write into")
+    add_scene_subparsers(ex, [ex_common], frame_help + " (default: the scene's default frame)", required=False)
     ex.set_defaults(func=cmd_export)
 
     fg = sub.add_parser("figures", help="regenerate the paper's Figs. 1-4 as SVG and PNG")
@@ -271,6 +278,12 @@ def cmd_export(args: argparse.Namespace) -> int:
     from .export.bundle import export_scene
 
     prog = "rigidrel export"
+    if args.lesson is not None:
+        if getattr(args, "scene", None) is not None:
+            fail(prog, "give a SCENE or --lesson, not both")
+        return export_lesson_folder(prog, args.lesson, args.lesson_out)
+    if getattr(args, "scene", None) is None:
+        fail(prog, "give a SCENE (see rigidrel scenes) or --lesson FILE")
     scene, frame = scene_from_args(prog, args, None)
     out = out_dir(prog, args.out)
     try:
@@ -279,6 +292,26 @@ def cmd_export(args: argparse.Namespace) -> int:
         fail(prog, str(exc))
     for w in written:
         print(f"{w.path!s:60s} {w.megabytes:8.2f} MB {w.seconds:7.2f} s")
+    return 0
+
+
+def export_lesson_folder(prog: str, lesson_name: str, out_text: str | None) -> int:
+    """``rigidrel export --lesson FILE --out DIR``: the lesson checked whole, then its pages."""
+    from .export.lesson_site import export_lesson
+    from .lessons import LessonError, lesson_from
+
+    if out_text is None:
+        fail(prog, "--lesson needs --out DIR, the folder to write the pages into")
+    try:
+        lesson = lesson_from(lesson_name)
+    except LessonError as exc:
+        fail(prog, str(exc))
+    out = out_dir(prog, out_text)
+    t0 = time.perf_counter()
+    written = export_lesson(lesson, out, progress=lambda p: print(p, flush=True))
+    size = sum(p.stat().st_size for p in written) / 1e6
+    seconds, index = time.perf_counter() - t0, out / "index.html"
+    print(f"{len(lesson.steps)} steps, {len(written)} files, {size:.1f} MB in {seconds:.1f} s: open {index}")
     return 0
 
 
