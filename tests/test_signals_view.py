@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import rigidrel_core as rr
-from rigidrel_app.view.signals import future_cone, signal_items, signals_in, verdict_lines
+from rigidrel_app.view.signals import future_cone, signal_items, signals_in, verdict_lines, with_signals
 from rigidrel_app.view.vocabulary import Area, Label, Segments
 
 KINDS = tuple(rr.scene_descriptions())
@@ -89,3 +89,15 @@ def test_verdicts_are_words_from_the_core(kind: str) -> None:
 def test_crash_verdict_says_no_signal_caused_the_far_end() -> None:
     (line,) = verdict_lines(rr.wall_collision(0.6, 1.0, 0.0))
     assert "outside the light cone of the contact" in line and "in any frame" in line
+
+
+def test_with_signals_adds_the_layer_to_a_diagram() -> None:
+    from rigidrel_app.view.diagrams import minkowski_in_frame
+
+    scene = rr.wall_collision(0.6, 1.0, 0.0)
+    chart = minkowski_in_frame(scene, rr.LAB, (400.0, 400.0))
+    drawn = with_signals(chart, scene, rr.LAB)
+    added = drawn.items[len(chart.items) :]
+    assert drawn.items[: len(chart.items)] == chart.items
+    assert {i.style.group for i in added} == {"signals"}
+    assert [i.text for i in added if isinstance(i, Label)] == ["<b>S</b>", "<b>R</b>"]

@@ -13,13 +13,13 @@ change velocity, the first thing that happens to the rod in every frame.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 import rigidrel_core as rr
 
-from .vocabulary import LIGHT_COLOR, Area, FloatArray, Item, Label, Points, Segments, Style, event_label, rgba
+from .vocabulary import LIGHT_COLOR, Area, Chart, FloatArray, Item, Label, Points, Segments, Style, event_label, rgba
 
 #: The legend group of every item of this layer (toggled together).
 GROUP = "signals"
@@ -161,3 +161,9 @@ def verdict_lines(scene: rr.Scene) -> tuple[str, ...]:
         "A general velocity change has no single cause: its origin is the vertex of the hyperbolas, "
         "where nothing happens. The signal shown leaves where the left end starts to change.",
     )
+
+
+def with_signals(chart: Chart, scene: rr.Scene, frame: rr.Frame) -> Chart:
+    """A Minkowski diagram of ``scene`` in ``frame`` with the signal layer drawn over it (within its ranges)."""
+    layer = signal_items(signals_in(scene, frame), chart.x_range, chart.y_range)
+    return replace(chart, items=(*chart.items, *layer))
