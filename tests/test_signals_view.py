@@ -101,3 +101,23 @@ def test_with_signals_adds_the_layer_to_a_diagram() -> None:
     assert drawn.items[: len(chart.items)] == chart.items
     assert {i.style.group for i in added} == {"signals"}
     assert [i.text for i in added if isinstance(i, Label)] == ["<b>S</b>", "<b>R</b>"]
+
+
+def test_the_light_cone_of_a_named_event() -> None:
+    from rigidrel_app.view.signals import event_cone_items
+
+    scene = rr.wall_collision(0.6, 1.0, 0.0)
+    frame = scene.frame("rod before")
+    items = event_cone_items(scene, "T_1", frame, (-3.0, 3.0), (-3.0, 3.0))
+    tk, xk = scene.events_in(frame)["T_1"]
+    areas = [i for i in items if isinstance(i, Area)]
+    assert len(areas) == 2 and areas[0].style.name == "light cone of T1"
+    for area, sign in zip(areas, (1.0, -1.0), strict=True):  # every corner on or inside its half of the cone
+        dt, dx = sign * (area.y - tk), area.x - xk
+        assert np.all(dt + 1e-12 >= np.abs(dx))
+    (rays,) = [i for i in items if isinstance(i, Segments)]
+    slopes = (rays.y1 - rays.y0) / (rays.x1 - rays.x0)
+    assert sorted(slopes.tolist()) == pytest.approx([-1.0, 1.0])
+    assert event_cone_items(scene, "contact", frame, (-3.0, 3.0), (-3.0, 3.0))[0].style.name == (
+        "light cone of the contact"
+    )

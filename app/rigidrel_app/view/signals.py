@@ -19,7 +19,20 @@ import numpy as np
 
 import rigidrel_core as rr
 
-from .vocabulary import LIGHT_COLOR, Area, Chart, FloatArray, Item, Label, Points, Segments, Style, event_label, rgba
+from .vocabulary import (
+    LIGHT_COLOR,
+    Area,
+    Chart,
+    FloatArray,
+    Item,
+    Label,
+    Points,
+    Segments,
+    Style,
+    event_label,
+    plain_text,
+    rgba,
+)
 
 #: The legend group of every item of this layer (toggled together).
 GROUP = "signals"
@@ -167,3 +180,33 @@ def with_signals(chart: Chart, scene: rr.Scene, frame: rr.Frame) -> Chart:
     """A Minkowski diagram of ``scene`` in ``frame`` with the signal layer drawn over it (within its ranges)."""
     layer = signal_items(signals_in(scene, frame), chart.x_range, chart.y_range)
     return replace(chart, items=(*chart.items, *layer))
+
+
+def event_cone_items(
+    scene: rr.Scene, name: str, frame: rr.Frame, x_range: tuple[float, float], t_range: tuple[float, float]
+) -> tuple[Item, ...]:
+    """The light cone of one named event (or the origin event's name) in ``frame``: its future and past
+    shaded, its four light rays, clipped to the chart. The event comes from the core (exact)."""
+    tk, xk = scene.source_event(name, frame)
+    reach = (x_range[1] - x_range[0]) + (t_range[1] - t_range[0]) + abs(tk) + abs(xk)
+    items: list[Item] = []
+    label = event_label(name) if name != scene.origin_event.value else scene.origin_event.phrase
+    for sign in (1.0, -1.0):  # future, past
+        tri = np.array([[xk, tk], [xk + reach, tk + sign * reach], [xk - reach, tk + sign * reach]])
+        poly = _clip(tri, x_range, t_range)
+        if poly.shape[0] >= 3:
+            style = Style(rgba(LIGHT_COLOR, 0.10 if sign > 0 else 0.06), 0.0, group="event cone")
+            if sign > 0:
+                style = replace(style, name=f"light cone of {plain_text(label)}")
+            items.append(Area(poly[:, 0], poly[:, 1], style))
+    rays = Style(LIGHT_COLOR, 2.0, "dash", group="event cone")
+    items.append(
+        Segments(
+            np.array([xk - reach, xk + reach]),
+            np.array([tk - reach, tk - reach]),
+            np.array([xk + reach, xk - reach]),
+            np.array([tk + reach, tk + reach]),
+            rays,
+        )
+    )
+    return tuple(items)
