@@ -8,6 +8,7 @@ is: the constructors in :mod:`rigidrel_core.scenes` fill it in.
 from __future__ import annotations
 
 import functools
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -420,6 +421,51 @@ class Scene:
         if tau <= 0.0:
             return Frame(motion.velocity_initial, name)
         return Frame.from_rapidity(motion.velocity_initial.rapidity() + motion.sign * tau / rho, name)
+
+    def point_event(self, rod: int, fraction: float, *, proper_time: float, frame: Frame = LAB) -> tuple[float, float]:
+        """The event ``(t', x')`` of ``frame`` where material point ``fraction`` of ``rod`` reads
+        ``proper_time`` (its clock reads 0 where its change starts; negative before).
+
+        Anchored at the point's own switch event ``E_s`` (start) or ``E_e`` (stop), never at a far
+        centre: on the straight pieces ``E = E_s + tau (cosh theta, sinh theta)`` (or from ``E_e``), and
+        on the hyperbola (constant proper acceleration ``1/rho``, Sec. 3, Eqs. (5)-(6)), with
+        ``theta = theta_s + sign tau / rho`` and ``m = (theta + theta_s) / 2``,
+
+        .. math::
+            t - t_s = 2 \\rho \\cosh m \\, \\sinh\\frac{\\tau}{2\\rho}, \\qquad
+            x - x_s = 2 \\rho \\sinh m \\, \\sinh\\frac{\\tau}{2\\rho}
+
+        (differences of hyperbolic functions as products: no cancellation); rapidities in ``frame``.
+        """
+        frame = check_frame(frame)
+        i = self._rod_index(rod)
+        f = self._fraction(fraction)
+        tau = as_real("proper_time", proper_time, "a finite number")
+        motion = self.rods[i].motion
+        start, stop = self._plan(frame, np.array([f]), i).switch_events()
+        rho = motion.radius(f)
+        change = rho * motion.rapidity_change
+        theta_s = relative_rapidity(motion.velocity_initial, frame.velocity)
+        if tau <= 0.0:
+            t0, x0 = float(start[0, 0]), float(start[0, 1])
+            return t0 + tau * math.cosh(theta_s), x0 + tau * math.sinh(theta_s)
+        if tau >= change:
+            theta_f = relative_rapidity(motion.velocity_final, frame.velocity)
+            t1, x1 = float(stop[0, 0]), float(stop[0, 1])
+            late = tau - change
+            return t1 + late * math.cosh(theta_f), x1 + late * math.sinh(theta_f)
+        m = theta_s + motion.sign * 0.5 * tau / rho
+        h = 2.0 * rho * math.sinh(0.5 * tau / rho)
+        return float(start[0, 0]) + h * math.cosh(m), float(start[0, 1]) + h * math.sinh(m)
+
+    def horizon_event(self, rod: int, frame: Frame = LAB) -> tuple[float, float]:
+        """The centre event of ``rod``'s change, ``(t', x')`` of ``frame``: every hyperbola of the change
+        is centred on it, so the comoving frames' lines of simultaneity all pass through it (Sec. 3;
+        it is the horizon of the points' accelerated frame). Lab ``(0, horizon_x)``, one boost here."""
+        frame = check_frame(frame)
+        motion = self.rods[self._rod_index(rod)].motion
+        t, x = frame @ np.array([0.0, motion.horizon_x])
+        return float(t), float(x)
 
     def causal_verdicts(self) -> tuple[ChangeVerdict, ...]:
         """For every rod end whose change does not begin or end at the origin event: where the change

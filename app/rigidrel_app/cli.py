@@ -10,12 +10,15 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import textwrap
+import time
 from collections.abc import Sequence
 from typing import Any, NoReturn
 
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
+from .view.signals import signals_in, verdict_lines
 from .view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, format_value, frame_from_text, settings_for
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
@@ -111,6 +114,16 @@ def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
         "frame_presets": {k: f.beta for k, f in scene.frames.items()},
         "budget": budget.as_dict(),
         "notes": list(scene.notes(frame)),
+        "signals": [
+            {
+                "arrival": leg.name,
+                "t": leg.arrival[0],
+                "x": leg.arrival[1],
+                "from": {"t": leg.source[0], "x": leg.source[1]},
+            }
+            for leg in signals_in(scene, frame).legs
+        ],
+        "verdicts": list(verdict_lines(scene)),
     }
 
 
@@ -148,7 +161,21 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
         lines.append(f"  {src:<31}{'':>12}{_g(budget.external[0]):>16}{_g(budget.external[1]):>16}")
     lines.append(f"  heat (rest energy created): {_g(budget.heat)}")
     lines += ["", *(f"note  {n}" for n in scene.notes(frame))] if scene.notes(frame) else []
-    return "\n".join(lines)
+    return "\n".join(lines + signal_lines(scene, frame))
+
+
+def signal_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
+    """The light-signal table (from the key event to each far end, S, and back to the near end, R)
+    and the core's causal verdicts, wrapped for a terminal."""
+    signals = signals_in(scene, frame)
+    lines = ["", f"light from {signals.key_phrase}: S reaches a far end, R is the echo back at its near end"]
+    lines.append(f"{'arrival':<8}{'t':>20}{'x':>20}")
+    for leg in signals.legs:
+        lines.append(f"{leg.name:<8}{_g(leg.arrival[0]):>20}{_g(leg.arrival[1]):>20}")
+    lines += ["", "causality (the same in every frame)"]
+    for verdict in verdict_lines(scene):
+        lines += textwrap.wrap(verdict, 100, initial_indent="  ", subsequent_indent="    ")
+    return lines
 
 
 def cmd_events(args: argparse.Namespace) -> int:
@@ -229,8 +256,14 @@ def build_parser() -> OneLineParser:
     ex_common.add_argument("--seconds", type=_positive, default=10.0, help="length of the animations (default 10 s)")
     ex_common.add_argument("--fps", type=_positive, default=30.0, help="frames per second of the 3-D HTML and MP4")
     ex_common.add_argument("--gif-fps", type=_positive, default=15.0, help="frames per second of the GIF")
-    ex = sub.add_parser("export", help="offline HTML (3-D and diagram), PNG, SVG, GIF and MP4 of a scene")
-    add_scene_subparsers(ex, [ex_common], frame_help + " (default: the scene's default frame)")
+    ex = sub.add_parser(
+        "export",
+        help="offline HTML (3-D and diagram), PNG, SVG, GIF and MP4 of a scene, or a lesson as a page set",
+        description="Export a scene (every lecture format) or, with --lesson, a lesson as a folder of pages.",
+    )
+    ex.add_argument("--lesson", help="a lesson file (TOML) or a built-in lesson's name (paper)")
+    ex.add_argument("--out", dest="lesson_out", help="with --lesson: folder to write into")
+    add_scene_subparsers(ex, [ex_common], frame_help + " (default: the scene's default frame)", required=False)
     ex.set_defaults(func=cmd_export)
 
     fg = sub.add_parser("figures", help="regenerate the paper's Figs. 1-4 as SVG and PNG")
@@ -247,6 +280,12 @@ def cmd_export(args: argparse.Namespace) -> int:
     from .export.bundle import export_scene
 
     prog = "rigidrel export"
+    if args.lesson is not None:
+        if getattr(args, "scene", None) is not None:
+            fail(prog, "give a SCENE or --lesson, not both")
+        return export_lesson_folder(prog, args.lesson, args.lesson_out)
+    if getattr(args, "scene", None) is None:
+        fail(prog, "give a SCENE (see rigidrel scenes) or --lesson FILE")
     scene, frame = scene_from_args(prog, args, None)
     out = out_dir(prog, args.out)
     try:
@@ -255,6 +294,26 @@ def cmd_export(args: argparse.Namespace) -> int:
         fail(prog, str(exc))
     for w in written:
         print(f"{w.path!s:60s} {w.megabytes:8.2f} MB {w.seconds:7.2f} s")
+    return 0
+
+
+def export_lesson_folder(prog: str, lesson_name: str, out_text: str | None) -> int:
+    """``rigidrel export --lesson FILE --out DIR``: the lesson checked whole, then its pages."""
+    from .export.lesson_site import export_lesson
+    from .lessons import LessonError, lesson_from
+
+    if out_text is None:
+        fail(prog, "--lesson needs --out DIR, the folder to write the pages into")
+    try:
+        lesson = lesson_from(lesson_name)
+    except LessonError as exc:
+        fail(prog, str(exc))
+    out = out_dir(prog, out_text)
+    t0 = time.perf_counter()
+    written = export_lesson(lesson, out, progress=lambda p: print(p, flush=True))
+    size = sum(p.stat().st_size for p in written) / 1e6
+    seconds, index = time.perf_counter() - t0, out / "index.html"
+    print(f"{len(lesson.steps)} steps, {len(written)} files, {size:.1f} MB in {seconds:.1f} s: open {index}")
     return 0
 
 

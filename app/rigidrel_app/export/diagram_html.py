@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import Any, Literal
 
 import plotly.io as pio
 
@@ -347,13 +347,15 @@ gd.on('plotly_buttonclicked', function () {
 """
 
 
-def diagram_html(settings: Settings) -> str:
-    """The standalone page (plotly.js inlined: no network needed)."""
+def diagram_html(settings: Settings, plotly_js: Literal["inline", "beside"] = "inline") -> str:
+    """The standalone page. ``plotly_js``: ``"inline"`` puts plotly.js in the page (no network, one
+    file); ``"beside"`` loads ``plotly.min.js`` from the page's folder (a page set shares one copy)."""
     fig = diagram_figure(settings)
+    include: Any = True if plotly_js == "inline" else "directory"  # plotly's annotation says bool only
     page = str(
         pio.to_html(
             jsonable(fig),
-            include_plotlyjs=True,
+            include_plotlyjs=include,
             full_html=True,
             post_script=_SCRIPT,
             auto_play=False,

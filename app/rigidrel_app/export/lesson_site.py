@@ -1,0 +1,145 @@
+"""``rigidrel export --lesson``: a lesson as a folder of static pages, for any web host, an LMS, or
+opened straight from disk. Nothing in it asks the network for anything.
+
+    DIR/index.html            the lesson's title and its steps
+    DIR/step-01.html          caption, the 3-D lanes playing, the interactive diagram, prev/next
+    DIR/step-01-lanes.html    the lanes (a viser recording; plays by itself)
+    DIR/step-01-diagram.html  the diagram with its sliders
+    DIR/plotly.min.js         one copy, shared by every diagram page
+
+Keys on a step page: → / PageDown / Space next, ← / PageUp previous, Home the index (a clicker
+sends PageUp/PageDown). A step page embeds in slides or a Jupyter Book as an iframe
+(``docs/lessons.md`` has the snippets).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import shutil
+from collections.abc import Callable
+from pathlib import Path
+
+import plotly
+from markdown_it import MarkdownIt
+
+from ..lessons import Lesson, Step
+from ..view.scene_view import build_drawing
+from ..view.state import settings_for
+from .diagram_html import diagram_html
+from .recording import record_lanes_html
+
+_MARKDOWN = MarkdownIt("commonmark", {"html": False, "typographer": False})
+
+_STYLE = """
+body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; margin: 0; color: #222;
+       font-size: 20px; line-height: 1.45; background: #fff; }
+header { display: flex; align-items: baseline; gap: 1em; padding: 0.6em 1em; background: #0072B2; color: #fff; }
+header a { color: #fff; }
+header .count { margin-left: auto; font-variant-numeric: tabular-nums; }
+main { padding: 0.5em 1em 1em; }
+h1 { font-size: 1.5em; margin: 0.2em 0 0.3em; }
+.caption { max-width: 60em; }
+.views { display: flex; flex-direction: column; gap: 0.8em; margin-top: 0.6em; }
+.views iframe { border: 1px solid #ccc; }
+iframe.lanes { width: 100%; height: 56vh; min-height: 380px; }
+iframe.diagram { width: 1270px; max-width: 100%; height: 730px; }
+nav.steps { display: flex; justify-content: space-between; margin-top: 0.8em; font-size: 1.1em; }
+nav a { padding: 0.3em 0.8em; border: 1px solid #0072B2; border-radius: 0.3em; text-decoration: none; color: #0072B2; }
+ol.index li { margin: 0.3em 0; }
+.note { color: #555; font-size: 0.85em; }
+"""
+
+_KEYS = """
+document.addEventListener("keydown", function (e) {
+  if (e.altKey || e.ctrlKey || e.metaKey) return;
+  var go = null;
+  if (e.key === "ArrowRight" || e.key === "PageDown" || e.key === " ") go = NEXT;
+  else if (e.key === "ArrowLeft" || e.key === "PageUp") go = PREV;
+  else if (e.key === "Home") go = "index.html";
+  if (go) { e.preventDefault(); window.location.href = go; }
+});
+"""
+
+
+def step_name(k: int) -> str:
+    """``step-01`` for the first step."""
+    return f"step-{k + 1:02d}"
+
+
+def _page(title: str, body: str, next_href: str | None, prev_href: str | None) -> str:
+    script = f"var NEXT = {json.dumps(next_href)}, PREV = {json.dumps(prev_href)};\n{_KEYS}"
+    return (
+        "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>"
+        "<meta name='viewport' content='width=device-width, initial-scale=1'>"
+        f"<title>{html.escape(title)}</title><style>{_STYLE}</style></head>"
+        f"<body>{body}<script>{script}</script></body></html>\n"
+    )
+
+
+def _step_page(lesson: Lesson, k: int, step: Step) -> str:
+    n = len(lesson.steps)
+    prev_href = f"{step_name(k - 1)}.html" if k > 0 else "index.html"
+    next_href = f"{step_name(k + 1)}.html" if k + 1 < n else None
+    name = step_name(k)
+    nav = f"<a href='{prev_href}' rel='prev'>← {'previous' if k > 0 else 'contents'}</a>"
+    nav += f"<a href='{next_href}' rel='next'>next →</a>" if next_href else "<span></span>"
+    ride = ""
+    if step.ride is not None:
+        ride = (
+            "<p class='note'>Live, this step's frame rides a point of the rod; the pages show it in "
+            f"{html.escape(step.resolved.frame.label())}.</p>"
+        )
+    body = (
+        f"<header><a href='index.html'>{html.escape(lesson.title)}</a>"
+        f"<span class='count'>step {k + 1} of {n}</span></header><main>"
+        f"<h1>{html.escape(step.title)}</h1><div class='caption'>{_MARKDOWN.render(step.caption)}</div>{ride}"
+        "<div class='views'>"
+        f"<iframe class='lanes' src='{name}-lanes.html' title='the rods, in the lab and in the chosen frame'></iframe>"
+        f"<iframe class='diagram' src='{name}-diagram.html' title='Minkowski diagram with sliders'></iframe>"
+        f"</div><nav class='steps'>{nav}</nav></main>"
+    )
+    return _page(f"{step.title} · {lesson.title}", body, next_href, prev_href if k > 0 else "index.html")
+
+
+def _index_page(lesson: Lesson) -> str:
+    items = "".join(
+        f"<li><a href='{step_name(k)}.html'>{html.escape(s.title)}</a></li>" for k, s in enumerate(lesson.steps)
+    )
+    subtitle = f"<p>{html.escape(lesson.subtitle)}</p>" if lesson.subtitle else ""
+    body = (
+        f"<header><span>{html.escape(lesson.title)}</span><span class='count'>{len(lesson.steps)} steps</span></header>"
+        f"<main><h1>{html.escape(lesson.title)}</h1>{subtitle}<ol class='index'>{items}</ol>"
+        "<p class='note'>Keys: → or PageDown next, ← or PageUp previous, Home here.</p></main>"
+    )
+    return _page(lesson.title, body, f"{step_name(0)}.html", None)
+
+
+def export_lesson(
+    lesson: Lesson,
+    out: Path,
+    seconds: float = 10.0,
+    fps: float = 30.0,
+    progress: Callable[[Path], None] | None = None,
+) -> list[Path]:
+    """Write the lesson's pages into ``out`` (created if missing); returns the files written."""
+    out.mkdir(parents=True, exist_ok=True)
+    written: list[Path] = []
+
+    def write(path: Path, text: str) -> None:
+        path.write_text(text, encoding="utf-8")
+        written.append(path)
+        if progress is not None:
+            progress(path)
+
+    plotly_js = Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
+    shutil.copyfile(plotly_js, out / "plotly.min.js")
+    written.append(out / "plotly.min.js")
+    write(out / "index.html", _index_page(lesson))
+    for k, step in enumerate(lesson.steps):
+        name = step_name(k)
+        resolved = step.resolved
+        write(out / f"{name}-lanes.html", record_lanes_html(build_drawing(resolved), seconds, fps))
+        write(out / f"{name}-diagram.html", diagram_html(settings_for(resolved.scene, resolved.frame), "beside"))
+        write(out / f"{name}.html", _step_page(lesson, k, step))
+    return written

@@ -1,0 +1,212 @@
+"""The light-signal layer: rays from the scene's key event to each rod's far end and back, the key
+event's future light cone, the pulse in the lanes, and the causal verdicts in words.
+
+Every event comes from :mod:`rigidrel_core` (:meth:`rigidrel_core.Scene.signal_arrival`, solved in
+closed form in the frame asked for, and :meth:`rigidrel_core.Scene.causal_verdicts`). This module
+only chooses what to show and lays it out (c = 1: light moves one unit of x per unit of t).
+
+The key event is the scene's origin event, ``(0, 0)`` in every frame: the start, the kick, the
+contact or the back end's stop. A general velocity change has no such event (its origin is the
+vertex of the hyperbolas, where nothing happens); its key event is where its left end starts to
+change velocity, the first thing that happens to the rod in every frame.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+import rigidrel_core as rr
+
+from .vocabulary import (
+    LIGHT_COLOR,
+    Area,
+    Chart,
+    FloatArray,
+    Item,
+    Label,
+    Points,
+    Segments,
+    Style,
+    event_label,
+    plain_text,
+    rgba,
+)
+
+#: The legend group of every item of this layer (toggled together).
+GROUP = "signals"
+
+
+@dataclass(frozen=True)
+class SignalLeg:
+    """A straight light ray from ``source`` to ``arrival``, events ``(t, x)`` of one frame."""
+
+    source: tuple[float, float]
+    arrival: tuple[float, float]
+    name: str
+    """The arrival's name in the paper's style: ``"S_1"`` (rod 1's far end), ``"R_1"`` (back at its near end)."""
+
+    def position(self, t: float) -> float | None:
+        """Where the pulse is at time ``t`` of the frame, or ``None`` before it leaves or after it arrives."""
+        (t0, x0), (t1, x1) = self.source, self.arrival
+        if not t0 <= t <= t1:
+            return None
+        return x0 + (t - t0) * (1.0 if x1 >= x0 else -1.0)
+
+
+@dataclass(frozen=True)
+class Signals:
+    """The signal layer of one scene in one frame."""
+
+    key_event: tuple[float, float]
+    key_phrase: str
+    """How a sentence names the key event: "the contact", "the start of the change", ..."""
+    legs: tuple[SignalLeg, ...]
+
+    def pulse_positions(self, t: float) -> FloatArray:
+        """The x of every pulse in flight at time ``t`` (shape ``(n,)``, possibly empty)."""
+        xs = [x for leg in self.legs if (x := leg.position(t)) is not None]
+        return np.array(xs, dtype=np.float64)
+
+
+def _key_event(scene: rr.Scene) -> tuple[str, str, tuple[float, float]]:
+    """The key event as a source name for the core, its phrase, and its lab ``(t, x)``."""
+    if scene.origin_event is not rr.OriginEvent.VERTEX:
+        return scene.origin_event.value, scene.origin_event.phrase, (0.0, 0.0)
+    events = scene.events_in(rr.LAB)
+    starts = [s.name for s in scene.event_specs if s.phase == "start"]
+    first = min(starts, key=lambda name: events[name][0])
+    return first, "the start of the change", events[first]
+
+
+def far_fractions(scene: rr.Scene, key_lab: tuple[float, float]) -> tuple[tuple[float, float], ...]:
+    """Per rod, ``(far, near)`` fractions: the end farther from the key event at its lab time, and the other."""
+    x = scene.positions(np.array([key_lab[0]]))[:, :, 0]  # (rods, ends)
+    out = []
+    for left, right in x:
+        far_is_right = abs(right - key_lab[1]) >= abs(left - key_lab[1])
+        out.append((1.0, 0.0) if far_is_right else (0.0, 1.0))
+    return tuple(out)
+
+
+def signals_in(scene: rr.Scene, frame: rr.Frame) -> Signals:
+    """The key event's light signal to each rod's far end, and from there back to its near end, in ``frame``.
+
+    A leg the light never completes (the point outruns it for ever) is left out.
+    """
+    source, phrase, key_lab = _key_event(scene)
+    key_here = scene.source_event(source, frame)
+    legs: list[SignalLeg] = []
+    for rod, (far, near) in enumerate(far_fractions(scene, key_lab)):
+        suffix = f"_{rod + 1}" if scene.n_rods > 1 else ""
+        arrival = scene.signal_arrival(source, rod, far, frame=frame)
+        if arrival is None:
+            continue
+        legs.append(SignalLeg(key_here, arrival, f"S{suffix}"))
+        back = scene.signal_arrival(arrival, rod, near, frame=frame)
+        if back is not None:
+            legs.append(SignalLeg(arrival, back, f"R{suffix}"))
+    return Signals(key_here, phrase, tuple(legs))
+
+
+def _clip(poly: FloatArray, x_range: tuple[float, float], y_range: tuple[float, float]) -> FloatArray:
+    """A convex polygon ``(n, 2)`` clipped to a rectangle (Sutherland-Hodgman); ``(0, 2)`` if nothing is left."""
+    for axis, bound, keep_above in (
+        (0, x_range[0], True),
+        (0, x_range[1], False),
+        (1, y_range[0], True),
+        (1, y_range[1], False),
+    ):
+        if poly.shape[0] == 0:
+            break
+        inside = poly[:, axis] >= bound if keep_above else poly[:, axis] <= bound
+        out: list[FloatArray] = []
+        for i in range(poly.shape[0]):
+            a, b = poly[i - 1], poly[i]
+            ina, inb = bool(inside[i - 1]), bool(inside[i])
+            if ina != inb:
+                s = (bound - a[axis]) / (b[axis] - a[axis])
+                out.append(a + s * (b - a))
+            if inb:
+                out.append(b)
+        poly = np.array(out, dtype=np.float64).reshape(-1, 2)
+    return poly
+
+
+def future_cone(key: tuple[float, float], x_range: tuple[float, float], t_range: tuple[float, float]) -> FloatArray:
+    """The key event's future light cone ``t - t_k >= |x - x_k|`` inside the chart, as a polygon of ``(x, t)``."""
+    tk, xk = key
+    reach = (x_range[1] - x_range[0]) + (t_range[1] - t_range[0]) + abs(tk) + abs(xk)
+    tri = np.array([[xk, tk], [xk + reach, tk + reach], [xk - reach, tk + reach]])
+    return _clip(tri, x_range, t_range)
+
+
+def signal_items(signals: Signals, x_range: tuple[float, float], t_range: tuple[float, float]) -> tuple[Item, ...]:
+    """Diagram items: the shaded future cone of the key event, the 45-degree rays, the arrivals named."""
+    items: list[Item] = []
+    cone = future_cone(signals.key_event, x_range, t_range)
+    if cone.shape[0] >= 3:
+        items.append(
+            Area(
+                cone[:, 0],
+                cone[:, 1],
+                Style(rgba(LIGHT_COLOR, 0.13), 0.0, name=f"future of {signals.key_phrase}", group=GROUP),
+            )
+        )
+    if signals.legs:
+        src = np.array([leg.source for leg in signals.legs])
+        arr = np.array([leg.arrival for leg in signals.legs])
+        ray = Style(LIGHT_COLOR, 3.0, name=f"light from {signals.key_phrase}, and back", group=GROUP)
+        items.append(Segments(src[:, 1], src[:, 0], arr[:, 1], arr[:, 0], ray))
+        items.append(Points(arr[:, 1], arr[:, 0], Style(LIGHT_COLOR, group=GROUP), size=9, symbol="diamond"))
+        for leg in signals.legs:
+            items.append(Label(leg.arrival[1], leg.arrival[0], event_label(leg.name), Style(LIGHT_COLOR, group=GROUP)))
+    return tuple(items)
+
+
+def verdict_lines(scene: rr.Scene) -> tuple[str, ...]:
+    """The core's causal verdicts in words, one per rod end that changes away from the key event."""
+    verdicts = scene.causal_verdicts()
+    if verdicts:
+        return tuple(v.text[:1].upper() + v.text[1:] for v in verdicts)
+    return (
+        "A general velocity change has no single cause: its origin is the vertex of the hyperbolas, "
+        "where nothing happens. The signal shown leaves where the left end starts to change.",
+    )
+
+
+def with_signals(chart: Chart, scene: rr.Scene, frame: rr.Frame) -> Chart:
+    """A Minkowski diagram of ``scene`` in ``frame`` with the signal layer drawn over it (within its ranges)."""
+    layer = signal_items(signals_in(scene, frame), chart.x_range, chart.y_range)
+    return replace(chart, items=(*chart.items, *layer))
+
+
+def event_cone_items(
+    scene: rr.Scene, name: str, frame: rr.Frame, x_range: tuple[float, float], t_range: tuple[float, float]
+) -> tuple[Item, ...]:
+    """The light cone of one named event (or the origin event's name) in ``frame``: its future and past
+    shaded, its four light rays, clipped to the chart. The event comes from the core (exact)."""
+    tk, xk = scene.source_event(name, frame)
+    reach = (x_range[1] - x_range[0]) + (t_range[1] - t_range[0]) + abs(tk) + abs(xk)
+    items: list[Item] = []
+    label = event_label(name) if name != scene.origin_event.value else scene.origin_event.phrase
+    for sign in (1.0, -1.0):  # future, past
+        tri = np.array([[xk, tk], [xk + reach, tk + sign * reach], [xk - reach, tk + sign * reach]])
+        poly = _clip(tri, x_range, t_range)
+        if poly.shape[0] >= 3:
+            style = Style(rgba(LIGHT_COLOR, 0.10 if sign > 0 else 0.06), 0.0, group="event cone")
+            if sign > 0:
+                style = replace(style, name=f"light cone of {plain_text(label)}")
+            items.append(Area(poly[:, 0], poly[:, 1], style))
+    rays = Style(LIGHT_COLOR, 2.0, "dash", group="event cone")
+    items.append(
+        Segments(
+            np.array([xk - reach, xk + reach]),
+            np.array([tk - reach, tk - reach]),
+            np.array([xk + reach, xk - reach]),
+            np.array([tk + reach, tk + reach]),
+            rays,
+        )
+    )
+    return tuple(items)
