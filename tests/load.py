@@ -14,14 +14,29 @@ memory between the start and the end of the measurement.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import gc
 import statistics
+import subprocess
 import sys
+import threading
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 from rigidrel_app.live.server import App
+from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import presets
-from tests.viser_client import SWARM_WARMUP, client_swarm, swarm_result, wait_until
+from tests.viser_client import (
+    ROOT,
+    SWARM_WARMUP,
+    churn_clients,
+    client_swarm,
+    read_line,
+    swarm_result,
+    tell,
+    wait_until,
+)
 
 TARGET_FPS = 25.0
 
@@ -66,6 +81,123 @@ def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
     }
 
 
+def live_sessions() -> int:
+    """Session objects still alive anywhere in the process (not only in the server's table)."""
+    gc.collect()
+    return sum(isinstance(o, Session) for o in gc.get_objects())
+
+
+def churn(
+    rounds: int,
+    clients: int,
+    stay: int,
+    seconds: float,
+    fps: float,
+    report: bool = True,
+    after_round: Callable[[App, dict[str, float]], None] | None = None,
+) -> list[dict[str, float]]:
+    """``stay`` clients play throughout; each of ``rounds`` rounds, ``clients`` more join (choose
+    Fig. 3, press Play), play ``seconds`` and leave, politely, abruptly or stalled in turn. After each
+    round, once the server has let them go: its resident memory, the sessions left (in its table
+    and alive in memory), its threads, the steady clients' fps over the round, the bytes each
+    newcomer received until its first picture, and errors. One line per round if ``report``;
+    ``after_round(app, row)`` is called after each (to look inside the server)."""
+    rows: list[dict[str, float]] = []
+    with App(port=0, animation_hz=fps) as app, churn_clients(app.url, clients, stay, seconds) as child:
+        read_line(child, timeout=120.0)
+        wait_until(lambda: len(app.sessions) == stay, timeout=60.0)
+        start_mb = rss_mb()
+        for k in range(1, rounds + 1):
+            tell(child, "round")
+            r = read_line(child, timeout=seconds + 300.0)
+            settled = time.monotonic()
+            with contextlib.suppress(AssertionError):  # reported below as sessions left
+                wait_until(lambda: len(app.sessions) == stay and len(app.server.get_clients()) == stay, timeout=30.0)
+            pictures = r["first_picture_bytes"] or [float("nan")]
+            row = {
+                "round": float(k),
+                "rss_mb": rss_mb(),
+                "start_rss_mb": start_mb,
+                "sessions_left": float(len(app.sessions) - stay),
+                "viser_clients_left": float(len(app.server.get_clients()) - stay),
+                "session_objects_left": float(live_sessions() - stay),
+                "threads": float(threading.active_count()),
+                "joined": float(r["joined"]),
+                "steady_min_fps": min(r["steady_fps"], default=float("nan")),
+                "steady_median_fps": statistics.median(r["steady_fps"]) if r["steady_fps"] else float("nan"),
+                "first_picture_kb_median": statistics.median(pictures) / 1e3,
+                "first_picture_kb_max": max(pictures) / 1e3,
+                "errors": float(len(r["errors"]) + app.errors),
+                "settle_s": time.monotonic() - settled,
+            }
+            rows.append(row)
+            if after_round is not None:
+                after_round(app, row)
+            if report:
+                print(churn_line(row), flush=True)
+        tell(child, "done")
+    return rows
+
+
+def churn_line(r: dict[str, float]) -> str:
+    return (
+        f"round={r['round']:.0f} rss_mb={r['rss_mb']:.0f} sessions_left={r['sessions_left']:.0f} "
+        f"session_objects_left={r['session_objects_left']:.0f} threads={r['threads']:.0f} "
+        f"joined={r['joined']:.0f} steady_min_fps={r['steady_min_fps']:.1f} "
+        f"first_picture_kb={r['first_picture_kb_median']:.0f} errors={r['errors']:.0f}"
+    )
+
+
+def flood(clients: int, seconds: float, fps: float, rate: float = 10_000.0) -> dict[str, float]:
+    """``clients`` tabs play Fig. 3 while one more sends control values at ``rate`` per second for
+    ``seconds``: the players' fps over that window (minimum, median) and over its first second
+    (minimum), whether and when the server dropped the flooding client, and errors."""
+    with App(port=0, animation_hz=fps) as app:
+        code = f"from tests.viser_client import flood_main; flood_main({app.url!r}, {clients}, {seconds}, {rate})"
+        child = subprocess.Popen([sys.executable, "-c", code], cwd=ROOT, stdout=subprocess.PIPE, text=True)
+        try:
+            r = read_line(child, timeout=seconds + 300.0)
+        finally:
+            if child.poll() is None:
+                child.kill()
+            child.communicate(timeout=30)
+        floods, server_errors = app.floods, app.errors
+    return {
+        "clients": float(clients),
+        "rate": rate,
+        "min_fps": min(r["fps"]),
+        "median_fps": statistics.median(r["fps"]),
+        "min_fps_first_second": min(r["fps_first_second"]),
+        "sent": float(r["sent"]),
+        "dropped_after_s": float("nan") if r["hung_up_after"] is None else r["hung_up_after"],
+        "floods": float(floods),
+        "errors": float(len(r["errors"]) + server_errors),
+        "seconds": seconds,
+    }
+
+
+def flood_line(r: dict[str, float]) -> str:
+    return (
+        f"flood rate={r['rate']:.0f} clients={r['clients']:.0f} "
+        f"min_fps={r['min_fps']:.1f} median_fps={r['median_fps']:.1f} "
+        f"min_fps_first_second={r['min_fps_first_second']:.0f} flood_sent={r['sent']:.0f} "
+        f"dropped_after_s={r['dropped_after_s']:.3f} floods={r['floods']:.0f} errors={r['errors']:.0f}"
+    )
+
+
+def churn_summary(rows: list[dict[str, float]]) -> str:
+    first, last = rows[0], rows[-1]
+    return (
+        f"churn rounds={len(rows)} start_rss_mb={first['start_rss_mb']:.0f} after_round_1_mb={first['rss_mb']:.0f} "
+        f"after_last_mb={last['rss_mb']:.0f} growth_after_round_1_mb={last['rss_mb'] - first['rss_mb']:.0f} "
+        f"max_sessions_left={max(r['sessions_left'] for r in rows):.0f} "
+        f"max_session_objects_left={max(r['session_objects_left'] for r in rows):.0f} "
+        f"steady_min_fps={min(r['steady_min_fps'] for r in rows):.1f} "
+        f"first_picture_kb_median={statistics.median(r['first_picture_kb_median'] for r in rows):.0f} "
+        f"errors={last['errors']:.0f}"
+    )
+
+
 def line(r: dict[str, float]) -> str:
     return (
         f"clients={r['clients']:.0f} min_fps={r['min_fps']:.1f} median_fps={r['median_fps']:.1f} "
@@ -79,7 +211,25 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=60.0)
     parser.add_argument("--fps", type=float, default=30.0, help="the server's animation rate")
     parser.add_argument("--find-max", action="store_true", help="raise the clients until one gets < 25 fps")
+    parser.add_argument("--churn", type=int, metavar="ROUNDS", help="rounds of --clients that join, play and leave")
+    parser.add_argument("--stay", type=int, default=5, help="churn: clients playing throughout")
+    parser.add_argument("--round-seconds", type=float, default=5.0, help="churn: how long each round's clients play")
+    parser.add_argument(
+        "--flood",
+        type=float,
+        nargs="?",
+        const=10_000.0,
+        metavar="RATE",
+        help="one more client sends RATE values per second (default 10,000; 0: sends none)",
+    )
     args = parser.parse_args()
+    if args.flood is not None:
+        print(flood_line(flood(args.clients, min(args.seconds, 5.0), args.fps, args.flood)), flush=True)
+        return
+    if args.churn:
+        rows = churn(args.churn, args.clients, args.stay, args.round_seconds, args.fps)
+        print(churn_summary(rows), flush=True)
+        return
     if not args.find_max:
         print(line(run(args.clients, args.seconds, args.fps)), flush=True)
         return
