@@ -2,6 +2,9 @@
 
     python -m tests.load --clients 30 --seconds 60 --fps 30
     python -m tests.load --find-max --seconds 20 --fps 30      # the most clients held at 25 fps
+    python -m tests.load --churn 10 --clients 30               # 10 rounds of 30 joining and leaving
+    python -m tests.load --flood --clients 20 --seconds 5      # one more sends 10,000 values a second
+    python -m tests.load --soak 20                             # a 20-minute lecture (30 clients)
 
 The server runs in this process with its animation loop at ``--fps``; the clients (viser's
 websocket protocol, tests/viser_client.py, no browsers) run in another process so they do
@@ -9,6 +12,15 @@ not share the server's interpreter. Every client is a tab playing Fig. 3's colli
 final line reports: clients, the minimum (and median) delivered frames per second per client,
 errors (client disconnects plus server-side errors), and the growth of the server's resident
 memory between the start and the end of the measurement.
+
+``--churn``: ``--stay`` clients play throughout while each round ``--clients`` more join (they
+choose Fig. 3 and press Play themselves), play ``--round-seconds`` and leave: in turn with a
+close frame, by dropping the socket, or after they stopped reading. One line per round: the
+server's resident memory once they are gone, sessions left (in its table, and Session objects
+alive), threads, the steady clients' fps over the round (joins included), the bytes a newcomer
+received until its first picture (the frame carrying the rods), errors. ``--soak MINUTES`` is a
+churn of 5 clients a minute among 30. ``--flood [RATE]``: the players' fps while one more client
+sends control values at RATE a second (0: a control run), and when the server dropped it.
 """
 
 from __future__ import annotations
@@ -129,6 +141,7 @@ def churn(
                 "first_picture_kb_max": max(pictures) / 1e3,
                 "errors": float(len(r["errors"]) + app.errors),
                 "settle_s": time.monotonic() - settled,
+                "round_s": r["seconds"],
             }
             rows.append(row)
             if after_round is not None:
@@ -185,6 +198,25 @@ def flood_line(r: dict[str, float]) -> str:
     )
 
 
+#: The long lecture: this many tabs play throughout, and every minute this many more of them leave
+#: (politely, abruptly or stalled) and come back.
+SOAK_STAY, SOAK_RECONNECTING = 25, 5
+
+
+def soak_summary(rows: list[dict[str, float]]) -> str:
+    """Memory from the end of minute 2 (the room warmed up) to the end, fps held, errors."""
+    settled = rows[1:] if len(rows) > 1 else rows
+    base = settled[0]["rss_mb"]
+    return (
+        f"soak minutes={len(rows)} clients={SOAK_STAY + SOAK_RECONNECTING} reconnecting_per_minute={SOAK_RECONNECTING} "
+        f"rss_after_minute_2_mb={base:.0f} rss_max_mb={max(r['rss_mb'] for r in settled):.0f} "
+        f"rss_end_mb={rows[-1]['rss_mb']:.0f} growth_from_minute_2_mb={max(r['rss_mb'] for r in settled) - base:.0f} "
+        f"steady_min_fps={min(r['steady_min_fps'] for r in rows):.1f} "
+        f"steady_median_fps={statistics.median(r['steady_median_fps'] for r in rows):.1f} "
+        f"max_sessions_left={max(r['sessions_left'] for r in rows):.0f} errors={rows[-1]['errors']:.0f}"
+    )
+
+
 def churn_summary(rows: list[dict[str, float]]) -> str:
     first, last = rows[0], rows[-1]
     return (
@@ -222,7 +254,14 @@ def main() -> None:
         metavar="RATE",
         help="one more client sends RATE values per second (default 10,000; 0: sends none)",
     )
+    lecture = f"a long lecture: {SOAK_STAY + SOAK_RECONNECTING} clients, {SOAK_RECONNECTING} reconnecting every minute"
+    parser.add_argument("--soak", type=int, metavar="MINUTES", help=lecture)
     args = parser.parse_args()
+    if args.soak:
+        # each minute: the newcomers join (a few seconds), play, leave, and the server is measured
+        rows = churn(args.soak, SOAK_RECONNECTING, SOAK_STAY, 52.0, args.fps)
+        print(soak_summary(rows), flush=True)
+        return
     if args.flood is not None:
         print(flood_line(flood(args.clients, min(args.seconds, 5.0), args.fps, args.flood)), flush=True)
         return

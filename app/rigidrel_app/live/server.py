@@ -68,23 +68,38 @@ class MessageBudget:
     """
 
     rate: float = 150.0
-    burst: float = 300.0
+    burst: float = 150.0
     control_cost: float = 2.0
 
 
-#: Messages that ask the session to act (each may redraw the scene).
-_CONTROL_MESSAGES = frozenset(
-    {viser_messages.GuiUpdateMessage, viser_messages.CommandTriggerMessage, viser_messages.GuiButtonHoldMessage}
+#: Messages that ask the session to act (each may redraw the scene), as their type names appear
+#: in the msgpack a client sends (the budget is spent before a message is decoded).
+_CONTROL_TYPE_NAMES = tuple(
+    cls.__name__.encode()
+    for cls in (
+        viser_messages.GuiUpdateMessage,
+        viser_messages.CommandTriggerMessage,
+        viser_messages.GuiButtonHoldMessage,
+    )
 )
 
 
 class _Bucket:
     """One client's tokens (:class:`MessageBudget`); touched only on viser's event loop."""
 
-    __slots__ = ("dropped", "stamp", "tokens")
+    __slots__ = ("budget", "stamp", "tokens")
 
-    def __init__(self, tokens: float, stamp: float) -> None:
-        self.tokens, self.stamp, self.dropped = tokens, stamp, False
+    def __init__(self, budget: MessageBudget) -> None:
+        self.budget, self.tokens, self.stamp = budget, budget.burst, time.monotonic()
+
+    def spend(self, raw: bytes | str) -> bool:
+        """Take the tokens of one message as received; False once the bucket is spent."""
+        budget, now = self.budget, time.monotonic()
+        self.tokens = min(budget.burst, self.tokens + (now - self.stamp) * budget.rate)
+        self.stamp = now
+        control = isinstance(raw, bytes) and any(name in raw for name in _CONTROL_TYPE_NAMES)
+        self.tokens -= budget.control_cost if control else 1.0
+        return self.tokens >= 0.0
 
 
 def app_version() -> str:
@@ -136,7 +151,6 @@ class App:
         self.budget = budget or MessageBudget()
         self.floods = 0
         """Clients dropped for sending more than :attr:`budget` allows."""
-        self._buckets: dict[int, _Bucket] = {}
         self.start = start
         self.version = version or app_version()
         self.errors = 0
@@ -159,13 +173,9 @@ class App:
         self._stop = threading.Event()
         self.server.on_client_connect(self._connect)
         self.server.on_client_disconnect(self._disconnect)
-        # every message a client sends passes the budget first (on viser's event loop, in the
-        # order received, before the tab's own handlers see it); a connection that never became
-        # a tab (no camera message) is counted too
-        websock = self.server._websock_server
-        for message_class in viser_messages.Message.get_subclasses():
-            websock.register_handler(message_class, self._spend)
-        websock.on_client_disconnect(self._forget_bucket)
+        # every message a client sends passes its budget as it is read off the socket, before viser
+        # decodes it (a connection that never became a tab, sending no camera message, included)
+        self.server._websock_server.on_client_connect(self._guard)
         self._loop = threading.Thread(target=self._animate, name="rigidrel-animation", daemon=True)
         self._loop.start()
 
@@ -183,34 +193,35 @@ class App:
         what = f"{type(exc).__name__}: {exc}" if exc is not None else context.get("message", "?")
         print(f"rigidrel: ignored a bad client message ({what})", file=sys.stderr)
 
-    def _spend(self, client_id: int, message: viser_messages.Message) -> None:
-        """Take a message's tokens from its client's bucket; drop the client when the bucket is spent."""
-        budget, now = self.budget, time.monotonic()
-        bucket = self._buckets.get(client_id)
-        if bucket is None:
-            bucket = self._buckets[client_id] = _Bucket(budget.burst, now)
-        bucket.tokens = min(budget.burst, bucket.tokens + (now - bucket.stamp) * budget.rate)
-        bucket.stamp = now
-        bucket.tokens -= budget.control_cost if type(message) in _CONTROL_MESSAGES else 1.0
-        if bucket.tokens < 0.0 and not bucket.dropped:
-            bucket.dropped = True
-            self._drop(client_id, f"it sent more than {budget.rate:g} messages per second")
+    async def _guard(self, connection: Any) -> None:
+        """Give a new connection a :class:`MessageBudget`: its socket's ``recv`` (viser's reading loop
+        calls it for every message) spends the tokens, and drops the client once they are spent."""
+        client_id = connection.client_id
+        socket = self.server._websock_server._live_connections.get(client_id)
+        if socket is None:  # gone already
+            return
+        bucket, recv = _Bucket(self.budget), socket.recv
 
-    def _drop(self, client_id: int, why: str) -> None:
+        async def budgeted_recv(*args: Any, **kwargs: Any) -> Any:
+            raw = await recv(*args, **kwargs)
+            if bucket.spend(raw):
+                return raw
+            self._drop(client_id, socket, f"it sent more than {self.budget.rate:g} messages per second")
+            while True:  # what was read ahead is discarded; then the closed socket raises ConnectionClosed
+                await recv(*args, **kwargs)
+
+        socket.recv = budgeted_recv
+
+    def _drop(self, client_id: int, socket: Any, why: str) -> None:
         """Close a client's socket now (no close handshake: a flooding client may not read one); its
-        session answers nothing more (its queued messages are counted, not acted on)."""
+        session answers nothing more (its messages already queued are counted, not acted on)."""
         self.floods += 1
         with self._lock:
             session = self.sessions.get(client_id)
         if session is not None:
             session.closed = True
-        connection = self.server._websock_server._live_connections.get(client_id)
-        if connection is not None:
-            connection.transport.abort()  # viser then runs its disconnect callbacks, ours included
+        socket.transport.abort()  # viser then runs its disconnect callbacks, ours included
         print(f"rigidrel: dropped client {client_id}: {why}", file=sys.stderr)
-
-    async def _forget_bucket(self, connection: Any) -> None:
-        self._buckets.pop(connection.client_id, None)
 
     def _connect(self, client: viser.ClientHandle) -> None:
         # on viser's thread pool: the tab may leave (``_disconnect``) while its session is built
