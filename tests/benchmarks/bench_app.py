@@ -97,9 +97,12 @@ class SocketClock:
 def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
     """A slider moved by a client of a paused tab: message in -> last frame of the answer out, on the
     server's socket. Flushed (what the session does) and not flushed (viser's send window) alternate,
-    value by value, over ``per_scene`` values of each linear slider of every scene."""
+    value by value, over ``per_scene`` values of each linear slider of every scene. Also split: the
+    callback's redraw (``Session.change``), and from its end to the last frame out."""
     loop = ClientLoop()
     times: dict[str, list[float]] = {"flushed": [], "window": []}
+    after_redraw: dict[str, list[float]] = {"flushed": [], "window": []}
+    redraws: list[float] = []
     with App(port=0) as app:
         client = LightClient(app.url)
         loop.run(client.connect())
@@ -115,7 +118,14 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
             client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"], "updates": {"value": 1.5}})
         )
         wait_until(lambda: session.messages_handled > handled)
-        flush = session.client.flush
+        flush, change = session.client.flush, session.change
+        changed: list[tuple[float, float]] = []
+
+        def timed_change(*args: Any, **kwargs: Any) -> None:
+            t0 = time.perf_counter()
+            change(*args, **kwargs)
+            changed.append((t0, time.perf_counter()))
+
         k = 0
         for kind in rr.scene_descriptions():
             session.change(Settings(kind))
@@ -136,11 +146,16 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
                         "uuid": control._impl.uuid,
                         "updates": {"value": float(value)},
                     }
+                    session.change = timed_change  # type: ignore[method-assign]
                     loop.run(client.send_raw(message))
                     wait_until(lambda h=handled: session.messages_handled > h, interval=0.005)
+                    session.change = change  # type: ignore[method-assign]
                     t_in = clock.received[n_in]
                     wait_until(lambda t=t_in: time.perf_counter() - max(clock.sent[-1], t) > quiet, interval=0.01)
                     times[variant].append(clock.sent[-1] - t_in)
+                    redraw_start, redraw_end = changed[-1]
+                    redraws.append(redraw_end - redraw_start)
+                    after_redraw[variant].append(clock.sent[-1] - redraw_end)
         session.client.flush = flush  # type: ignore[method-assign]
         client.stop()
         loop.run(client.close())
@@ -150,6 +165,8 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
         out[f"answer_ms_median[{variant}]"] = 1e3 * statistics.median(ts)
         out[f"answer_ms_p90[{variant}]"] = 1e3 * float(np.percentile(ts, 90))
         out[f"answer_ms_max[{variant}]"] = 1e3 * max(ts)
+        out[f"answer_after_redraw_ms_median[{variant}]"] = 1e3 * statistics.median(after_redraw[variant])
+    out["answer_redraw_ms_median"] = 1e3 * statistics.median(redraws)
     out["answer_samples"] = float(len(times["flushed"]) + len(times["window"]))
     return out
 
