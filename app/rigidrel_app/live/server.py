@@ -17,6 +17,7 @@ from typing import Any
 
 import viser
 from viser import _messages as viser_messages
+from viser.infra import WebsockClientConnection
 
 from ..view.state import Settings
 from .greeting import greet
@@ -193,26 +194,28 @@ class App:
         what = f"{type(exc).__name__}: {exc}" if exc is not None else context.get("message", "?")
         print(f"rigidrel: ignored a bad client message ({what})", file=sys.stderr)
 
-    async def _guard(self, connection: Any) -> None:
-        """Give a new connection a :class:`MessageBudget`: its socket's ``recv`` (viser's reading loop
-        calls it for every message) spends the tokens, and drops the client once they are spent."""
+    async def _guard(self, connection: WebsockClientConnection) -> None:
+        """Give a new connection a :class:`MessageBudget`: its websocket's ``recv`` (viser's reading
+        loop calls it for every message) spends the tokens, and drops the client once they are spent."""
         client_id = connection.client_id
-        socket = self.server._websock_server._live_connections.get(client_id)
-        if socket is None:  # gone already
+        websocket = self.server._websock_server._live_connections.get(client_id)
+        if websocket is None:  # gone already
             return
-        bucket, recv = _Bucket(self.budget), socket.recv
+        budget = self.budget
+        bucket, recv = _Bucket(budget), websocket.recv
+        why = f"it sent more than its budget ({budget.rate:g} a second, a control's value {budget.control_cost:g})"
 
         async def budgeted_recv(*args: Any, **kwargs: Any) -> Any:
             raw = await recv(*args, **kwargs)
             if bucket.spend(raw):
                 return raw
-            self._drop(client_id, socket, f"it sent more than {self.budget.rate:g} messages per second")
+            self._drop(client_id, websocket, why)
             while True:  # what was read ahead is discarded; then the closed socket raises ConnectionClosed
                 await recv(*args, **kwargs)
 
-        socket.recv = budgeted_recv
+        websocket.recv = budgeted_recv
 
-    def _drop(self, client_id: int, socket: Any, why: str) -> None:
+    def _drop(self, client_id: int, websocket: Any, why: str) -> None:
         """Close a client's socket now (no close handshake: a flooding client may not read one); its
         session answers nothing more (its messages already queued are counted, not acted on)."""
         self.floods += 1
@@ -220,7 +223,7 @@ class App:
             session = self.sessions.get(client_id)
         if session is not None:
             session.closed = True
-        socket.transport.abort()  # viser then runs its disconnect callbacks, ours included
+        websocket.transport.abort()  # viser then runs its disconnect callbacks, ours included
         print(f"rigidrel: dropped client {client_id}: {why}", file=sys.stderr)
 
     def _connect(self, client: viser.ClientHandle) -> None:
