@@ -288,7 +288,9 @@ def test_stalled_clients_do_not_slow_the_others() -> None:
             s.toggle_play()
         time.sleep(1.0)
         with_stalled = min(_fps([c for c, _ in readers], 4.0))
-        assert baseline > 0 and with_stalled >= 0.8 * baseline, (baseline, with_stalled)
+        # held up, they would freeze; the bound is loose as in-process windows of the same readers vary
+        # by a quarter on this shared machine (26 to 40 fps in consecutive windows, nothing changed)
+        assert baseline > 0 and with_stalled >= 0.5 * baseline, (baseline, with_stalled)
         assert h.app.errors == 0
     finally:
         h.close()
