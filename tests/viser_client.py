@@ -12,6 +12,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import json
+import select
 import subprocess
 import sys
 import threading
@@ -106,6 +107,9 @@ class Stats:
     """Frames that moved the rods (a batched-mesh position update)."""
     lane_times: list[float] = field(default_factory=list)
     errors: list[str] = field(default_factory=list)
+    first_picture_bytes: int | None = None
+    """Bytes received up to and including the first frame that carries the rods' meshes (the
+    first picture a browser can draw), or None before it."""
 
 
 class LightClient:
@@ -120,6 +124,7 @@ class LightClient:
         """The tab's keyboard commands (viser's command palette), by label."""
         self._ws: Any = None
         self._stop = asyncio.Event()
+        self._pending: set[asyncio.Task[None]] = set()
 
     async def connect(self) -> None:
         self._ws = await websockets.connect(
@@ -132,6 +137,19 @@ class LightClient:
 
     async def send_raw(self, message: dict[str, Any]) -> None:
         await self._ws.send(msgspec.msgpack.encode(message))
+
+    async def set_value(self, label: str, value: Any) -> None:
+        """What the browser sends when a control labelled ``label`` is moved (or a button pressed: True)."""
+        await self.send_raw({"type": "GuiUpdateMessage", "uuid": self.gui_uuid[label], "updates": {"value": value}})
+
+    def stall(self) -> None:
+        """Stop reading (the connection stays open): the server's frames pile up in the socket."""
+        self.read = False
+
+    def abort(self) -> None:
+        """Drop the connection without a close frame, as a tab whose network vanished does."""
+        if self._ws is not None:
+            self._ws.transport.abort()
 
     def stop(self) -> None:
         self._stop.set()
@@ -162,6 +180,11 @@ class LightClient:
         moved = False
         for m in decode_frame(data):
             kind = m.get("type", "")
+            if kind == "BatchedMeshesMessage" and s.first_picture_bytes is None:
+                s.first_picture_bytes = s.bytes
+            if kind == "LocalStorageGetItemRequestMessage":  # a browser answers; this one has stored nothing
+                reply = {"type": "LocalStorageGetItemResponseMessage", "value": None, "error": None}
+                self._answer({**reply, "request_uuid": m["request_uuid"]})
             props = m.get("props")
             # a control (not a folder of the same name), by its label
             if kind.startswith("Gui") and kind != "GuiFolderMessage" and isinstance(props, dict) and "label" in props:
@@ -173,6 +196,15 @@ class LightClient:
         if moved:
             s.lane_frames += 1
             s.lane_times.append(time.monotonic())
+
+    def _answer(self, message: dict[str, Any]) -> None:
+        async def send() -> None:
+            with contextlib.suppress(websockets.ConnectionClosed):
+                await self.send_raw(message)
+
+        task = asyncio.get_running_loop().create_task(send())
+        self._pending.add(task)
+        task.add_done_callback(self._pending.discard)
 
     async def close(self) -> None:
         if self._ws is not None:
@@ -234,3 +266,171 @@ def swarm_result(child: subprocess.Popen[str], seconds: float) -> list[dict[str,
     if child.returncode != 0 or not out.strip():
         raise RuntimeError(f"the client process failed (exit {child.returncode})")
     return json.loads(out.strip().splitlines()[-1])
+
+
+#: How the clients of a churn round leave, in turn: with a close frame; by dropping the socket
+#: without one; after they stopped reading (the server's frames piling up), dropping the socket.
+CHURN_EXITS = ("polite", "abrupt", "stalled")
+#: The paper figure every churn client opens and plays.
+CHURN_FIGURE = "Fig. 3: collision, M2 = 2 M1"
+
+
+async def join_and_play(client: LightClient, figure: str = CHURN_FIGURE, timeout: float = 60.0) -> asyncio.Task[Stats]:
+    """Connect ``client`` as a student does: wait for the controls and the first picture, choose
+    ``figure`` and press Play. Returns the task reading the connection (cancel it to stop)."""
+    await client.connect()
+    reader = asyncio.get_running_loop().create_task(client.run(3600))
+    end = time.monotonic() + timeout
+    while "Play" not in client.gui_uuid or client.stats.first_picture_bytes is None:
+        if time.monotonic() > end or reader.done():
+            reader.cancel()
+            raise TimeoutError("no controls and first picture in time")
+        await asyncio.sleep(0.02)
+    await client.set_value("Paper figure", figure)
+    await client.set_value("Play", True)
+    return reader
+
+
+async def _leave(client: LightClient, exit: str, reader: asyncio.Task[Stats]) -> list[str]:
+    """Leave as ``exit`` says; returns the errors the client met while it was there."""
+    errors = list(client.stats.errors)
+    client.stop()
+    if exit == "polite":
+        with contextlib.suppress(Exception):
+            await asyncio.wait_for(client.close(), 5.0)
+    else:
+        client.abort()
+    reader.cancel()
+    await asyncio.gather(reader, return_exceptions=True)
+    return errors
+
+
+def _frames_between(stats: Stats, t0: float, t1: float) -> int:
+    return sum(1 for t in stats.lane_times if t0 <= t < t1)
+
+
+async def _churn(url: str, clients: int, stay: int, seconds: float) -> None:
+    loop = asyncio.get_running_loop()
+    steady = [LightClient(url) for _ in range(stay)]
+    readers = await asyncio.gather(*(join_and_play(c) for c in steady))
+    print(json.dumps({"ready": stay}), flush=True)
+    while (await loop.run_in_executor(None, sys.stdin.readline)).strip() == "round":
+        t0 = time.monotonic()
+        comers = [LightClient(url) for _ in range(clients)]
+        joined = await asyncio.gather(*(join_and_play(c) for c in comers), return_exceptions=True)
+        exits = [CHURN_EXITS[i % len(CHURN_EXITS)] for i in range(clients)]
+        for c, exit in zip(comers, exits, strict=True):
+            if exit == "stalled":
+                c.stall()
+        await asyncio.sleep(seconds)
+        errors: list[str] = [f"join: {j!r}" for j in joined if isinstance(j, BaseException)]
+        left = await asyncio.gather(
+            *(_leave(c, e, j) for c, e, j in zip(comers, exits, joined, strict=True) if isinstance(j, asyncio.Task))
+        )
+        t1 = time.monotonic()
+        errors += [e for row in left for e in row] + [e for c in steady for e in c.stats.errors]
+        row = {
+            "joined": sum(isinstance(j, asyncio.Task) for j in joined),
+            "first_picture_bytes": [c.stats.first_picture_bytes for c in comers if c.stats.first_picture_bytes],
+            "steady_fps": [_frames_between(c.stats, t0, t1) / (t1 - t0) for c in steady],
+            "errors": errors,
+            "seconds": t1 - t0,
+        }
+        print(json.dumps(row), flush=True)
+    await asyncio.gather(*(_leave(c, "polite", r) for c, r in zip(steady, readers, strict=True)))
+
+
+def churn_main(url: str, clients: int, stay: int, seconds: float) -> None:
+    """In a child process: ``stay`` clients join and play, then print ``{"ready": stay}``. Each line
+    ``round`` on stdin brings ``clients`` more that join, play for ``seconds`` and leave (in turn
+    politely, abruptly, stalled; :data:`CHURN_EXITS`), then one JSON line: how many joined, the bytes
+    each received until its first picture, the steady clients' rod frames per second over the
+    round, and errors (the steady clients' are cumulative). Any other line ends it."""
+    asyncio.run(_churn(url, clients, stay, seconds))
+
+
+@contextlib.contextmanager
+def churn_clients(url: str, clients: int, stay: int, seconds: float) -> Iterator[subprocess.Popen[str]]:
+    """Start ``churn_main`` in another interpreter; killed on the way out whatever happened."""
+    code = f"from tests.viser_client import churn_main; churn_main({url!r}, {clients}, {stay}, {seconds})"
+    child = subprocess.Popen(
+        [sys.executable, "-c", code], cwd=ROOT, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True
+    )
+    try:
+        yield child
+    finally:
+        if child.poll() is None:
+            child.kill()
+        child.communicate(timeout=30)
+
+
+def read_line(child: subprocess.Popen[str], timeout: float) -> dict[str, Any]:
+    """The next JSON line the child prints; RuntimeError if none comes within ``timeout`` s."""
+    assert child.stdout is not None
+    ready, _, _ = select.select([child.stdout], [], [], timeout)
+    line = child.stdout.readline() if ready else ""
+    if not line.strip():
+        raise RuntimeError(f"the client process said nothing in {timeout} s (exit {child.poll()})")
+    return json.loads(line)
+
+
+def tell(child: subprocess.Popen[str], line: str) -> None:
+    assert child.stdin is not None
+    child.stdin.write(line + "\n")
+    child.stdin.flush()
+
+
+async def flood(client: LightClient, label: str, rate: float, seconds: float) -> tuple[int, float | None]:
+    """Send values to the control ``label`` at ``rate`` per second for ``seconds`` (alternating two,
+    so that each is a change; none if ``rate`` is 0). Returns how many were sent and after how many seconds the server
+    hung up (None if it did not)."""
+    if rate <= 0.0:  # a control run: connected, sending nothing
+        await asyncio.sleep(seconds)
+        return 0, None
+    uuid = client.gui_uuid[label]
+    encoded = [
+        msgspec.msgpack.encode({"type": "GuiUpdateMessage", "uuid": uuid, "updates": {"value": v}}) for v in (0.3, 0.5)
+    ]
+    ws, t0, sent = client._ws, time.monotonic(), 0
+    while (now := time.monotonic()) - t0 < seconds:
+        try:
+            for _ in range(100):
+                await ws.send(encoded[sent % 2])
+                sent += 1
+        except websockets.ConnectionClosed:
+            return sent, now - t0
+        await asyncio.sleep(max(0.0, t0 + sent / rate - time.monotonic()))
+    return sent, None
+
+
+def flood_main(url: str, n: int, seconds: float, rate: float) -> None:
+    """In a child process: ``n`` clients play Fig. 3 and one more floods "V" at ``rate`` messages per
+    second for the first ``seconds`` of the measured window (after SWARM_WARMUP). Prints one JSON
+    line: the players' rod frames per second over the window and over its first second, their
+    errors, and the flood (messages sent, seconds until the server hung up or null)."""
+
+    async def main() -> dict[str, Any]:
+        players = [LightClient(url) for _ in range(n)]
+        flooder = LightClient(url)
+        readers = await asyncio.gather(*(join_and_play(c) for c in players))
+        await flooder.connect()
+        flooder_reader = asyncio.get_running_loop().create_task(flooder.run(3600))
+        while "V" not in flooder.gui_uuid:
+            await asyncio.sleep(0.02)
+        await asyncio.sleep(SWARM_WARMUP)
+        t0 = time.monotonic()
+        sent, hung_up_after = await flood(flooder, "V", rate, seconds)
+        await asyncio.sleep(max(0.0, t0 + seconds - time.monotonic()))
+        errors = [e for c in players for e in c.stats.errors]
+        await asyncio.gather(*(_leave(c, "polite", r) for c, r in zip(players, readers, strict=True)))
+        flooder_reader.cancel()
+        flooder.abort()
+        return {
+            "fps": [_frames_between(c.stats, t0, t0 + seconds) / seconds for c in players],
+            "fps_first_second": [_frames_between(c.stats, t0, t0 + 1.0) for c in players],
+            "errors": errors,
+            "sent": sent,
+            "hung_up_after": hung_up_after,
+        }
+
+    print(json.dumps(asyncio.run(main())), flush=True)

@@ -4,6 +4,9 @@
 
 * rebuild: a slider change to every drawing rebuilt (scene, diagrams, lanes), median
   per scene, timed in the server process (target <= 16 ms);
+* answer: a slider value sent by a client, from the server's socket receiving it to the
+  server's socket sending the last frame of the answer (target <= 10 ms), with the session
+  flushing its answer and, alternated with it, without (viser's 1/60 s send window);
 * animation: N lightweight viser clients (another process) playing at once: delivered
   rod frames per second per client (target >= 30) and server CPU per client (target <= 15 %
   of one core);
@@ -19,6 +22,7 @@ import math
 import statistics
 import time
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
 
@@ -66,6 +70,104 @@ def bench_rebuild() -> dict[str, float]:
         client.stop()
         loop.run(client.close())
     loop.close()
+    return out
+
+
+class SocketClock:
+    """Times the server's own websocket for one client: when each message came in (``received``)
+    and when each frame had been handed to the socket (``sent``), in ``time.perf_counter`` s."""
+
+    def __init__(self, connection: Any) -> None:
+        self.received: list[float] = []
+        self.sent: list[float] = []
+        recv, send = connection.recv, connection.send
+
+        async def timed_recv(*args: Any, **kwargs: Any) -> Any:
+            data = await recv(*args, **kwargs)
+            self.received.append(time.perf_counter())
+            return data
+
+        async def timed_send(*args: Any, **kwargs: Any) -> None:
+            await send(*args, **kwargs)
+            self.sent.append(time.perf_counter())
+
+        connection.recv, connection.send = timed_recv, timed_send
+
+
+def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
+    """A slider moved by a client of a paused tab: message in -> last frame of the answer out, on the
+    server's socket. Flushed (what the session does) and not flushed (viser's send window) alternate,
+    value by value, over ``per_scene`` values of each linear slider of every scene. Also split: the
+    callback's redraw (``Session.change``), and from its end to the last frame out."""
+    loop = ClientLoop()
+    times: dict[str, list[float]] = {"flushed": [], "window": []}
+    after_redraw: dict[str, list[float]] = {"flushed": [], "window": []}
+    redraws: list[float] = []
+    with App(port=0) as app:
+        client = LightClient(app.url)
+        loop.run(client.connect())
+        loop.start(client.run(3600))
+        wait_until(lambda: app.sessions, timeout=60)
+        session = next(iter(app.sessions.values()))
+        wait_until(lambda: "V" in client.gui_uuid, timeout=60)
+        connection = app.server._websock_server._live_connections[session.client.client_id]
+        clock = SocketClock(connection)
+        handled = session.messages_handled
+        # the consumer was already waiting in the untimed recv: one message to move it on
+        loop.run(
+            client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"], "updates": {"value": 1.5}})
+        )
+        wait_until(lambda: session.messages_handled > handled)
+        flush, change = session.client.flush, session.change
+        changed: list[tuple[float, float]] = []
+
+        def timed_change(*args: Any, **kwargs: Any) -> None:
+            t0 = time.perf_counter()
+            change(*args, **kwargs)
+            changed.append((t0, time.perf_counter()))
+
+        k = 0
+        for kind in rr.scene_descriptions():
+            session.change(Settings(kind))
+            for p in rr.describe(kind).parameters:
+                if p.slider is None or p.slider.scale == "log":
+                    continue
+                control = session.controls.parameters[p].slider
+                for value in np.linspace(p.slider.lo, p.slider.hi, per_scene):
+                    if isinstance(resolve(session.settings.with_value(p.name, float(value))), str):
+                        continue
+                    variant = ("flushed", "window")[k % 2]
+                    k += 1
+                    session.client.flush = flush if variant == "flushed" else (lambda: None)  # type: ignore[method-assign]
+                    time.sleep(quiet)
+                    n_in, handled = len(clock.received), session.messages_handled
+                    message = {
+                        "type": "GuiUpdateMessage",
+                        "uuid": control._impl.uuid,
+                        "updates": {"value": float(value)},
+                    }
+                    session.change = timed_change  # type: ignore[method-assign]
+                    loop.run(client.send_raw(message))
+                    wait_until(lambda h=handled: session.messages_handled > h, interval=0.005)
+                    session.change = change  # type: ignore[method-assign]
+                    t_in = clock.received[n_in]
+                    wait_until(lambda t=t_in: time.perf_counter() - max(clock.sent[-1], t) > quiet, interval=0.01)
+                    times[variant].append(clock.sent[-1] - t_in)
+                    redraw_start, redraw_end = changed[-1]
+                    redraws.append(redraw_end - redraw_start)
+                    after_redraw[variant].append(clock.sent[-1] - redraw_end)
+        session.client.flush = flush  # type: ignore[method-assign]
+        client.stop()
+        loop.run(client.close())
+    loop.close()
+    out: dict[str, float] = {}
+    for variant, ts in times.items():
+        out[f"answer_ms_median[{variant}]"] = 1e3 * statistics.median(ts)
+        out[f"answer_ms_p90[{variant}]"] = 1e3 * float(np.percentile(ts, 90))
+        out[f"answer_ms_max[{variant}]"] = 1e3 * max(ts)
+        out[f"answer_after_redraw_ms_median[{variant}]"] = 1e3 * statistics.median(after_redraw[variant])
+    out["answer_redraw_ms_median"] = 1e3 * statistics.median(redraws)
+    out["answer_samples"] = float(len(times["flushed"]) + len(times["window"]))
     return out
 
 
@@ -123,6 +225,7 @@ def main() -> None:
     args = parser.parse_args()
     figures: dict[str, float] = {}
     figures.update(bench_rebuild())
+    figures.update(bench_answer())
     for n in args.clients:
         figures.update(bench_animation(n, args.seconds))
     if not args.no_browser:

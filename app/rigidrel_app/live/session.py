@@ -131,12 +131,19 @@ class Session:
                 raise AssertionError(action)
 
     def checked(self, respond: Callable[[], None]) -> None:
-        """Respond to one value a client sent, under the lock, and count it whatever happened."""
-        with self.lock, self.client.atomic():
+        """Respond to one value a client sent, under the lock, and count it whatever happened; then
+        send the answer at once (viser would hold it for the rest of its 1/60 s send window).
+
+        A session the server has let go (``closed``: the tab left, or was dropped for flooding)
+        counts the value and does nothing more."""
+        with self.lock:
             try:
-                respond()
+                if not self.closed:
+                    with self.client.atomic():
+                        respond()
             finally:
                 self.messages_handled += 1
+        self.client.flush()
 
     def set_playback(self, playback: Playback) -> None:
         was = self.playback.playing
