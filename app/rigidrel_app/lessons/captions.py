@@ -14,6 +14,7 @@ scene in the step's frame (c = 1):
 ``{frame.beta}``            the step's frame velocity (``frame.name``)
 ``{heat}``                  rest energy created (the budget's heat)
 ``{verdict[1]}``            the core's first causal verdict in words
+``{note[1]}``               the scene's first note in words (the string's strain, the barn's verdicts)
 ==========================  ===========================================================
 
 A format spec follows a colon as usual: ``{event[T_1].t:.3g}``. Write ``{{`` and ``}}`` for braces.
@@ -112,6 +113,7 @@ def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
         "frame": FrameValues(frame.beta, frame.label()),
         "heat": scene.budget(frame).heat,
         "verdict": _Table("verdict", {str(k + 1): v for k, v in enumerate(verdicts)}),
+        "note": _Table("note", {str(k + 1): n[:1].upper() + n[1:] for k, n in enumerate(scene.notes(frame))}),
     }
 
 
