@@ -284,6 +284,7 @@ class _Texts:
         self._shown: list[tuple[str, tuple[float, float, float], float, str] | None] = []
 
     def show(self, texts: Sequence[PageText], y: float = _TEXT_Y) -> None:
+        texts = [t for t in texts if t.text.strip()]  # a blank label would stop viser drawing every label
         for k, t in enumerate(texts):
             state = (t.text, (t.x, y, t.z), label_scale(t.px), t.anchor)
             self.set(k, state)
@@ -292,8 +293,9 @@ class _Texts:
 
     def set(self, k: int, state: tuple[str, tuple[float, float, float], float, str]) -> None:
         text, position, scale, anchor = state
-        while k > len(self._handles):  # never: slots are filled in order, or are ruler slots below
-            self.set(len(self._handles), (" ", (0.0, 1e5, 0.0), 1.0, "center-left"))
+        while k > len(self._handles):  # a ruler's slots fill out of order: the ones before wait hidden
+            # (a label of only blank text stops viser 1.1.1 drawing every label: never send one)
+            self.set(len(self._handles), ("0", (0.0, 1e5, 0.0), 1.0, "center-left"))
             self.hide(len(self._handles) - 1)
         if k == len(self._handles):
             name = f"{self._prefix}/{k}"

@@ -16,8 +16,8 @@ import viser
 import rigidrel_core as rr
 
 from ..backends.viser import PageRenderer
-from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture
-from ..view.layout import NORMAL, PRESENTER, CanvasLayout, canvas_layout
+from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
+from ..view.layout import LEGEND_ROWS, NORMAL, PRESENTER, CanvasLayout, canvas_layout
 from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, build_drawing, nice_step
 from ..view.scene_view import readout_markdown as readout
 from ..view.state import Resolved, Settings, frame_choice, frame_choices, preset_step, scene_presets
@@ -76,10 +76,11 @@ class Session:
                     with self.client.atomic():
                         self._apply(self.drawn.resolved, refit=True)
 
-    def _canvas_layout(self) -> CanvasLayout:
+    def _canvas_layout(self, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
         """The page for this tab's canvas size and mode."""
         camera = self.client.camera
-        return canvas_layout(camera.image_width, camera.image_height, PRESENTER if self.presenter else NORMAL)
+        theme = PRESENTER if self.presenter else NORMAL
+        return canvas_layout(camera.image_width, camera.image_height, theme, legend_rows)
 
     # ------------------------------------------------------------------ state
     def change(self, new: Settings, refit: bool | None = None) -> None:
@@ -206,13 +207,17 @@ class Session:
             c.frame.value = chosen
         self.set_playback(self.playback.with_window(d.window))
         c.time.retarget(time_entry(d.window, nice_step(d.window[1] - d.window[0])))
+        legend = d.legend()
+        rows = legend_rows(legend, layout.legend.width, layout.theme)
+        if rows != LEGEND_ROWS:  # the plots give the legend the rows it needs (their curves still fit)
+            self.layout = layout = self._canvas_layout(rows)
         frames: list[ChartFrame] = []
         picture = PagePicture()
         for chart, place in zip(d.charts, layout.charts, strict=True):
             f, p = chart_picture(chart, place, layout.theme)
             frames.append(f)
             picture += p
-        picture += legend_picture(d.legend(), layout.legend, layout.theme)
+        picture += legend_picture(legend, layout.legend, layout.theme)
         self._frames = tuple(frames)
         self.renderer.set_static(layout, picture, RULER_NAMES)
         if refit:

@@ -17,7 +17,7 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
-from .layout import ChartLayout, Rect, Theme, text_width
+from .layout import LEGEND_ROW_EM, ChartLayout, Rect, Theme, text_width
 from .vocabulary import Area, Chart, Dash, Item, Label, Points, Polyline, Segments, Style, rgb
 
 FloatArray = npt.NDArray[np.float64]
@@ -324,6 +324,19 @@ def tick_text(values: FloatArray) -> list[str]:
     return [f"{round(v, decimals) + 0.0:.{decimals}f}" for v in values]
 
 
+def wrap(text: str, px: float, width: float) -> str:
+    """``text`` on two lines (broken after its first ", ", or at the middle space) if one would be
+    wider than ``width`` px."""
+    if text_width(text, px) <= width or " " not in text:
+        return text
+    if ", " in text:
+        head, tail = text.split(", ", 1)
+        return f"{head},\n{tail}"
+    words = text.split(" ")
+    half = len(words) // 2
+    return " ".join(words[:half]) + "\n" + " ".join(words[half:])
+
+
 def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme) -> PagePicture:
     """The frame of the plot area, a faint grid at round numbers, their numbers, the axis names
     (t and x, or t′ and x′) at the axes' ends and the chart's title above."""
@@ -353,7 +366,7 @@ def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme)
     # axis names at the axes' far ends, inside the plot (where a physicist writes them)
     texts.append(PageText(p.x1 - 4.0, p.z0 + 0.8 * theme.text_px, page_text(chart.x_title), theme.text_px, "center-right"))
     texts.append(PageText(p.x0 + 4.0, p.z1 - 0.8 * theme.text_px, page_text(chart.y_title), theme.text_px, "center-left"))
-    texts.append(PageText(layout.outer.x0 + 2.0, layout.outer.z1, page_text(chart.title), theme.title_px, "top-left"))
+    texts.append(PageText(layout.outer.x0 + 2.0, layout.outer.z1, wrap(page_text(chart.title), theme.title_px, layout.outer.width), theme.title_px, "top-left"))
     return PagePicture(lines, (), tuple(texts))
 
 
@@ -382,9 +395,21 @@ def legend_entries(items: Iterable[Item]) -> list[LegendEntry]:
     return list(out.values())
 
 
+def legend_rows(entries: Sequence[LegendEntry], width: float, theme: Theme) -> int:
+    """How many rows the legend needs across ``width`` px."""
+    swatch = 2.0 * theme.text_px
+    rows, x = 1, 0.0
+    for e in entries:
+        w = swatch + 6.0 + text_width(page_text(e.name), theme.text_px) + 1.2 * theme.text_px
+        if x + w > width and x > 0:
+            rows, x = rows + 1, 0.0
+        x += w
+    return rows
+
+
 def legend_picture(entries: Sequence[LegendEntry], box: Rect, theme: Theme) -> PagePicture:
     """Entries left to right, wrapped into the rows ``box`` holds: a swatch, then the name."""
-    row_h = 1.5 * theme.text_px
+    row_h = LEGEND_ROW_EM * theme.text_px
     swatch = 2.0 * theme.text_px
     x, z = box.x0, box.z1 - 0.5 * row_h
     lines: list[PageLines] = []

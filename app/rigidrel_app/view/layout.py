@@ -121,8 +121,10 @@ class CanvasLayout:
 
 
 MARGIN = 10.0
-#: The legend takes this many rows below the diagrams.
+#: The legend takes this many rows below the diagrams unless told otherwise.
 LEGEND_ROWS = 2
+#: One legend row is this many text heights.
+LEGEND_ROW_EM = 1.45
 
 
 def lane_height(theme: Theme) -> float:
@@ -139,8 +141,8 @@ def rod_height(theme: Theme) -> float:
     return 1.2 * theme.text_px
 
 
-def canvas_layout(width: float, height: float, theme: Theme = NORMAL) -> CanvasLayout:
-    """The lanes across the top, the diagrams side by side below, the legend at the bottom."""
+def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
+    """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at the bottom."""
     w, h = max(width, 320.0), max(height, 240.0)
     lane_h = lane_height(theme)
     lanes: list[LaneLayout] = []
@@ -171,7 +173,7 @@ def canvas_layout(width: float, height: float, theme: Theme = NORMAL) -> CanvasL
             )
         )
         top = band.z0 - 4.0
-    legend_h = LEGEND_ROWS * 1.5 * theme.text_px
+    legend_h = legend_rows * LEGEND_ROW_EM * theme.text_px
     legend = Rect(MARGIN, MARGIN, w - MARGIN, MARGIN + legend_h)
     charts_top, charts_bottom = top - 4.0, legend.z1 + 4.0
     gap = 12.0
@@ -182,7 +184,7 @@ def canvas_layout(width: float, height: float, theme: Theme = NORMAL) -> CanvasL
         outer = Rect(x0, charts_bottom, x0 + cw, max(charts_top, charts_bottom + 60.0))
         left = 3.6 * theme.text_px  # the time axis' numbers
         bottom = 1.5 * theme.text_px + 6.0  # the x axis' numbers
-        head = 1.5 * theme.title_px  # the title
+        head = 2.5 * theme.title_px  # the title, on up to two lines
         plot = Rect(outer.x0 + left, outer.z0 + bottom, outer.x1 - 6.0, max(outer.z1 - head, outer.z0 + bottom + 30.0))
         charts.append(ChartLayout(outer, plot))
     return CanvasLayout(w, h, theme, (lanes[0], lanes[1]), (charts[0], charts[1], charts[2]), legend)
