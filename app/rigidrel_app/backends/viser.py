@@ -251,7 +251,6 @@ class LaneRenderer:
         self._box_positions, self._box_scales = positions, scales
 
 
-
 # ====================================================================== the app's page
 #: Depth (page px towards the camera) of each layer: later layers are drawn over earlier ones.
 _LAYER_Y = 0.4
@@ -300,7 +299,11 @@ class _Texts:
         if k == len(self._handles):
             name = f"{self._prefix}/{k}"
             h = self._scene.add_label(
-                name, text, position=position, font_screen_scale=scale, anchor=anchor  # type: ignore[arg-type]
+                name,
+                text,
+                position=position,
+                font_screen_scale=scale,
+                anchor=anchor,  # type: ignore[arg-type]
             )
             self._handles.append(h)
             self._shown.append(state)
@@ -348,7 +351,7 @@ def line_rgb(color: tuple[int, int, int]) -> tuple[int, int, int]:
     a, b, c = 1.0 - 0.983729 * w, 0.0245786 - 0.4329510 * w, -(0.000090537 + 0.238081 * w)
     v = (-b + np.sqrt(np.maximum(b * b - 4.0 * a * c, 0.0))) / (2.0 * a)
     x = 0.6 * np.linalg.solve(_ACES_IN, v)
-    r, g, bl = (int(round(255.0 * min(max(float(t), 0.0), 1.0))) for t in x)
+    r, g, bl = (round(255.0 * min(max(float(t), 0.0), 1.0)) for t in x)
     return r, g, bl
 
 
@@ -526,7 +529,10 @@ class PageRenderer:
         self._lane_lines.show(lines)
         self._update_dials(np.concatenate([lane.dials for lane in lanes]), layout.lanes[0].clock_px)
         self.titles.show(
-            [PageText(p.band.x0, p.title_z, lane.title, theme.title_px, "top-left") for p, lane in zip(layout.lanes, lanes)]
+            [
+                PageText(p.band.x0, p.title_z, lane.title, theme.title_px, "top-left")
+                for p, lane in zip(layout.lanes, lanes)
+            ]
         )
         for ruler, place, lane in zip(self._rulers, layout.lanes, lanes, strict=True):
             z = place.ruler_z - place.tick_px - 2.0

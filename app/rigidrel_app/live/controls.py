@@ -404,7 +404,7 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
         )
         presenter = gui.add_button(
             "Presenter mode", icon=viser.Icon.PRESENTATION, color="gray",
-            hint="Hide this panel, larger text and thicker lines for a projector; F again (or the panel's rail) to come back (F)",
+            hint="Hide this panel; larger text and thicker lines for a projector. F again brings it back (F)",
         )  # fmt: skip
         gui.add_markdown(f"<small>{key_line()}</small>")
     readout = gui.add_markdown("", order=4.0)

@@ -25,7 +25,12 @@ Anchor = Literal["center-left", "center-right", "center-center", "top-left", "to
 DotShape = Literal["circle", "diamond", "square"]
 
 #: Dash patterns (on, off, on, off, ... in px at line width 2), as plotly draws them.
-DASHES: dict[Dash, tuple[float, ...]] = {"solid": (), "dash": (9.0, 6.0), "dot": (2.5, 4.5), "dashdot": (9.0, 4.0, 2.5, 4.0)}
+DASHES: dict[Dash, tuple[float, ...]] = {
+    "solid": (),
+    "dash": (9.0, 6.0),
+    "dot": (2.5, 4.5),
+    "dashdot": (9.0, 4.0, 2.5, 4.0),
+}
 #: Draw order, back to front: fills, grid, axes, curves, events, moving parts.
 Layer = Literal[0, 1, 2, 3, 4, 5]
 FILL, GRID, AXES, CURVES, EVENTS, MOVING = 0, 1, 2, 3, 4, 5
@@ -100,7 +105,10 @@ class ChartFrame:
     def px(self, x: FloatArray, y: FloatArray) -> tuple[FloatArray, FloatArray]:
         (a, b), (c, d) = self.x_range, self.y_range
         p = self.plot
-        return (p.x0 + (np.asarray(x, float) - a) * (p.width / (b - a)), p.z0 + (np.asarray(y, float) - c) * (p.height / (d - c)))
+        return (
+            p.x0 + (np.asarray(x, float) - a) * (p.width / (b - a)),
+            p.z0 + (np.asarray(y, float) - c) * (p.height / (d - c)),
+        )
 
 
 def chart_frame(chart: Chart, plot: Rect) -> ChartFrame:
@@ -131,14 +139,14 @@ def clip_segments(p0: FloatArray, p1: FloatArray, r: Rect) -> tuple[FloatArray, 
         for q_p, sign in ((p0[:, axis] - lo, -1.0), (hi - p0[:, axis], 1.0)):
             pp = sign * d[:, axis]
             parallel = pp == 0.0
-            keep &= ~(parallel & (q_p < 0))
+            keep = keep & ~(parallel & (q_p < 0))
             with np.errstate(divide="ignore", invalid="ignore"):
                 t = np.where(parallel, 0.0, q_p / np.where(parallel, 1.0, pp))
             entering = (pp < 0) & ~parallel
             leaving = (pp > 0) & ~parallel
             t0 = np.where(entering, np.maximum(t0, t), t0)
             t1 = np.where(leaving, np.minimum(t1, t), t1)
-    keep &= t0 <= t1
+    keep = keep & (t0 <= t1)
     a = p0 + t0[:, None] * d
     b = p0 + t1[:, None] * d
     return a[keep], b[keep]
@@ -149,7 +157,7 @@ def dashed(x: FloatArray, z: FloatArray, pattern: tuple[float, ...], scale: floa
     cut into pieces of at most 1.5 px whose middles fall on the pattern's "on" parts (scaled by
     ``scale``, the line width over 2)."""
     pts = np.stack([x, z], axis=-1)
-    finite = np.isfinite(pts).all(axis=-1)
+    finite: npt.NDArray[np.bool_] = np.asarray(np.isfinite(pts).all(axis=-1))
     a, b = pts[:-1], pts[1:]
     ok = finite[:-1] & finite[1:]
     a, b = a[ok], b[ok]
@@ -227,7 +235,7 @@ def _lines(p0: FloatArray, p1: FloatArray, color: np.ndarray, width: float, laye
 
 
 def line_width(style: Style, theme: Theme) -> float:
-    """A diagram line's width on the canvas: its plotly width scaled by the theme, never thinner than the theme's thinnest."""
+    """A diagram line's width on the canvas: its plotly width scaled by the theme, never under its thinnest."""
     return round(max(theme.line_px, style.width * theme.line_scale), 1)
 
 
@@ -275,7 +283,14 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
             x0, z0 = f.px(it.x0, it.y0)
             x1, z1 = f.px(it.x1, it.y1)
             for k in range(x0.size):
-                s = _stroke(np.array([x0[k], x1[k]]), np.array([z0[k], z1[k]]), it.style, f, theme, CURVES if layer is None else layer)
+                s = _stroke(
+                    np.array([x0[k], x1[k]]),
+                    np.array([z0[k], z1[k]]),
+                    it.style,
+                    f,
+                    theme,
+                    CURVES if layer is None else layer,
+                )
                 if s is not None:
                     lines.append(s)
         elif isinstance(it, Area):
@@ -291,7 +306,15 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
                 xy = np.stack([x[inside], z[inside]], -1)
                 color = color_rgb(it.style.color, it.style.opacity)
                 size = max(it.size * theme.line_scale * 1.2, 0.6 * theme.text_px)
-                dots.append(PageDots(xy, np.tile(color, (len(xy), 1)), size, _dot_shape(it.symbol), EVENTS if layer is None else layer))
+                dots.append(
+                    PageDots(
+                        xy,
+                        np.tile(color, (len(xy), 1)),
+                        size,
+                        _dot_shape(it.symbol),
+                        EVENTS if layer is None else layer,
+                    )
+                )
         else:
             assert isinstance(it, Label)
             x, z = f.px(np.array([it.x]), np.array([it.y]))
@@ -353,7 +376,9 @@ def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme)
     box1 = np.array([[p.x1, p.z0], [p.x0, p.z1], [p.x1, p.z1], [p.x1, p.z1]])
     tick = 0.35 * theme.text_px
     t0 = np.concatenate([np.stack([xs, np.full(xs.size, p.z0)], -1), np.stack([np.full(zs.size, p.x0), zs], -1)])
-    t1 = np.concatenate([np.stack([xs, np.full(xs.size, p.z0 - tick)], -1), np.stack([np.full(zs.size, p.x0 - tick), zs], -1)])
+    t1 = np.concatenate(
+        [np.stack([xs, np.full(xs.size, p.z0 - tick)], -1), np.stack([np.full(zs.size, p.x0 - tick), zs], -1)]
+    )
     lines = (
         _lines(g0, g1, grid, max(1.0, 0.5 * theme.line_px), GRID),
         _lines(np.concatenate([box0, t0]), np.concatenate([box1, t1]), ink, 0.75 * theme.line_px, AXES),
@@ -364,9 +389,21 @@ def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme)
     for z, s in zip(zs, tick_text(yt), strict=True):
         texts.append(PageText(p.x0 - tick - 3.0, float(z), s, theme.text_px, "center-right"))
     # axis names at the axes' far ends, inside the plot (where a physicist writes them)
-    texts.append(PageText(p.x1 - 4.0, p.z0 + 0.8 * theme.text_px, page_text(chart.x_title), theme.text_px, "center-right"))
-    texts.append(PageText(p.x0 + 4.0, p.z1 - 0.8 * theme.text_px, page_text(chart.y_title), theme.text_px, "center-left"))
-    texts.append(PageText(layout.outer.x0 + 2.0, layout.outer.z1, wrap(page_text(chart.title), theme.title_px, layout.outer.width), theme.title_px, "top-left"))
+    texts.append(
+        PageText(p.x1 - 4.0, p.z0 + 0.8 * theme.text_px, page_text(chart.x_title), theme.text_px, "center-right")
+    )
+    texts.append(
+        PageText(p.x0 + 4.0, p.z1 - 0.8 * theme.text_px, page_text(chart.y_title), theme.text_px, "center-left")
+    )
+    texts.append(
+        PageText(
+            layout.outer.x0 + 2.0,
+            layout.outer.z1,
+            wrap(page_text(chart.title), theme.title_px, layout.outer.width),
+            theme.title_px,
+            "top-left",
+        )
+    )
     return PagePicture(lines, (), tuple(texts))
 
 
@@ -424,9 +461,13 @@ def legend_picture(entries: Sequence[LegendEntry], box: Rect, theme: Theme) -> P
             break
         color = color_rgb(e.style.color, e.style.opacity)
         if e.dot is not None:
-            dots.append(PageDots(np.array([[x + 0.5 * swatch, z]]), color[None, :], 0.75 * theme.text_px, e.dot, EVENTS))
+            dots.append(
+                PageDots(np.array([[x + 0.5 * swatch, z]]), color[None, :], 0.75 * theme.text_px, e.dot, EVENTS)
+            )
         elif e.style.width <= 0:  # a filled area
-            dots.append(PageDots(np.array([[x + 0.5 * swatch, z]]), color[None, :], 0.8 * theme.text_px, "square", FILL))
+            dots.append(
+                PageDots(np.array([[x + 0.5 * swatch, z]]), color[None, :], 0.8 * theme.text_px, "square", FILL)
+            )
         else:
             width = line_width(e.style, theme)
             a, b = dashed(np.array([x, x + swatch]), np.array([z, z]), DASHES[e.style.dash], width / 2.0)

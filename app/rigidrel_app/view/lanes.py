@@ -290,10 +290,12 @@ def lane_picture(
     origin = 0.5 * (track.x0 + track.x1) - win.center * scale
     unit = float(rest.max())
     k = unit * scale  # px per lane unit
-    geo = LaneGeometry(unit, rod_height=place.rod_px / k, clock_radius=place.clock_px / k, wall_height=place.wall_px / k)
+    geo = LaneGeometry(
+        unit, rod_height=place.rod_px / k, clock_radius=place.clock_px / k, wall_height=place.wall_px / k
+    )
     st = lane_state(scene, frame, now, geo, title, 0.0, True, snap)
 
-    def px(x: FloatArray) -> FloatArray:
+    def px(x: FloatArray | float) -> FloatArray:
         return origin + k * np.asarray(x, dtype=float)
 
     boxes: list[Box] = []
@@ -311,7 +313,9 @@ def lane_picture(
     keep = (dx >= track.x0) & (dx <= track.x1)
     dials = np.stack([dx[keep], place.rod_z + k * st.dials[keep, 1]], axis=-1)
     step = ruler_step(win.width)
-    marks = np.arange(np.ceil((win.center - 0.5 * win.width) / step), np.floor((win.center + 0.5 * win.width) / step) + 1)
+    marks = np.arange(
+        np.ceil((win.center - 0.5 * win.width) / step), np.floor((win.center + 0.5 * win.width) / step) + 1
+    )
     mx = origin + marks * step * scale
     mx = mx[(mx >= track.x0) & (mx <= track.x1)]
     zr, tick = place.ruler_z, place.tick_px

@@ -15,6 +15,7 @@ import numpy as np
 import rigidrel_core as rr
 
 from . import camera as cam
+from .canvas import LegendEntry, legend_entries
 from .diagrams import (
     View,
     equal_scale_ranges,
@@ -26,7 +27,6 @@ from .diagrams import (
     overlay_label,
     window_x_range,
 )
-from .canvas import LegendEntry, legend_entries
 from .lanes import (
     LaneGeometry,
     LanePicture,
