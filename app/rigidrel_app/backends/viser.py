@@ -370,12 +370,15 @@ class _LineNodes:
         self._prefix = prefix
         self._nodes: dict[tuple[float, int], viser.LineSegmentsHandle] = {}
         self._counts: dict[tuple[float, int], int] = {}
+        self.points = np.zeros((0, 2, 3), dtype=np.float32)
+        """Every segment shown, ``(n, 2, 3)`` world (page) coordinates, as last sent."""
 
     def show(self, lines: Sequence[PageLines]) -> None:
         groups: dict[tuple[float, int], list[PageLines]] = {}
         for ln in lines:
             if len(ln.points):
                 groups.setdefault((ln.width, ln.layer), []).append(ln)
+        shown: list[np.ndarray] = []
         for key, members in groups.items():
             width, layer = key
             pts2 = np.concatenate([m.points for m in members])
@@ -384,6 +387,7 @@ class _LineNodes:
             pts[:, :, 0] = pts2[:, :, 0]
             pts[:, :, 1] = -_LAYER_Y * layer
             pts[:, :, 2] = pts2[:, :, 1]
+            shown.append(pts)
             colors = np.repeat(_to_linear(cols)[:, None, :], 2, axis=1)
             node = self._nodes.get(key)
             if node is None:
@@ -401,9 +405,7 @@ class _LineNodes:
             if key not in groups and self._counts.get(key, 0) != 0:
                 node.visible = False
                 self._counts[key] = 0
-
-    def segment_count(self) -> int:
-        return sum(self._counts.values())
+        self.points = np.concatenate(shown) if shown else np.zeros((0, 2, 3), dtype=np.float32)
 
 
 class _DotNodes:
@@ -496,6 +498,10 @@ class PageRenderer:
         self._dials: viser.BatchedMeshHandle | None = None
         self._dial_key: tuple[int, float] | None = None
         self.layout: CanvasLayout | None = None
+
+    def moving_points(self) -> np.ndarray:
+        """The diagrams' moving segments (now-lines) as last sent, ``(n, 2, 3)`` page coordinates."""
+        return self._moving_lines.points
 
     def pose(self, layout: CanvasLayout) -> cam.CameraPose:
         return cam.fit_page(layout.width, layout.height)

@@ -17,6 +17,7 @@ import rigidrel_core as rr
 
 from ..backends.viser import PageRenderer
 from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
+from ..view.lanes import LanePicture
 from ..view.layout import LEGEND_ROWS, NORMAL, PRESENTER, CanvasLayout, canvas_layout
 from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, build_drawing, nice_step
 from ..view.scene_view import readout_markdown as readout
@@ -47,7 +48,12 @@ class Session:
         self.presenter = False
         """Presenter mode (key F): the control panel minimized, the projector theme."""
         self.layout: CanvasLayout | None = None
-        self._frames: tuple[ChartFrame, ...] = ()
+        self.chart_frames: tuple[ChartFrame, ...] = ()
+        """Each diagram's data -> page px (the plot areas of this layout)."""
+        self.static_picture = PagePicture()
+        """What the diagrams show that does not move (as last sent)."""
+        self.renderer_lanes: list[LanePicture] = []
+        """The lanes as last drawn."""
         self._last_plot = 0.0
         resolved = resolve_settings(self.settings)
         if isinstance(resolved, str):  # a start state given from outside that makes no scene
@@ -218,7 +224,7 @@ class Session:
             frames.append(f)
             picture += p
         picture += legend_picture(legend, layout.legend, layout.theme)
-        self._frames = tuple(frames)
+        self.chart_frames, self.static_picture = tuple(frames), picture
         self.renderer.set_static(layout, picture, RULER_NAMES)
         if refit:
             self.fit_camera()
@@ -245,8 +251,9 @@ class Session:
         wall = time.monotonic()
         lanes = d.lane_pictures(now, layout)
         moving = PagePicture()
-        for f, items in zip(self._frames, d.moving_items(now, [lane.ends for lane in lanes]), strict=True):
+        for f, items in zip(self.chart_frames, d.moving_items(now, [lane.ends for lane in lanes]), strict=True):
             moving += items_picture(items, f, layout.theme, MOVING)
+        self.renderer_lanes = lanes
         with self.client.atomic():
             self.renderer.update(lanes, moving)
             if force_plots or not self.playback.playing or wall - self._last_plot >= 1.0 / PLOT_HZ:

@@ -217,7 +217,11 @@ def build_drawing(
         frame_chart=frame_chart,
         length_chart=length_chart,
         views=(lab_view, frame_view),
-        steady_widths=(steady_width(scene, lab, window), steady_width(scene, frame, window)),
+        # each lane's scale from its own frame's window: the lab lane does not change with the frame
+        steady_widths=(
+            steady_width(scene, lab, _round_outward(a0, a1)),
+            steady_width(scene, frame, _round_outward(b0, b1)),
+        ),
     )
 
 
