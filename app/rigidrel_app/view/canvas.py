@@ -8,6 +8,7 @@ are laid out here. Page coordinates are CSS pixels, ``z`` up (:mod:`.layout`). P
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Iterable, Sequence
@@ -80,6 +81,11 @@ class PagePicture:
 
 
 def color_rgb(color: str, opacity: float = 1.0, background: tuple[int, int, int] = (255, 255, 255)) -> np.ndarray:
+    return _color_rgb(color, opacity, background).copy()
+
+
+@functools.lru_cache(maxsize=512)
+def _color_rgb(color: str, opacity: float, background: tuple[int, int, int]) -> np.ndarray:
     """``"#RRGGBB"`` or ``"rgba(r,g,b,a)"`` at ``opacity``, blended over ``background``: an opaque
     colour (the canvas draws no transparency, so overlaps never darken)."""
     m = re.fullmatch(r"rgba?\(([^)]*)\)", color.replace(" ", ""))
@@ -131,6 +137,11 @@ def chart_frame(chart: Chart, plot: Rect) -> ChartFrame:
 
 def clip_segments(p0: FloatArray, p1: FloatArray, r: Rect) -> tuple[FloatArray, FloatArray]:
     """Segments ``p0 -> p1`` (``(n, 2)`` px) clipped to ``r`` (Liang-Barsky); those outside dropped."""
+    if len(p0) <= 4:  # the moving lines, every frame: plain floats beat numpy's per-call cost
+        kept = [c for c in (_clip_one(a, b, r) for a, b in zip(p0.tolist(), p1.tolist(), strict=True)) if c is not None]
+        a = np.array([c[0] for c in kept], dtype=float).reshape(-1, 2)
+        b = np.array([c[1] for c in kept], dtype=float).reshape(-1, 2)
+        return a, b
     d = p1 - p0
     t0 = np.zeros(len(p0))
     t1 = np.ones(len(p0))
@@ -152,15 +163,37 @@ def clip_segments(p0: FloatArray, p1: FloatArray, r: Rect) -> tuple[FloatArray, 
     return a[keep], b[keep]
 
 
-def dashed(x: FloatArray, z: FloatArray, pattern: tuple[float, ...], scale: float) -> tuple[FloatArray, FloatArray]:
-    """A polyline (px) as segments ``(n, 2)`` -> ``(n, 2)``: all of it if ``pattern`` is empty, else
-    cut into pieces of at most 1.5 px whose middles fall on the pattern's "on" parts (scaled by
-    ``scale``, the line width over 2)."""
+def _clip_one(a: list[float], b: list[float], r: Rect) -> tuple[list[float], list[float]] | None:
+    """One segment clipped to ``r`` (Liang-Barsky), or None if it misses."""
+    dx, dz = b[0] - a[0], b[1] - a[1]
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, a[0] - r.x0), (dx, r.x1 - a[0]), (-dz, a[1] - r.z0), (dz, r.z1 - a[1])):
+        if p == 0.0:
+            if q < 0.0:
+                return None
+            continue
+        t = q / p
+        if p < 0.0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+    if t0 > t1:
+        return None
+    return [a[0] + t0 * dx, a[1] + t0 * dz], [a[0] + t1 * dx, a[1] + t1 * dz]
+
+
+def polyline_segments(x: FloatArray, z: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """A polyline (px) as its segments ``(n, 2)`` -> ``(n, 2)``, gaps (NaN) left out."""
     pts = np.stack([x, z], axis=-1)
     finite: npt.NDArray[np.bool_] = np.asarray(np.isfinite(pts).all(axis=-1))
-    a, b = pts[:-1], pts[1:]
     ok = finite[:-1] & finite[1:]
-    a, b = a[ok], b[ok]
+    return pts[:-1][ok], pts[1:][ok]
+
+
+def dash_segments(a: FloatArray, b: FloatArray, pattern: tuple[float, ...], scale: float) -> tuple[FloatArray, FloatArray]:
+    """Segments ``a -> b`` (in order along a line) as they are drawn with a dash ``pattern``: all of
+    them if it is empty, else cut into pieces of at most 1.5 px whose middles fall on the pattern's
+    "on" parts (its lengths scaled by ``scale``, the line width over 2), measured along the line."""
     if not pattern or len(a) == 0:
         return a, b
     seg_len = np.hypot(*(b - a).T)
@@ -172,14 +205,26 @@ def dashed(x: FloatArray, z: FloatArray, pattern: tuple[float, ...], scale: floa
     start = np.concatenate([[0.0], np.cumsum(seg_len)[:-1]])
     mid = start[idx] + 0.5 * (f0 + f1) * seg_len[idx]
     pat = np.asarray(pattern) * scale
-    period = pat.sum()
-    phase = np.mod(mid, period)
-    bounds = np.cumsum(pat)
-    on = (np.searchsorted(bounds, phase, side="right") % 2) == 0
+    phase = np.mod(mid, pat.sum())
+    on = (np.searchsorted(np.cumsum(pat), phase, side="right") % 2) == 0
     d = (b - a)[idx]
     p0 = a[idx] + f0[:, None] * d
     p1 = a[idx] + f1[:, None] * d
-    return p0[on], p1[on]
+    # one segment per dash (per dash and original segment): consecutive "on" pieces joined
+    k_on = np.flatnonzero(on)
+    if k_on.size == 0:
+        return p0[:0], p1[:0]
+    new_run = np.ones(k_on.size, dtype=bool)
+    new_run[1:] = (np.diff(k_on) != 1) | (idx[k_on[1:]] != idx[k_on[:-1]])
+    starts = k_on[new_run]
+    ends = k_on[np.append(new_run[1:], True)]
+    return p0[starts], p1[ends]
+
+
+def dashed(x: FloatArray, z: FloatArray, pattern: tuple[float, ...], scale: float) -> tuple[FloatArray, FloatArray]:
+    """A polyline (px) as the segments it is drawn with in a dash ``pattern`` (:func:`dash_segments`)."""
+    a, b = polyline_segments(x, z)
+    return dash_segments(a, b, pattern, scale)
 
 
 def fill_grid(x: FloatArray, z: FloatArray, r: Rect, step: float = FILL_PX) -> FloatArray:
@@ -240,9 +285,11 @@ def line_width(style: Style, theme: Theme) -> float:
 
 
 def _stroke(x: FloatArray, z: FloatArray, style: Style, f: ChartFrame, theme: Theme, layer: int) -> PageLines | None:
+    """Clipped to the plot first, then dashed: a now-line runs far beyond its plot."""
     width = line_width(style, theme)
-    a, b = dashed(x, z, DASHES[style.dash], width / 2.0)
+    a, b = polyline_segments(x, z)
     a, b = clip_segments(a, b, f.plot)
+    a, b = dash_segments(a, b, DASHES[style.dash], width / 2.0)
     if len(a) == 0:
         return None
     return _lines(a, b, color_rgb(style.color, style.opacity), width, layer)
