@@ -18,7 +18,6 @@ from rigidrel_app.backends.plotly import SplicedFigure, decode_array
 from rigidrel_app.backends.viser import line_rgb
 from rigidrel_app.live.playback import PLAY_SECONDS, Playback
 from rigidrel_app.view import camera as cam
-from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from rigidrel_app.view.canvas import (
     CURVES,
     DASHES,
@@ -30,6 +29,7 @@ from rigidrel_app.view.canvas import (
     items_picture,
     page_text,
 )
+from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from rigidrel_app.view.lanes import ROD_SHARE, TICK_FRACTIONS, lane_geometry, lane_state
 from rigidrel_app.view.layout import NORMAL, PRESENTER, Rect, canvas_layout
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines

@@ -6,8 +6,9 @@ slider-to-redraw time. A script, not a test (numbers vary with the machine's loa
 * bytes: websocket payload the page receives from connecting until the server has sent its first
   complete drawing and 1 s has passed quietly.
 * fps: ``requestAnimationFrame`` ticks in which the page's JavaScript handled at least one new
-  websocket message (viser's websocket worker hands them over) (a new picture to show), per second, over ``--seconds`` of playback of the
-  paper's Fig. 3, at the given viewport (the diagrams visible).
+  websocket message (a new picture to show; viser's websocket worker hands them over), per
+  second, over ``--seconds`` of playback of the paper's Fig. 3, at the given viewport (the
+  diagrams visible). Also the page's animation frames per second and messages per second.
 * slider-to-redraw: from the Enter that submits V = 0.85 in its box to the last websocket message
   of the redraw the page handles (messages closer than 60 ms counted as one burst); median of 5.
 """

@@ -190,7 +190,9 @@ def polyline_segments(x: FloatArray, z: FloatArray) -> tuple[FloatArray, FloatAr
     return pts[:-1][ok], pts[1:][ok]
 
 
-def dash_segments(a: FloatArray, b: FloatArray, pattern: tuple[float, ...], scale: float) -> tuple[FloatArray, FloatArray]:
+def dash_segments(
+    a: FloatArray, b: FloatArray, pattern: tuple[float, ...], scale: float
+) -> tuple[FloatArray, FloatArray]:
     """Segments ``a -> b`` (in order along a line) as they are drawn with a dash ``pattern``: all of
     them if it is empty, else cut into pieces of at most 1.5 px whose middles fall on the pattern's
     "on" parts (its lengths scaled by ``scale``, the line width over 2), measured along the line."""
