@@ -151,8 +151,7 @@ def clip_segments(p0: FloatArray, p1: FloatArray, r: Rect) -> tuple[FloatArray, 
             pp = sign * d[:, axis]
             parallel = pp == 0.0
             keep = keep & ~(parallel & (q_p < 0))
-            with np.errstate(divide="ignore", invalid="ignore"):
-                t = np.where(parallel, 0.0, q_p / np.where(parallel, 1.0, pp))
+            t = q_p / np.where(parallel, 1.0, pp)
             entering = (pp < 0) & ~parallel
             leaving = (pp > 0) & ~parallel
             t0 = np.where(entering, np.maximum(t0, t), t0)
@@ -254,26 +253,24 @@ def scan_fill(x: FloatArray, z: FloatArray, r: Rect, step: float = FILL_PX) -> t
         return empty, empty
     lo, hi = max(float(zs.min()), r.z0), min(float(zs.max()), r.z1)
     rows = np.arange(math.ceil(lo / step) * step, hi, step) if hi > lo else np.zeros(0)
-    a0, a1 = xs[:-1], xs[1:]
-    b0, b1 = zs[:-1], zs[1:]
-    out0: list[FloatArray] = []
-    out1: list[FloatArray] = []
-    for c in rows:
-        cross = ((b0 <= c) & (b1 > c)) | ((b1 <= c) & (b0 > c))
-        if not cross.any():
-            continue
-        t = (c - b0[cross]) / (b1[cross] - b0[cross])
-        xi = np.sort(a0[cross] + t * (a1[cross] - a0[cross]))
-        left, right = np.clip(xi[0::2], r.x0, r.x1), np.clip(xi[1::2], r.x0, r.x1)
-        n = min(left.size, right.size)
-        left, right = left[:n], right[:n]
-        wide = right > left
-        out0.append(np.stack([left[wide], np.full(int(wide.sum()), c)], -1))
-        out1.append(np.stack([right[wide], np.full(int(wide.sum()), c)], -1))
-    if not out0:
+    if rows.size == 0:
         empty = np.zeros((0, 2))
         return empty, empty
-    return np.concatenate(out0), np.concatenate(out1)
+    a0, a1 = xs[:-1], xs[1:]
+    b0, b1 = zs[:-1], zs[1:]
+    c = rows[:, None]  # every row against every edge at once: (rows, edges)
+    cross = ((b0 <= c) & (b1 > c)) | ((b1 <= c) & (b0 > c))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (c - b0) / (b1 - b0)
+    xi = np.where(cross, a0 + t * (a1 - a0), np.inf)
+    xi.sort(axis=1)
+    n = int(cross.sum(axis=1).max(initial=0)) // 2 * 2
+    left, right = xi[:, 0:n:2], xi[:, 1:n:2]
+    ok = np.isfinite(left) & np.isfinite(right)
+    left, right = np.clip(left, r.x0, r.x1), np.clip(right, r.x0, r.x1)
+    ok &= right > left
+    zz = np.broadcast_to(c, left.shape)
+    return np.stack([left[ok], zz[ok]], -1), np.stack([right[ok], zz[ok]], -1)
 
 
 def _lines(p0: FloatArray, p1: FloatArray, color: np.ndarray, width: float, layer: int) -> PageLines:
