@@ -429,8 +429,9 @@ def test_a_play_without_loop_stops_exactly_at_the_end(tab: AppPage) -> None:
     wait_until(lambda: s.playback.playing)
     wait_until(lambda: not s.playback.playing, timeout=30)
     end = s.playback.window[1]
-    assert s.playback.now == end
-    assert s.renderer.titles.shown[0][0].startswith(f"lab frame:   t = {end:+.3f}")
+    with s.lock:  # the tick that stopped playback has drawn its instant
+        assert s.playback.now == end
+        assert s.renderer.titles.shown[0][0].startswith(f"lab frame:   t = {end:+.3f}")
     wait_until(lambda: tab.session.controls.time.slider.value == pytest.approx(end, abs=1e-6))
 
 
