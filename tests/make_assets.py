@@ -2,15 +2,15 @@
 
     python -m tests.make_assets
 
-Writes assets/app.png (the app in headless Chromium: Fig. 3's collision seen from the
-barycentric frame, paused mid-collision), assets/figures/fig1-4.{svg,png} (the paper's
-figures), assets/figures/{bell-spaceships,pole-barn}.{svg,png,txt} (the paradoxes) and
+Writes assets/app.png and assets/app-presenter.png (the app in headless Chromium at 1280x720,
+with its control panel and in presenter mode: Fig. 3's collision seen from the barycentric
+frame, paused mid-collision), assets/figures/fig1-4.{svg,png} (the paper's figures),
+assets/figures/{bell-spaceships,pole-barn}.{svg,png,txt} (the paradoxes) and
 assets/rod-collision-lanes.gif (the lanes of that collision).
 """
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
 import rigidrel_core as rr
@@ -21,28 +21,49 @@ from rigidrel_app.export.recording import playback_times
 from rigidrel_app.live.server import App
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, presets
-from tests.browser.conftest import CHROMIUM, VIEWPORT, launch_chromium
+from tests.browser.conftest import CHROMIUM, launch_chromium
 from tests.viser_client import wait_until
 
 ASSETS = Path(__file__).resolve().parents[1] / "assets"
 
 
-def app_screenshot(path: Path) -> None:
+#: The README's screenshots: a projector's resolution.
+SCREENSHOT = {"width": 1280, "height": 720}
+
+
+def app_screenshots(normal: Path, presenter: Path) -> None:
+    """The app as a lecturer opens it, then in presenter mode (key F), each once its canvas has
+    been laid out for its size and has stopped changing (its labels drawn)."""
     from playwright.sync_api import sync_playwright
 
     with App(port=0) as app, sync_playwright() as p:
         browser = launch_chromium(p)
-        page = browser.new_page(viewport=VIEWPORT)
+        page = browser.new_page(viewport=SCREENSHOT)  # type: ignore[arg-type]
         page.goto(app.url)
         page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
-        wait_until(lambda: app.sessions, timeout=60)
-        session = next(iter(app.sessions.values()))
-        session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)  # in its default, barycentric frame
-        session.seek(0.15)
+        session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
+        wait_until(lambda: session.drawn is not None, timeout=60)
         for button in page.locator(".mantine-Notification-root button").all():
             button.click()  # the headless browser's "software WebGL" notice
-        time.sleep(2.5)
-        page.screenshot(path=str(path))
+        with session.lock:
+            session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)  # its default, barycentric frame
+            session.seek(0.15)
+
+        def settled(path: Path, width: int) -> None:
+            wait_until(lambda: session.layout is not None and session.layout.width >= width, timeout=60)
+            shots: list[bytes] = [b""]
+
+            def still() -> bool:  # the same PNG bytes twice: the canvas has stopped changing
+                shots.append(page.screenshot(type="png"))
+                return shots[-1] == shots[-2]
+
+            wait_until(still, timeout=120, interval=1.5)
+            page.screenshot(path=str(path))
+
+        settled(normal, 900)
+        page.evaluate("() => document.activeElement && document.activeElement.blur()")
+        page.keyboard.press("f")
+        settled(presenter, 1200)
         browser.close()
 
 
@@ -54,7 +75,7 @@ def lanes_gif(path: Path) -> None:
 
 def main() -> None:
     ASSETS.mkdir(exist_ok=True)
-    app_screenshot(ASSETS / "app.png")
+    app_screenshots(ASSETS / "app.png", ASSETS / "app-presenter.png")
     write_figures(ASSETS / "figures")
     write_paradox_figures(ASSETS / "figures")
     lanes_gif(ASSETS / "rod-collision-lanes.gif")

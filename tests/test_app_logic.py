@@ -15,17 +15,31 @@ import pytest
 
 import rigidrel_core as rr
 from rigidrel_app.backends.plotly import SplicedFigure, decode_array
+from rigidrel_app.backends.viser import line_rgb
 from rigidrel_app.live.playback import PLAY_SECONDS, Playback
 from rigidrel_app.view import camera as cam
+from rigidrel_app.view.canvas import (
+    CURVES,
+    DASHES,
+    MOVING,
+    chart_picture,
+    clip_segments,
+    dashed,
+    fill_grid,
+    items_picture,
+    page_text,
+)
 from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
-from rigidrel_app.view.lanes import TICK_FRACTIONS, lane_geometry, lane_state
+from rigidrel_app.view.lanes import ROD_SHARE, TICK_FRACTIONS, lane_geometry, lane_state
+from rigidrel_app.view.layout import NORMAL, PRESENTER, Rect, canvas_layout
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
 from rigidrel_app.view.scene_view import (
     CLOCK_RULE,
+    NOW_MARKER,
+    NOW_MARKER_NAME,
     RULER_NAMES,
     build_drawing,
     camera_pose,
-    lane_states,
     readout_markdown,
 )
 from rigidrel_app.view.state import (
@@ -39,7 +53,21 @@ from rigidrel_app.view.state import (
     resolve,
     settings_for,
 )
-from rigidrel_app.view.vocabulary import Chart, Label, Points, Polyline, Style, event_label, markdown_literal
+from rigidrel_app.view.vocabulary import (
+    FRAME_COLOR,
+    INK,
+    LIGHT_COLOR,
+    ROD_COLORS,
+    WALL_COLOR,
+    Chart,
+    Label,
+    Points,
+    Polyline,
+    Style,
+    event_label,
+    markdown_literal,
+    rgb,
+)
 
 #: Every registered scene at its defaults (the app offers each one).
 ALL_SETTINGS = [Settings(kind) for kind in rr.scene_descriptions()]
@@ -329,16 +357,174 @@ def test_playback_markers_come_from_the_core() -> None:
     assert isinstance(r, Resolved)
     d = build_drawing(r)
     now = 0.4
-    states = lane_states(d, now)
-    lab_items, frame_items, length_items = d.moving_items(now, states)
-    # the rods' ends on each diagram, and their equal-time lengths on the length plot
-    for items, state in ((lab_items, states[0]), (frame_items, states[1])):
-        ends = items[-1]
-        assert isinstance(ends, Points)
-        np.testing.assert_array_equal(ends.x, state.ends.ravel())
-    lengths = length_items[-1]
-    assert isinstance(lengths, Points)
-    expected = np.concatenate([r.scene.lengths(now), r.scene.lengths(now, r.frame)])
-    np.testing.assert_array_equal(lengths.y, expected)
-    text = SplicedFigure(d.lab_chart).with_dynamic(lab_items)
-    np.testing.assert_array_equal(decode_array(json.loads(text)["data"][-1]["x"]), states[0].ends.ravel())
+    lanes = d.lane_pictures(now, canvas_layout(936, 720))
+    lab_items, frame_items, length_items = d.moving_items(now, [lane.ends for lane in lanes])
+    # the rods' ends on each diagram (one diamond pair per rod, in its colour), and their equal-time
+    # lengths on the length plot
+    for items, lane, frame in ((lab_items, lanes[0], rr.LAB), (frame_items, lanes[1], r.frame)):
+        markers = [it for it in items if isinstance(it, Points)]
+        assert [m.symbol for m in markers] == [NOW_MARKER] * r.scene.n_rods
+        assert [m.style.color for m in markers] == list(ROD_COLORS[: r.scene.n_rods])
+        np.testing.assert_array_equal(np.concatenate([m.x for m in markers]), lane.ends.ravel())
+        x, _ = r.scene.snapshot(now, frame, fractions=TICK_FRACTIONS)
+        np.testing.assert_array_equal(lane.ends, x[:, [0, -1]])
+    lengths = [it for it in length_items if isinstance(it, Points)]
+    got = np.stack([m.y for m in lengths])  # (rods, frames)
+    expected = np.stack([r.scene.lengths(now), r.scene.lengths(now, r.frame)]).T
+    np.testing.assert_array_equal(got, expected)
+    # no marker of the rods now looks like the events' black dots
+    events = [it for it in d.lab_chart.items if isinstance(it, Points) and it.style.name == "events"]
+    assert events and all((m.symbol, m.style.color) != (events[0].symbol, events[0].style.color) for m in markers)
+    names = {e.name for e in d.legend()}
+    assert NOW_MARKER_NAME in names and "events" in names
+    assert {n for n in names if n.startswith("now")} == {"now: t", "now: t'"}  # no number in the legend
+
+
+#: Settings at the sliders' extremes: every lane must keep its rods in view and large enough.
+EXTREMES = [
+    Settings.of("constant-acceleration", v=0.99),
+    Settings.of("constant-acceleration", v=0.99, a_front=0.01),
+    Settings.of("wall-collision", v=0.99),
+    Settings("constant-acceleration", (), CUSTOM_FRAME, 0.99),
+    Settings("constant-acceleration", (), CUSTOM_FRAME, -0.99),
+    Settings.of("rod-collision", m2=0.01),
+    Settings.of("rod-collision", m2=100.0),
+    Settings.of("rod-collision", l2=0.1),
+    Settings.of("velocity-change", v_initial=-0.99, v_final=0.99),
+    *ALL_SETTINGS,
+]
+
+
+@pytest.mark.parametrize("settings", EXTREMES, ids=lambda s: f"{s.scene}-{dict(s.values)}-{s.beta}")
+def test_lanes_keep_their_rods_in_view_and_large(settings: Settings) -> None:
+    """At every instant of playback, in both lanes: every rod inside the lane's track, at least
+    ROD_SHARE of the track (times its rest length over the largest) or 12 px, the ruler's numbers
+    true (page x = origin + x * scale), and the dials inside the track."""
+    r = resolve(settings)
+    assert isinstance(r, Resolved)
+    layout = canvas_layout(936, 720)
+    d = build_drawing(r, areas=layout.chart_areas)
+    rest = np.array([rod.motion.length for rod in r.scene.rods])
+    for now in np.linspace(d.window[0], d.window[1], 61):
+        for lane, place, frame in zip(
+            d.lane_pictures(float(now), layout), layout.lanes, (rr.LAB, r.frame), strict=True
+        ):
+            track = place.track
+            x, _ = r.scene.snapshot(float(now), frame, fractions=TICK_FRACTIONS)
+            px = lane.origin_px + x[:, [0, -1]] * lane.scale
+            assert px.min() >= track.x0 - 1e-6 and px.max() <= track.x1 + 1e-6, (now, px)
+            shares = (px[:, 1] - px[:, 0]) / track.width
+            need = np.minimum(ROD_SHARE * rest / rest.max(), 12.0 / track.width)
+            assert np.all(shares >= need * (1 - 1e-9)), (now, shares)
+            rods = lane.boxes[: r.scene.n_rods]
+            np.testing.assert_allclose([[b.x0, b.x1] for b in rods], px, rtol=0, atol=1e-6)
+            assert np.all((lane.dials[:, 0] >= track.x0) & (lane.dials[:, 0] <= track.x1))
+
+
+def test_a_lane_keeps_one_scale_while_no_rod_is_too_short() -> None:
+    """Lorentz contraction shows: at V = 0.6 the lane's scale never changes, so the rod gets shorter
+    on screen; at V = 0.99 it zooms only once the rod is shorter than ROD_SHARE of the lane."""
+    r = resolve(Settings.of("constant-acceleration", v=0.6))
+    assert isinstance(r, Resolved)
+    layout = canvas_layout(936, 720)
+    d = build_drawing(r)
+    times = np.linspace(d.window[0], d.window[1], 41)
+    scales = {round(d.lane_pictures(float(t), layout)[0].scale, 9) for t in times}
+    assert len(scales) == 1
+    lengths = [np.diff(d.lane_pictures(float(t), layout)[0].ends[0])[0] for t in times]
+    assert max(lengths) / min(lengths) == pytest.approx(1.25, rel=1e-3)  # gamma(0.6)
+
+
+def test_the_canvas_layout_keeps_text_large_and_regions_apart() -> None:
+    for w, h, theme in ((936, 720, NORMAL), (1240, 720, PRESENTER), (1576, 1080, NORMAL), (1920, 1080, PRESENTER)):
+        layout = canvas_layout(w, h, theme)
+        assert theme.text_px >= 14.0 and theme.title_px >= theme.text_px and theme.line_px >= 2.0
+        lab, frame = layout.lanes
+        assert lab.band.z0 > frame.band.z1  # the lanes do not overlap
+        top_of_charts = max(c.outer.z1 for c in layout.charts)
+        assert frame.band.z0 > top_of_charts and min(c.outer.z0 for c in layout.charts) > layout.legend.z1
+        for lane in layout.lanes:  # title above the dials above the rod above the ruler, the wall below the title
+            assert lane.title_z - 2.4 * theme.title_px > lane.dial_z[1] + lane.clock_px
+            assert lane.dial_z[0] - lane.clock_px > lane.rod_z + 0.5 * lane.rod_px
+            assert lane.rod_z - lane.rod_px / 2 - lane.wall_px + lane.wall_px <= lane.dial_z[1] + lane.clock_px + 1e-9
+            assert lane.ruler_z < lane.rod_z - 0.5 * lane.rod_px
+            assert lane.ruler_z - lane.tick_px - 1.3 * theme.text_px >= lane.band.z0 - 1e-9
+        for a, b in zip(layout.charts, layout.charts[1:]):
+            assert a.outer.x1 < b.outer.x0
+        assert all(c.plot.width > 150 and c.plot.height > 120 for c in layout.charts), (w, h, theme.name)
+
+
+@pytest.mark.parametrize("settings", ALL_SETTINGS, ids=scene_id)
+def test_chart_pictures_stay_in_their_plots_at_light_speed_45_degrees(settings: Settings) -> None:
+    r = resolve(settings)
+    assert isinstance(r, Resolved)
+    layout = canvas_layout(936, 720)
+    d = build_drawing(r, areas=layout.chart_areas)
+    for chart, place in zip(d.charts, layout.charts, strict=True):
+        f, picture = chart_picture(chart, place, NORMAL)
+        p = f.plot
+        curves = [ln for ln in picture.lines if ln.layer >= CURVES]
+        assert curves
+        for ln in curves:
+            assert ln.width >= NORMAL.line_px
+            xs, zs = ln.points[..., 0], ln.points[..., 1]
+            assert np.all((xs >= p.x0 - 1e-6) & (xs <= p.x1 + 1e-6) & (zs >= p.z0 - 1e-6) & (zs <= p.z1 + 1e-6))
+        assert all(t.px >= NORMAL.text_px for t in picture.texts)
+        if chart.equal_aspect:  # one unit of x as long as one unit of t
+            per_x = p.width / (f.x_range[1] - f.x_range[0])
+            per_t = p.height / (f.y_range[1] - f.y_range[0])
+            assert per_x == pytest.approx(per_t, rel=1e-9)
+            assert f.x_range[0] <= chart.x_range[0] and f.y_range[0] <= chart.y_range[0]
+
+
+def test_the_now_lines_sit_at_the_lanes_time() -> None:
+    """The moving parts drawn on the canvas put each diagram's now-line at the lanes' t (one instant)."""
+    r = resolve(presets()["Fig. 3: collision, M2 = 2 M1"])
+    assert isinstance(r, Resolved)
+    layout = canvas_layout(936, 720)
+    d = build_drawing(r, areas=layout.chart_areas)
+    now = 0.37
+    lanes = d.lane_pictures(now, layout)
+    assert lanes[0].title.startswith(f"lab frame:   t = {now:+.3f}")
+    for items, chart, place in zip(d.moving_items(now, [lane.ends for lane in lanes]), d.charts, layout.charts):
+        f, _ = chart_picture(chart, place, NORMAL)
+        moving = items_picture(items, f, NORMAL, MOVING)
+        _, z_now = f.px(np.array([0.0]), np.array([now]))
+        x_now, _ = f.px(np.array([now]), np.array([0.0]))
+        first = moving.lines[0].points
+        if chart.equal_aspect:  # horizontal: t = now
+            np.testing.assert_allclose(first[..., 1], z_now[0], atol=1e-9)
+        else:  # the length plot's vertical line at t = now
+            np.testing.assert_allclose(first[..., 0], x_now[0], atol=1e-9)
+
+
+def test_clipping_dashes_and_fills() -> None:
+    box = Rect(0.0, 0.0, 10.0, 10.0)
+    a, b = clip_segments(
+        np.array([[-5.0, 5.0], [20.0, 20.0], [2.0, 2.0]]), np.array([[15.0, 5.0], [30.0, 30.0], [3.0, 3.0]]), box
+    )
+    np.testing.assert_allclose(a, [[0.0, 5.0], [2.0, 2.0]])
+    np.testing.assert_allclose(b, [[10.0, 5.0], [3.0, 3.0]])
+    a, b = dashed(np.array([0.0, 100.0]), np.array([0.0, 0.0]), DASHES["dash"], 1.0)
+    on = float(np.sum(b[:, 0] - a[:, 0]))
+    assert on == pytest.approx(100.0 * 9.0 / 15.0, abs=3.0)
+    square = fill_grid(np.array([0.0, 40.0, 40.0, 0.0]), np.array([0.0, 0.0, 40.0, 40.0]), Rect(0.0, 0.0, 20.0, 100.0))
+    assert square[:, 0].max() < 20.0 and square[:, 1].max() < 40.0 and len(square) == pytest.approx(50, abs=6)
+    assert page_text("T<sub>1</sub>'") == "T₁'" and page_text("<b>T<sub>B</sub></b>") == "T_B"
+
+
+def test_lines_show_their_colour_through_the_tone_mapping() -> None:
+    """viser's lines are tone-mapped (ACES filmic); :func:`line_rgb` undoes it for every palette colour
+    (within 25 of 255: the gold's and the orange's blue would need a negative value; the rest within 2)."""
+    IN = np.array([[0.59719, 0.35458, 0.04823], [0.07600, 0.90834, 0.01566], [0.02840, 0.13383, 0.83777]])
+    OUT = np.array([[1.60475, -0.53108, -0.07367], [-0.10208, 1.10813, -0.00605], [-0.00327, -0.07276, 1.07602]])
+
+    def shown(value: tuple[int, int, int]) -> np.ndarray:
+        x = np.asarray(value) / 255.0 / 0.6
+        v = IN @ x
+        y = np.clip(OUT @ ((v * (v + 0.0245786) - 0.000090537) / (v * (0.983729 * v + 0.4329510) + 0.238081)), 0, 1)
+        return 255.0 * np.where(y <= 0.0031308, 12.92 * y, 1.055 * y ** (1 / 2.4) - 0.055)
+
+    for color in (*ROD_COLORS, FRAME_COLOR, LIGHT_COLOR, WALL_COLOR, INK, "#000000"):
+        target = np.array(rgb(color))
+        assert np.abs(shown(line_rgb(tuple(int(c) for c in target))) - target).max() <= 25.0, color  # type: ignore[arg-type]

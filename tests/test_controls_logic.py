@@ -205,9 +205,10 @@ def test_each_action_has_one_key_viser_knows() -> None:
         "pageup": Action.PREVIOUS_FIGURE,  # a presentation clicker's "back"
         "pagedown": Action.NEXT_FIGURE,  # and "next"
         "R": Action.RESET_VIEW,
+        "F": Action.TOGGLE_PRESENTER,
     }
     assert action_for("Q") is None
-    assert not set(RESERVED) & set(keys) and set(RESERVED) <= viser_keys  # F stays free for presenter mode
+    assert not set(RESERVED) & set(keys) and set(RESERVED) <= viser_keys
 
 
 def test_the_key_line_lists_every_key() -> None:

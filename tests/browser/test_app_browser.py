@@ -10,6 +10,7 @@ import io
 import json
 import re
 import time
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -18,12 +19,8 @@ import pytest
 from PIL import Image
 
 import rigidrel_core as rr
-from rigidrel_app.backends.viser import ROD_DEPTH
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
-from rigidrel_app.view import camera as cam
-from rigidrel_app.view.lanes import lane_geometry
-from rigidrel_app.view.scene_view import FRAME_Z, LAB_Z
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings
 from rigidrel_app.view.vocabulary import ROD_COLORS
 from tests.browser.conftest import VIEWPORT
@@ -55,12 +52,26 @@ class AppPage:
         self.page.route("**/*", route)
         self.page.on("pageerror", lambda e: self.errors.append(f"pageerror: {e}"))
         self.page.on("console", lambda m: self.errors.append(f"console: {m.text}") if m.type == "error" else None)
+        self.received: list[tuple[float, int, str]] = []
+        """Websocket frames the page received: (time, bytes, the first 200 characters if text)."""
+
+        def on_socket(ws: Any) -> None:
+            def frame(payload: Any) -> None:
+                if payload is None:
+                    return
+                head = payload[:200] if isinstance(payload, str) else bytes(payload[:4000]).decode("latin-1")
+                size = len(payload)
+                self.received.append((time.monotonic(), size, head))
+
+            ws.on("framereceived", frame)
+
+        self.page.on("websocket", on_socket)
         self.opened = time.monotonic()
         self.page.goto(app.url)
         self.page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
-        self.page.wait_for_function("() => document.querySelectorAll('.js-plotly-plot').length >= 2", timeout=60_000)
         new = wait_until(lambda: set(app.sessions) - before)
         self.session: Session = app.sessions[min(new)]
+        wait_until(lambda: self.session.drawn is not None and self.session.layout is not None, timeout=60)
         for button in self.page.locator(".mantine-Notification-root button").all():
             button.click()
 
@@ -82,28 +93,16 @@ class AppPage:
         self.page.locator(f'[role=option]:has-text("{option}")').first.click()
 
     # ---------------------------------------------------------------- reading the page
-    def open_tab(self, name: str) -> None:
-        self.page.locator(f'[role=tab]:has-text("{name}")').click()
+    def texts(self) -> list[str]:
+        """Every text the canvas shows (the diagrams' titles, numbers, event names, legend)."""
+        r = self.session.renderer
+        return [t[0] for t in r.static_texts.shown] + [t[0] for t in r.titles.shown]
 
-    def lengths_plot(self) -> dict[str, Any]:
-        """The Fig. 2 panel (in the left panel's second tab); leaves that tab open."""
-        self.open_tab("Lengths")
-        return wait_until(lambda: next((p for p in self.plots() if "Equal-time" in p["title"]), None))
-
-    def diagrams(self) -> list[dict[str, Any]]:
-        """The two Minkowski diagrams (first tab of the left panel)."""
-        self.open_tab("Minkowski")
-        return wait_until(lambda: [p for p in self.plots() if "Minkowski" in p["title"]] or None)
-
-    def plots(self) -> list[dict[str, Any]]:
-        return self.page.evaluate(
-            """() => Array.from(document.querySelectorAll('.js-plotly-plot')).map(gd => ({
-                title: gd.layout.title ? gd.layout.title.text : '',
-                names: gd._fullData.filter(t => t.showlegend).map(t => t.name),
-                annotations: (gd.layout.annotations || []).map(a => a.text),
-                traces: gd._fullData.map(t => ({x: Array.from(t.x || []), y: Array.from(t.y || [])})),
-            }))"""
-        )
+    def page_to_pixel(self, x: float, z: float) -> tuple[float, float]:
+        """A page point (px, z up) as a canvas pixel (column, row): the camera makes one page px one CSS px."""
+        layout = self.session.layout
+        assert layout is not None
+        return x, layout.height - z
 
     def canvas(self) -> np.ndarray:
         png = self.page.locator("canvas[data-engine]").screenshot()
@@ -148,11 +147,6 @@ def show(tab: AppPage, settings: Settings, now: float) -> None:
         s.seek(now)
 
 
-def current_pose(tab: AppPage) -> cam.CameraPose:
-    c = tab.session.client.camera
-    return cam.CameraPose(tuple(c.position), tuple(c.look_at), tuple(c.up_direction), c.fov)
-
-
 def rod_runs(row: np.ndarray, color: str) -> list[tuple[int, int]]:
     """[start, end] pixel columns of runs of rod-coloured pixels in one image row."""
     r, g, b = row[:, 0], row[:, 1], row[:, 2]
@@ -169,34 +163,57 @@ def rod_runs(row: np.ndarray, color: str) -> list[tuple[int, int]]:
     return [(int(a), int(e)) for a, e in zip(starts, ends, strict=True) if e - a >= 3]
 
 
-def expected_extent(x0: float, x1: float, z: float, pose: cam.CameraPose, w: int, h: int) -> tuple[float, float, float]:
-    """Pixel columns of a box's silhouette (front and back faces) and the row of its middle."""
-    corners = np.array([[x, y, z] for x in (x0, x1) for y in (-0.5 * ROD_DEPTH, 0.5 * ROD_DEPTH)])
-    uv = cam.project(corners, pose, w, h)
-    mid = cam.project(np.array([[0.5 * (x0 + x1), -0.5 * ROD_DEPTH, z]]), pose, w, h)[0]
-    return float(uv[:, 0].min()), float(uv[:, 0].max()), float(mid[1])
+def measured_rods(tab: AppPage, img: np.ndarray) -> list[list[tuple[int, int]]]:
+    """Each lane's rods as drawn: [lane][rod] = (left, right) pixel columns, found on the row of
+    the lane's rod axis (ticks and the origin mark drawn over a rod split it: runs are joined)."""
+    layout = tab.session.layout
+    assert layout is not None
+    out = []
+    for place, lane in zip(layout.lanes, tab.session.renderer_lanes, strict=True):
+        _, row = tab.page_to_pixel(0.0, place.rod_z + 0.25 * place.rod_px)
+        found = []
+        for r, color in zip(range(lane.ends.shape[0]), ("blue", "orange"), strict=False):
+            lo, hi = lane.origin_px + lane.ends[r] * lane.scale
+            runs = rod_runs(img[round(row)], color)
+            near = [ab for ab in runs if ab[1] >= lo - 2 * PIXEL_TOLERANCE and ab[0] <= hi + 2 * PIXEL_TOLERANCE]
+            assert near, f"no {color} rod near columns {lo:.0f}..{hi:.0f}; runs {runs}"
+            found.append((min(a for a, _ in near), max(b for _, b in near)))
+        out.append(found)
+    return out
 
 
 # ====================================================================== tests
 def test_page_loads_and_renders(tab: AppPage, shots: Path) -> None:
-    wait_until(lambda: len(tab.diagrams()) == 2 and all(p["traces"] for p in tab.diagrams()))
-    assert tab.lengths_plot()["traces"]
-    tab.open_tab("Minkowski")
-
     def drawn() -> tuple[int, int] | None:
-        # not blank: the rods' blue and the ink of ticks and clocks are on the canvas
+        # not blank: the rods' blue and the ink of ticks, clocks and axes are on the canvas
         img = tab.canvas()
         blue, dark = int((img[..., 2] - img[..., 0] > 60).sum()), int((img.sum(axis=-1) < 200).sum())
         return (blue, dark) if blue > 2000 and dark > 300 else None
 
     wait_until(drawn, timeout=30)
+    texts = tab.texts()
+    assert "Minkowski diagram, lab frame" in texts and "Equal-time length (Fig. 2)" in texts
+    assert any(t.startswith("lab frame:   t = ") for t in texts)
     tab.page.screenshot(path=str(shots / "loaded.png"))
+    assert tab.page.locator(".js-plotly-plot").count() == 0  # the diagrams are on the canvas
     assert tab.errors == []
     assert tab.external == []
 
 
+def test_no_plotly_and_a_light_connection(tab: AppPage) -> None:
+    """A tab receives no plotly.js and at most 300 kB over the websocket until its first picture
+    (the whole default scene drawn: lanes, diagrams, legend)."""
+    wait_until(lambda: tab.texts() and any("Equal-time" in t for t in tab.texts()), timeout=30)
+    first_picture = time.monotonic()
+    received = sum(n for t, n, _ in tab.received if t <= first_picture)
+    assert 0 < received <= 300_000, received
+    assert not any("plotly" in head.lower() for _, _, head in tab.received)
+    scripts = tab.page.evaluate("() => Array.from(document.scripts).map(s => s.src + s.text.slice(0, 200))")
+    assert not any("plotly" in src.lower() for src in scripts)
+
+
 def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> None:
-    """Both lanes put each rod end where the core says, projected through the known camera.
+    """Both lanes put each rod end where the core says, on their rulers' scales.
 
     The chosen frame moves at beta = 0.8 and the clock is mid-collision, so lab positions
     drawn in the frame lane would be off by far more than the tolerance (checked).
@@ -208,44 +225,82 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     show(tab, settings, now)
     scene = tab.session.drawn.resolved.scene  # type: ignore[union-attr]
     frame = tab.session.drawn.resolved.frame  # type: ignore[union-attr]
-    unit = lane_geometry(scene).unit
     img = tab.canvas_after(default_scene)
-    pose = current_pose(tab)
-    h, w = img.shape[:2]
     tab.page.screenshot(path=str(shots / "collision_beta_0.8_t_0.4.png"))
-    lanes = {LAB_Z: rr.LAB, FRAME_Z: frame}
+    found = measured_rods(tab, img)
     separation = []
-    for z, lane_frame in lanes.items():
-        x = scene.positions(np.array([now]), lane_frame)[:, :, 0] / unit
-        x_lab = scene.positions(np.array([now]), rr.LAB)[:, :, 0] / unit
-        for r, color in ((0, "blue"), (1, "orange")):
-            lo, hi, v = expected_extent(x[r, 0], x[r, 1], z, pose, w, h)
-            runs = rod_runs(img[round(v)], color)
-            assert runs, f"no {color} rod found in row {v:.0f} (lane z={z})"
-            # lines drawn over the box (ticks, the origin mark) split it into runs: join those
-            # that overlap the expected place
-            near = [ab for ab in runs if ab[1] >= lo - 2 * PIXEL_TOLERANCE and ab[0] <= hi + 2 * PIXEL_TOLERANCE]
-            assert near, f"no {color} rod near columns {lo:.0f}..{hi:.0f} (lane z={z}); runs {runs}"
-            a, b = min(ab[0] for ab in near), max(ab[1] for ab in near)
-            assert abs(a - lo) <= PIXEL_TOLERANCE and abs(b - hi) <= PIXEL_TOLERANCE, (z, r, (a, b), (lo, hi))
-            lab_lo, lab_hi, _ = expected_extent(x_lab[r, 0], x_lab[r, 1], z, pose, w, h)
+    for lane, runs, lane_frame in zip(tab.session.renderer_lanes, found, (rr.LAB, frame), strict=True):
+        x = scene.positions(np.array([now]), lane_frame)[:, :, 0]
+        x_lab = scene.positions(np.array([now]), rr.LAB)[:, :, 0]
+        for r in range(2):
+            lo, hi = lane.origin_px + x[r] * lane.scale
+            a, b = runs[r]
+            assert abs(a - lo) <= PIXEL_TOLERANCE and abs(b - hi) <= PIXEL_TOLERANCE, (r, (a, b), (lo, hi))
+            lab_lo, lab_hi = lane.origin_px + x_lab[r] * lane.scale
             separation.append(max(abs(lab_lo - lo), abs(lab_hi - hi)))
     # in the frame lane, lab positions would be visibly wrong: the test can fail for the right reason
     assert max(separation[2:]) > 10 * PIXEL_TOLERANCE
 
 
+#: Slider extremes where the old view lost its rods; each lane must show each rod at least this
+#: share of its track times its rest length over the largest (or 12 px).
+LEGIBLE_SHARE = 0.15
+EXTREMES = [
+    ("V_0.99", Settings.of("constant-acceleration", v=0.99), 0.9),
+    ("V_0.99_aF_0.01", Settings.of("constant-acceleration", v=0.99, a_front=0.01), 0.9),
+    ("wall_V_0.99", Settings.of("wall-collision", v=0.99), 0.6),
+    ("beta_+0.99", Settings("constant-acceleration", (), CUSTOM_FRAME, 0.99), 0.5),
+    ("beta_-0.99", Settings("constant-acceleration", (), CUSTOM_FRAME, -0.99), 0.5),
+    ("M2_0.01", Settings.of("rod-collision", m2=0.01), 0.9),
+    ("M2_100", Settings.of("rod-collision", m2=100.0), 0.9),
+    ("L2_0.1", Settings.of("rod-collision", l2=0.1), 0.6),
+]
+
+
+@pytest.mark.parametrize(("name", "settings", "fraction"), EXTREMES, ids=[e[0] for e in EXTREMES])
+def test_rods_stay_large_at_the_sliders_extremes(
+    tab: AppPage, shots: Path, name: str, settings: Settings, fraction: float
+) -> None:
+    """Measured on the canvas: every rod of both lanes is drawn where the core puts it and at least
+    LEGIBLE_SHARE of its lane (scaled by its rest length), late in the window (rods fastest)."""
+    before = tab.canvas()
+    d = build_drawing_for(settings)
+    now = d.window[0] + fraction * (d.window[1] - d.window[0])
+    show(tab, settings, now)
+    img = tab.canvas_after(before)
+    tab.page.screenshot(path=str(shots / f"{name}.png"))
+    layout = tab.session.layout
+    assert layout is not None
+    rest = np.array([rod.motion.length for rod in d.resolved.scene.rods])
+    for place, runs in zip(layout.lanes, measured_rods(tab, img), strict=True):
+        for r, (a, b) in enumerate(runs):
+            need = max(min(LEGIBLE_SHARE * rest[r] / rest.max() * place.track.width, 12.0), 8.0)
+            assert b - a >= need, (name, r, b - a, need)
+
+
+def build_drawing_for(settings: Settings) -> Any:
+    from rigidrel_app.view.scene_view import build_drawing
+    from rigidrel_app.view.state import resolve
+
+    r = resolve(settings)
+    assert not isinstance(r, str)
+    return build_drawing(r)
+
+
 def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
-    lengths_before = tab.lengths_plot()
-    before = tab.diagrams()
+    before_charts = tab.session.drawn.charts  # type: ignore[union-attr]
     before_velocity = tab.session.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
+    img = tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.type_into_slider("V", 0.85)
     wait_until(lambda: tab.session.settings.value("v") == 0.85)
-    wait_until(lambda: tab.diagrams()[0]["traces"] != before[0]["traces"])
-    after = tab.diagrams()
+    after = tab.canvas_after(img)
     assert tab.session.drawn.resolved.scene.final_velocities != before_velocity  # type: ignore[union-attr]
-    assert after[0]["traces"] != before[0]["traces"]
-    assert after[1]["traces"] != before[1]["traces"]
-    assert tab.lengths_plot()["traces"] != lengths_before["traces"]  # the lengths follow too
+    assert all(a is not b for a, b in zip(tab.session.drawn.charts, before_charts, strict=True))  # type: ignore[union-attr]
+    # the diagrams' area of the canvas changed (the curves follow V), not only the lanes
+    layout = tab.session.layout
+    assert layout is not None
+    top = round(layout.height - layout.charts[0].outer.z1)
+    assert _changed_fraction(after[top:], img[top:]) > 1e-3
     tab.page.screenshot(path=str(shots / "after_V_0.85.png"))
     assert tab.errors == []
 
@@ -254,21 +309,21 @@ def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) 
     default_scene = tab.canvas()
     show(tab, Settings("rod-collision", frame="lab"), 0.2)
     img0 = tab.canvas_after(default_scene)
-    pose = current_pose(tab)
-    with tab.session.lock:
-        tab.session.controls.fit.value = False  # keep the camera: compare pixels
     tab.choose("Frame", "rod 2 after")
     wait_until(lambda: tab.session.drawn.resolved.frame.name == "rod 2 after")  # type: ignore[union-attr]
     img1 = tab.canvas_after(img0)
     tab.page.screenshot(path=str(shots / "frame_rod2_after.png"))
-    h, w = img0.shape[:2]
-    top = int(cam.project(np.array([[0.0, 0.0, 0.5 * (LAB_Z + FRAME_Z)]]), pose, w, h)[0, 1])
+    layout = tab.session.layout
+    assert layout is not None
+    lab, frame = layout.lanes
+    lab_rows = slice(round(layout.height - lab.band.z1), round(layout.height - lab.band.z0))
+    frame_rows = slice(round(layout.height - frame.band.z1), round(layout.height - frame.band.z0))
     Image.fromarray(img0.astype(np.uint8)).save(shots / "canvas_before.png")
     Image.fromarray(img1.astype(np.uint8)).save(shots / "canvas_after.png")
     # Compare where the rods are drawn, not raw pixels: swiftshader may re-rasterise
     # an unchanged lane one pixel over (antialiasing of the stripes and labels).
-    before_lab, before_frame = rod_extents(img0[:top]), rod_extents(img0[top:])
-    after_lab, after_frame = rod_extents(img1[:top]), rod_extents(img1[top:])
+    before_lab, before_frame = rod_extents(img0[lab_rows]), rod_extents(img0[frame_rows])
+    after_lab, after_frame = rod_extents(img1[lab_rows]), rod_extents(img1[frame_rows])
     assert np.abs(after_lab - before_lab).max() <= 3, (before_lab, after_lab)
     assert np.abs(after_frame - before_frame).max() >= 8, (before_frame, after_frame)
 
@@ -284,21 +339,119 @@ def rod_extents(img: np.ndarray) -> np.ndarray:
     return np.array(out)
 
 
-def test_plotly_panels_carry_traces_and_event_labels(tab: AppPage) -> None:
+def test_the_canvas_carries_the_diagrams_event_labels_and_legend(tab: AppPage) -> None:
     show(tab, Settings("rod-collision", frame="barycentric"), 0.0)
-    wait_until(lambda: any("T<sub>2</sub>" in "".join(p["annotations"]) for p in tab.diagrams()))
-    lab, frame = tab.diagrams()
-    lengths = tab.lengths_plot()
-    assert "lab frame" in lab["title"] and "barycentric" in frame["title"]
-    for plot in (lab, frame):
-        text = " ".join(plot["annotations"])
-        for label in ("T<sub>1</sub>", "T'<sub>1</sub>", "T<sub>2</sub>", "T'<sub>2</sub>"):
-            assert label in text, (plot["title"], label)
-        assert {"rod 1", "rod 2", "light cone of the origin", "events"} <= set(plot["names"])
-        assert any(n.startswith("now: t") for n in plot["names"])
-    assert any("axes of barycentric" in n for n in lab["names"])
-    assert "Equal-time length" in lengths["title"]
-    assert {"rod 1, lab (t)", "rod 2, lab (t)"} <= set(lengths["names"])
+    wait_until(lambda: any("barycentric" in t for t in tab.texts()))
+    texts = tab.texts()
+    assert "Minkowski diagram, lab frame" in texts
+    assert any(t.startswith("Minkowski diagram,") and "barycentric" in t for t in texts)
+    assert "Equal-time length (Fig. 2)" in texts
+    for label in ("T₁", "T'₁", "T₂", "T'₂"):
+        assert sum(t.startswith(label) for t in texts) >= 2, label  # on both Minkowski diagrams
+    for name in ("rod 1", "rod 2", "light cone of the origin", "events", "rods now", "now: t", "now: t'"):
+        assert name in texts, name
+    assert any("axes of barycentric" in t for t in texts)
+    assert {"rod 1, lab (t)", "rod 2, lab (t)"} <= set(texts)
+    assert {"t", "x", "t'", "x'"} <= set(texts)  # the axes are named in each frame's coordinates
+    assert {"x", "x′"} <= set(texts)  # and so are the rulers
+
+
+def test_every_text_is_at_least_14_px(tab: AppPage, shots: Path) -> None:
+    """Sent sizes (viser's label em is 12 CSS px times its scale) and, measured on the canvas, the
+    height of a ruler's digits (a digit is about 0.7 em high)."""
+    from rigidrel_app.backends.viser import LABEL_EM_PX
+
+    tab.page.set_viewport_size({"width": 1280, "height": 720})
+    wait_until(lambda: tab.session.layout is not None and tab.session.layout.height == 720)
+    r = tab.session.renderer
+    sizes = [t[2] * LABEL_EM_PX for t in (*r.static_texts.shown, *r.titles.shown)]
+    assert min(sizes) >= 14.0, min(sizes)
+    show(tab, Settings(), 0.3)
+    img = tab.canvas_after(np.zeros_like(tab.canvas()))
+    tab.page.screenshot(path=str(shots / "text_1280x720.png"))
+    layout = tab.session.layout
+    assert layout is not None
+    place = layout.lanes[0]
+    _, top = tab.page_to_pixel(0.0, place.ruler_z - place.tick_px - 1.0)
+    _, bottom = tab.page_to_pixel(0.0, place.band.z0)
+    left, _ = tab.page_to_pixel(place.track.x0 + 40, 0.0)
+    band = img[round(top) : round(bottom), round(left) : round(place.track.x1)]
+    dark_rows = np.flatnonzero((band.sum(axis=-1) < 3 * 140).any(axis=1))
+    assert dark_rows.size, "no ruler numbers found"
+    digit_height = dark_rows.max() - dark_rows.min() + 1
+    assert digit_height >= 0.68 * 14.0, digit_height
+
+
+def test_playback_keeps_lanes_and_diagrams_at_one_instant(tab: AppPage, shots: Path) -> None:
+    """While playing, the lanes' clock and the diagrams' now-lines are one update; paused, the lab
+    diagram's now-line is on the canvas at the lanes' t."""
+    tab.page.click("button:has-text('Play')")
+    wait_until(lambda: tab.session.playback.playing)
+    t0 = tab.session.playback.now
+    wait_until(lambda: tab.session.playback.now > t0 + 0.05)
+    for _ in range(20):  # during playback, the session's last drawing: both from one clock
+        with tab.session.lock:
+            now = tab.session.playback.now
+            title = tab.session.renderer.titles.shown[0][0]
+            lines = tab.session.renderer.moving_points()
+        assert title.startswith(f"lab frame:   t = {now:+.3f}")
+        f = tab.session.chart_frames[0]
+        _, z_now = f.px(np.array([0.0]), np.array([now]))
+        assert np.abs(lines[:, :, 2] - z_now[0]).min() < 1e-3
+        time.sleep(0.05)
+    tab.page.click("button:has-text('Pause')")
+    wait_until(lambda: not tab.session.playback.playing)
+    now = tab.session.playback.now
+    img = tab.canvas_after(np.zeros_like(tab.canvas()))
+    tab.page.screenshot(path=str(shots / "paused.png"))
+    f = tab.session.chart_frames[0]
+    _, z_now = f.px(np.array([0.0]), np.array([now]))
+    _, row = tab.page_to_pixel(0.0, float(z_now[0]))
+    x0, _ = tab.page_to_pixel(f.plot.x0 + 2, 0.0)
+    x1, _ = tab.page_to_pixel(f.plot.x1 - 2, 0.0)
+    strip = img[round(row) - 6 : round(row) + 7, round(x0) : round(x1)]
+    dark = (strip.sum(axis=-1) < 3 * 100).mean(axis=1)  # the black now-line crosses the whole plot
+    assert dark.max() > 0.6 and abs(int(np.argmax(dark)) - 6) <= 2, dark
+    assert json.dumps(tab.errors) == "[]"
+
+
+def test_a_play_without_loop_stops_exactly_at_the_end(tab: AppPage) -> None:
+    s = tab.session
+    with s.lock:
+        s.set_playback(
+            replace(
+                s.playback.seek(s.playback.window[1] - 0.05 * (s.playback.window[1] - s.playback.window[0])),
+                loop=False,
+                speed=4.0,
+            )
+        )
+    tab.page.click("button:has-text('Play')")
+    wait_until(lambda: s.playback.playing)
+    wait_until(lambda: not s.playback.playing, timeout=30)
+    end = s.playback.window[1]
+    with s.lock:  # the tick that stopped playback has drawn its instant
+        assert s.playback.now == end
+        assert s.renderer.titles.shown[0][0].startswith(f"lab frame:   t = {end:+.3f}")
+    wait_until(lambda: tab.session.controls.time.slider.value == pytest.approx(end, abs=1e-6))
+
+
+def test_f_toggles_presenter_mode(tab: AppPage, shots: Path) -> None:
+    tab.page.set_viewport_size({"width": 1280, "height": 720})
+    wait_until(lambda: tab.session.layout is not None and tab.session.layout.height == 720)
+    normal = tab.session.layout
+    assert normal is not None and normal.width < 1000  # the control panel takes its side
+    tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
+    tab.page.keyboard.press("f")
+    wait_until(lambda: tab.session.presenter)
+    wait_until(lambda: tab.session.layout is not None and tab.session.layout.width > 1200, timeout=30)
+    wide = tab.session.layout
+    assert wide is not None and wide.theme.text_px > normal.theme.text_px and wide.theme.line_px > normal.theme.line_px
+    tab.canvas_after(np.zeros_like(tab.canvas()))
+    tab.page.screenshot(path=str(shots / "presenter_1280x720.png"))
+    tab.page.keyboard.press("f")
+    wait_until(lambda: not tab.session.presenter)
+    wait_until(lambda: tab.session.layout is not None and tab.session.layout.width < 1000, timeout=30)
+    assert tab.page.locator("label:text-is('Scene')").is_visible()
 
 
 def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
@@ -325,28 +478,10 @@ def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, sh
     tab.page.wait_for_selector("text=so that the rods collide", timeout=20_000)
     assert tab.session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
     tab.page.screenshot(path=str(shots / "notice.png"))
-    for p in tab.diagrams():  # still the last valid scene's curves, no NaN
-        assert p["traces"] and all(np.isfinite(v) for t in p["traces"] for v in t["x"] if v is not None)
+    assert all(np.isfinite(ln.points).all() for ln in tab.session.static_picture.lines)  # no NaN drawn
     tab.type_into_slider("V2", -0.3)
     wait_until(lambda: tab.session.drawn.resolved.scene is not scene_before)  # type: ignore[union-attr]
     wait_until(lambda: not tab.page.locator("text=so that the rods collide").is_visible())
-
-
-def test_playback_moves_the_rods_and_the_now_lines(tab: AppPage) -> None:
-    wait_until(lambda: tab.diagrams()[0]["traces"])
-    tab.page.click("button:has-text('Play')")
-    wait_until(lambda: tab.session.playback.playing)
-    t0 = tab.session.playback.now
-    wait_until(lambda: tab.session.playback.now > t0)
-
-    def now_lines() -> list[str]:
-        return [n for n in tab.diagrams()[0]["names"] if n.startswith("now: t =")]
-
-    names = wait_until(now_lines)
-    wait_until(lambda: now_lines() not in ([], names))  # the diagram's now line follows playback
-    tab.page.click("button:has-text('Pause')")
-    wait_until(lambda: not tab.session.playback.playing)
-    assert json.dumps(tab.errors) == "[]"
 
 
 def test_share_button_is_hidden(tab: AppPage) -> None:

@@ -1,7 +1,12 @@
-"""viser backend for the lanes: one batched mesh for every box, one line-segments node per layer.
+"""viser backend: the app's whole canvas (lanes and diagrams) as batched scene geometry.
 
-Per playback frame it assigns a handful of arrays (box positions and scales, segment
-points) and the labels' texts; it never creates nodes except when a scene's shape changes.
+:class:`PageRenderer` draws the live app's page (:mod:`rigidrel_app.view.layout`): the lanes'
+boxes as one instanced mesh, their dials as another, every line of one width as one
+line-segments node, dots as point clouds, text as labels. What does not move is sent once
+per scene (or canvas size); per playback frame it assigns a handful of arrays (box
+positions, segment points, dot positions), the lane titles and one translation per ruler,
+so the lanes and the diagrams' now-lines always show one instant in one message batch.
+:class:`LaneRenderer` draws the 3-D lanes of the recordings.
 """
 
 from __future__ import annotations
@@ -11,10 +16,12 @@ from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
-import plotly.graph_objects as go
 import viser
 
-from ..view.lanes import Box, LaneState, segments_array
+from ..view import camera as cam
+from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
+from ..view.lanes import Box, LanePicture, LaneState, ruler_text, segments_array
+from ..view.layout import CanvasLayout
 from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, plain_text, rgb
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
@@ -244,20 +251,350 @@ class LaneRenderer:
         self._box_positions, self._box_scales = positions, scales
 
 
-class _FigureJson(go.Figure):
-    """A figure that is nothing but its JSON text: viser's plotly handle calls only ``to_json``.
+# ====================================================================== the app's page
+#: Depth (page px towards the camera) of each layer: later layers are drawn over earlier ones.
+_LAYER_Y = 0.4
+_PAGE_ROD_DEPTH = 2.0
+_LANE_LINES_Y = -_PAGE_ROD_DEPTH - 1.0
+_TEXT_Y = -8.0
+#: Ruler numbers per lane kept as label nodes (more than a lane ever shows).
+RULER_SLOTS = 24
+#: A viser screen-space label's em is 12 CSS px times its ``font_screen_scale``.
+LABEL_EM_PX = 12.0
+Anchor = Literal[
+    "top-left", "top-center", "top-right", "center-left", "center-center", "center-right",
+    "bottom-left", "bottom-center", "bottom-right",
+]  # fmt: skip
 
-    ``go.Figure.__init__`` is skipped on purpose: it would validate every trace again (tens of
-    milliseconds) for a text the plotly backend has already built.
-    """
 
-    def __init__(self, text: str) -> None:  # pyright: ignore[reportMissingSuperCall]
-        self._rigidrel_json = text
-
-    def to_json(self, *args: object, **kwargs: object) -> str:
-        return self._rigidrel_json
+def label_scale(px: float) -> float:
+    """viser's ``font_screen_scale`` for text ``px`` CSS px high (its em)."""
+    return px / LABEL_EM_PX
 
 
-def show_figure_json(handle: viser.GuiPlotlyHandle, text: str) -> None:
-    """Send a plotly figure's JSON (``{"data": ..., "layout": ..., "config": ...}``) to a plotly panel."""
-    handle.figure = _FigureJson(text)
+class _Texts:
+    """Label nodes under one name prefix, grown when needed and never re-added (changing a label
+    costs ~60 us, creating one ~500 us); only what changed is assigned; unused ones are hidden."""
+
+    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
+        self._scene = scene
+        self._prefix = prefix
+        self._handles: list[viser.LabelHandle] = []
+        self._shown: list[tuple[str, tuple[float, float, float], float, str] | None] = []
+
+    def show(self, texts: Sequence[PageText], y: float = _TEXT_Y) -> None:
+        texts = [t for t in texts if t.text.strip()]  # a blank label would stop viser drawing every label
+        for k, t in enumerate(texts):
+            state = (t.text, (t.x, y, t.z), label_scale(t.px), t.anchor)
+            self.set(k, state)
+        for k in range(len(texts), len(self._handles)):
+            self.hide(k)
+
+    def set(self, k: int, state: tuple[str, tuple[float, float, float], float, str]) -> None:
+        text, position, scale, anchor = state
+        while k > len(self._handles):  # a ruler's slots fill out of order: the ones before wait hidden
+            # (a label of only blank text stops viser 1.1.1 drawing every label: never send one)
+            self.set(len(self._handles), ("0", (0.0, 1e5, 0.0), 1.0, "center-left"))
+            self.hide(len(self._handles) - 1)
+        if k == len(self._handles):
+            name = f"{self._prefix}/{k}"
+            h = self._scene.add_label(
+                name,
+                text,
+                position=position,
+                font_screen_scale=scale,
+                anchor=anchor,  # type: ignore[arg-type]
+            )
+            self._handles.append(h)
+            self._shown.append(state)
+            return
+        if state == self._shown[k]:
+            return
+        h, old = self._handles[k], self._shown[k]
+        if old is None or old[0] != text:
+            h.text = text
+        if old is None or old[1] != position:
+            h.position = position
+        if old is None or old[2] != scale:
+            h.font_screen_scale = scale
+        if old is None or old[3] != anchor:
+            h.anchor = anchor  # type: ignore[assignment]
+        if old is None:
+            h.visible = True
+        self._shown[k] = state
+
+    def hide(self, k: int) -> None:
+        if k < len(self._handles) and self._shown[k] is not None:
+            self._handles[k].visible = False
+            self._shown[k] = None
+
+    @property
+    def shown(self) -> list[tuple[str, tuple[float, float, float], float, str]]:
+        """What each visible label shows: (text, position, font_screen_scale, anchor)."""
+        return [s for s in self._shown if s is not None]
+
+
+# three.js' ACES filmic tone mapping (react-three-fiber's default), which viser's lines go through
+_ACES_IN = np.array([[0.59719, 0.35458, 0.04823], [0.07600, 0.90834, 0.01566], [0.02840, 0.13383, 0.83777]])
+_ACES_OUT = np.array([[1.60475, -0.53108, -0.07367], [-0.10208, 1.10813, -0.00605], [-0.00327, -0.07276, 1.07602]])
+
+
+@functools.lru_cache(maxsize=256)
+def line_rgb(color: tuple[int, int, int]) -> tuple[int, int, int]:
+    """The value to give a viser line so that it shows the sRGB ``color``: three.js decodes it as
+    linear, tone-maps it (ACES filmic: ``out = M_out fit(M_in x / 0.6)``, ``fit(v) = (v (v +
+    0.0245786) - 0.000090537) / (v (0.983729 v + 0.432951) + 0.238081)``) and encodes to sRGB; this
+    inverts both. Colours paler than ACES reaches from 1 (about 226 of 255) come out as pale as it can."""
+    s = np.asarray(color, dtype=float) / 255.0
+    lin = np.where(s <= 0.04045, s / 12.92, ((s + 0.055) / 1.055) ** 2.4)
+    w = np.linalg.solve(_ACES_OUT, lin)
+    a, b, c = 1.0 - 0.983729 * w, 0.0245786 - 0.4329510 * w, -(0.000090537 + 0.238081 * w)
+    v = (-b + np.sqrt(np.maximum(b * b - 4.0 * a * c, 0.0))) / (2.0 * a)
+    x = 0.6 * np.linalg.solve(_ACES_IN, v)
+    r, g, bl = (round(255.0 * min(max(float(t), 0.0), 1.0)) for t in x)
+    return r, g, bl
+
+
+def _to_linear(colors: np.ndarray) -> np.ndarray:
+    """sRGB colours ``(n, 3)`` as the values viser's lines take (:func:`line_rgb`)."""
+    unique, inverse = np.unique(np.asarray(colors, dtype=np.uint8), axis=0, return_inverse=True)
+    mapped = np.array([line_rgb((int(r), int(g), int(b))) for r, g, b in unique], dtype=np.uint8)
+    return mapped[inverse.reshape(-1)]
+
+
+class _LineNodes:
+    """Line-segments nodes keyed by (width, layer): one node per key, its points replaced in place."""
+
+    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
+        self._scene = scene
+        self._prefix = prefix
+        self._nodes: dict[tuple[float, int], viser.LineSegmentsHandle] = {}
+        self._counts: dict[tuple[float, int], int] = {}
+        self.points = np.zeros((0, 2, 3), dtype=np.float32)
+        """Every segment shown, ``(n, 2, 3)`` world (page) coordinates, as last sent."""
+
+    def show(self, lines: Sequence[PageLines]) -> None:
+        groups: dict[tuple[float, int], list[PageLines]] = {}
+        for ln in lines:
+            if len(ln.points):
+                groups.setdefault((ln.width, ln.layer), []).append(ln)
+        shown: list[np.ndarray] = []
+        for key, members in groups.items():
+            width, layer = key
+            pts2 = np.concatenate([m.points for m in members])
+            cols = np.concatenate([m.colors for m in members])
+            pts = np.empty((len(pts2), 2, 3), dtype=np.float32)
+            pts[:, :, 0] = pts2[:, :, 0]
+            pts[:, :, 1] = -_LAYER_Y * layer
+            pts[:, :, 2] = pts2[:, :, 1]
+            shown.append(pts)
+            colors = np.repeat(_to_linear(cols)[:, None, :], 2, axis=1)
+            node = self._nodes.get(key)
+            if node is None:
+                name = f"{self._prefix}/l{layer}w{width:g}".replace(".", "_")
+                self._nodes[key] = self._scene.add_line_segments(
+                    name, pts, colors, thickness=width, thickness_units="screen"
+                )
+            else:
+                node.points = pts
+                node.colors = colors
+                if self._counts.get(key, 0) == 0:
+                    node.visible = True
+            self._counts[key] = len(pts)
+        for key, node in self._nodes.items():
+            if key not in groups and self._counts.get(key, 0) != 0:
+                node.visible = False
+                self._counts[key] = 0
+        self.points = np.concatenate(shown) if shown else np.zeros((0, 2, 3), dtype=np.float32)
+
+
+class _DotNodes:
+    """Point clouds keyed by (shape, size, layer); diameters in page px."""
+
+    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
+        self._scene = scene
+        self._prefix = prefix
+        self._nodes: dict[tuple[str, float, int], viser.PointCloudHandle] = {}
+        self._counts: dict[tuple[str, float, int], int] = {}
+
+    def show(self, dots: Sequence[PageDots]) -> None:
+        groups: dict[tuple[str, float, int], list[PageDots]] = {}
+        for d in dots:
+            if len(d.xy):
+                groups.setdefault((d.shape, round(d.size, 1), d.layer), []).append(d)
+        for key, members in groups.items():
+            shape, size, layer = key
+            xy = np.concatenate([m.xy for m in members])
+            pts = np.stack([xy[:, 0], np.full(len(xy), -_LAYER_Y * layer - 0.2), xy[:, 1]], -1)
+            cols = np.concatenate([m.colors for m in members]).astype(np.uint8)
+            node = self._nodes.get(key)
+            if node is None:
+                name = f"{self._prefix}/{shape}{size:g}l{layer}".replace(".", "_")
+                self._nodes[key] = self._scene.add_point_cloud(
+                    name, pts, cols, point_size=size / 2.0, point_shape=shape,  # type: ignore[arg-type]
+                    precision="float16" if layer == 0 else "float32", point_shading="flat",
+                )  # fmt: skip
+            else:
+                node.points = pts
+                node.colors = cols
+                if self._counts.get(key, 0) == 0:
+                    node.visible = True
+            self._counts[key] = len(pts)
+        for key, node in self._nodes.items():
+            if key not in groups and self._counts.get(key, 0) != 0:
+                node.visible = False
+                self._counts[key] = 0
+
+
+class _Ruler:
+    """One lane's ruler numbers: labels under a frame node at the page x of the frame's x = 0, so
+    while the lane scrolls at one scale only that node moves (one message a frame); a number is
+    rewritten only when the scale or the tick spacing changes or a tick enters or leaves the lane."""
+
+    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
+        self._node = scene.add_frame(prefix, show_axes=False)
+        self._texts = _Texts(scene, f"{prefix}/n")
+        self._origin: float | None = None
+        self._slots: dict[int, int] = {}
+
+    def show(self, lane: LanePicture, x0: float, x1: float, z: float, px: float) -> None:
+        if self._origin != lane.origin_px:
+            self._node.position = (lane.origin_px, 0.0, 0.0)
+            self._origin = lane.origin_px
+        step, scale = lane.ruler_step, lane.scale
+        lo = int(np.ceil((x0 - lane.origin_px) / (step * scale) - 1e-9))
+        hi = int(np.floor((x1 - lane.origin_px) / (step * scale) + 1e-9))
+        wanted = {n % RULER_SLOTS: n for n in range(lo, hi + 1)} if hi - lo < RULER_SLOTS else {}
+        for slot in range(RULER_SLOTS):
+            n = wanted.get(slot)
+            if n is None:
+                self._texts.hide(slot)
+                continue
+            text = ruler_text(n * step, step)
+            self._texts.set(slot, (text, (n * step * scale, _TEXT_Y, z), label_scale(px), "top-center"))
+
+
+class PageRenderer:
+    """Draws a :class:`~rigidrel_app.view.layout.CanvasLayout` page into one client's scene: the
+    diagrams' static pictures once per scene, the lanes and the moving parts every frame."""
+
+    def __init__(self, scene: viser.SceneApi) -> None:
+        self._scene = scene
+        scene.configure_environment_map(None)
+        scene.configure_default_lights(enabled=False)
+        scene.add_light_ambient("/page/ambient", intensity=AMBIENT)
+        scene.add_light_directional("/page/front_light", intensity=FRONT, position=(0.0, -10.0, 4.0))
+        self._static_lines = _LineNodes(scene, "/page/static")
+        self._static_dots = _DotNodes(scene, "/page/static_dots")
+        self.static_texts = _Texts(scene, "/page/text")
+        self._moving_lines = _LineNodes(scene, "/page/moving")
+        self._moving_dots = _DotNodes(scene, "/page/moving_dots")
+        self._lane_lines = _LineNodes(scene, "/page/lanes")
+        self.titles = _Texts(scene, "/page/title")
+        self._rulers = (_Ruler(scene, "/page/ruler0"), _Ruler(scene, "/page/ruler1"))
+        self._boxes: viser.BatchedMeshHandle | None = None
+        self._box_capacity = 0
+        self._box_state: tuple[bytes, bytes, tuple[str, ...]] | None = None
+        self._dials: viser.BatchedMeshHandle | None = None
+        self._dial_key: tuple[int, float] | None = None
+        self.layout: CanvasLayout | None = None
+
+    def moving_points(self) -> np.ndarray:
+        """The diagrams' moving segments (now-lines) as last sent, ``(n, 2, 3)`` page coordinates."""
+        return self._moving_lines.points
+
+    def pose(self, layout: CanvasLayout) -> cam.CameraPose:
+        return cam.fit_page(layout.width, layout.height)
+
+    def set_static(self, layout: CanvasLayout, picture: PagePicture, axis_names: Sequence[str]) -> None:
+        """What does not move: the diagrams (axes, curves, events, labels), the legend, the rulers' names."""
+        self.layout = layout
+        self._static_lines.show(picture.lines)
+        self._static_dots.show(picture.dots)
+        names = [
+            PageText(lane.band.x0, lane.ruler_z, name, layout.theme.title_px, "center-left")
+            for lane, name in zip(layout.lanes, axis_names, strict=True)
+        ]
+        self.static_texts.show([*picture.texts, *names])
+
+    def update(self, lanes: Sequence[LanePicture], moving: PagePicture) -> None:
+        """One instant: both lanes and the diagrams' moving parts (call inside ``atomic()``)."""
+        layout = self.layout
+        assert layout is not None, "set_static first"
+        theme = layout.theme
+        self._update_boxes([b for lane in lanes for b in lane.boxes])
+        lines: list[PageLines] = []
+        for lane in lanes:
+            for seg in lane.segments:
+                n = seg.x0.size
+                if n == 0:
+                    continue
+                pts = np.stack([np.stack([seg.x0, seg.y0], -1), np.stack([seg.x1, seg.y1], -1)], axis=1)
+                color = color_rgb(theme.ink if seg.style.color == INK else seg.style.color)
+                lines.append(PageLines(pts, np.tile(color, (n, 1)), theme.line_px, 0))
+        self._lane_lines.show(lines)
+        self._update_dials(np.concatenate([lane.dials for lane in lanes]), layout.lanes[0].clock_px)
+        self.titles.show(
+            [
+                PageText(p.band.x0, p.title_z, lane.title, theme.title_px, "top-left")
+                for p, lane in zip(layout.lanes, lanes)
+            ]
+        )
+        for ruler, place, lane in zip(self._rulers, layout.lanes, lanes, strict=True):
+            z = place.ruler_z - place.tick_px - 2.0
+            ruler.show(lane, place.track.x0, place.track.x1, z, theme.text_px)
+        self._moving_lines.show(moving.lines)
+        self._moving_dots.show(moving.dots)
+
+    def _update_boxes(self, boxes: Sequence[Box]) -> None:
+        if len(boxes) > self._box_capacity:
+            self._box_capacity = max(len(boxes), 4)
+            if self._boxes is not None:
+                self._boxes.remove()
+                self._boxes = None
+        n = self._box_capacity
+        positions = np.tile(np.array((0.0, 1e5, 0.0), dtype=np.float32), (n, 1))
+        scales = np.full((n, 3), 1e-6, dtype=np.float32)
+        for k, b in enumerate(boxes):
+            positions[k] = (0.5 * (b.x0 + b.x1), 0.0, b.z)
+            scales[k] = (max(b.x1 - b.x0, 0.5), _PAGE_ROD_DEPTH, b.height)
+        names = tuple(b.color for b in boxes) + ("#ffffff",) * (n - len(boxes))
+        colors = _instance_colors(names)
+        if self._boxes is None:
+            self._boxes = self._scene.add_batched_meshes_simple(
+                "/page/boxes", _CUBE_VERTICES, _CUBE_FACES,
+                batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (n, 1)),
+                batched_positions=positions, batched_scales=scales, batched_colors=colors,
+                flat_shading=True, lod="off", cast_shadow=False, receive_shadow=False,
+            )  # fmt: skip
+            self._box_state = (positions.tobytes(), scales.tobytes(), names)
+            return
+        old = self._box_state
+        if old is None or old[0] != positions.tobytes():
+            self._boxes.batched_positions = positions
+        if old is None or old[1] != scales.tobytes():
+            self._boxes.batched_scales = scales
+        if old is None or old[2] != names:
+            self._boxes.batched_colors = colors
+        self._box_state = (positions.tobytes(), scales.tobytes(), names)
+
+    def _update_dials(self, centres: np.ndarray, radius: float) -> None:
+        n = len(centres)
+        positions = np.zeros((max(n, 1), 3), dtype=np.float32)
+        positions[:, 1] = 1e5  # none: one instance out of sight
+        if n:
+            positions[:, 0], positions[:, 1], positions[:, 2] = centres[:, 0], _LANE_LINES_Y + 0.5, centres[:, 1]
+        key = (len(positions), radius)
+        if self._dials is None or key != self._dial_key:
+            if self._dials is not None:
+                self._dials.remove()
+            vertices, faces = _ring(radius, width=0.2)
+            self._dials = self._scene.add_batched_meshes_simple(
+                "/page/dials", vertices, faces,
+                batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (len(positions), 1)),
+                batched_positions=positions, batched_colors=np.array(linear_rgb(INK), dtype=np.uint8),
+                flat_shading=True, lod="off", cast_shadow=False, receive_shadow=False, side="double",
+            )  # fmt: skip
+            self._dial_key = key
+        else:
+            self._dials.batched_positions = positions

@@ -16,13 +16,12 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import Literal, Protocol, TypeVar
 
-import plotly.graph_objects as go
 import viser
 
 import rigidrel_core as rr
 
 from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, refusal
-from ..view.scene_view import CONTROL_PX, LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX
+from ..view.scene_view import CONTROL_PX
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, preset_menu
 from .keys import HOTKEYS, Action, key_line
 from .playback import Playback
@@ -275,9 +274,8 @@ class Controls:
     loop: viser.GuiCheckboxHandle
     fit: viser.GuiCheckboxHandle
     reset_view: viser.GuiButtonHandle
+    presenter: viser.GuiButtonHandle
     readout: viser.GuiMarkdownHandle
-    plots: tuple[viser.GuiPlotlyHandle, viser.GuiPlotlyHandle, viser.GuiPlotlyHandle]
-    """The lab diagram, the chosen frame's diagram, the equal-time lengths."""
     commands: dict[Action, viser.CommandHandle]
     """The keyboard's and the clicker's commands (:mod:`.keys`)."""
 
@@ -318,6 +316,7 @@ class Controls:
                     act=lambda v: a.set_playback(replace(a.playback, loop=v)))  # fmt: skip
         self.play.on_click(lambda _: a.perform(Action.TOGGLE_PLAY))
         self.reset_view.on_click(lambda _: a.perform(Action.RESET_VIEW))
+        self.presenter.on_click(lambda _: a.perform(Action.TOGGLE_PRESENTER))
         for action, command in self.commands.items():
             command.on_trigger(lambda _, action=action: a.perform(action))
 
@@ -366,7 +365,8 @@ def scene_titles() -> dict[str, str]:
 
 
 def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
-    """The control panel (right) and the diagram panel (left) of one tab, and its hotkeys."""
+    """The control panel (right) of one tab, and its hotkeys (the lanes and the diagrams are drawn
+    on the canvas)."""
     notices: dict[Place, viser.GuiMarkdownHandle] = {}
     with gui.add_folder("Scene", order=1.0):
         menu = preset_menu(settings)
@@ -402,24 +402,19 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
         reset_view = gui.add_button(
             "Reset view", icon=viser.Icon.FOCUS_CENTERED, color="gray", hint="Back to the scene's default camera (R)"
         )
+        presenter = gui.add_button(
+            "Presenter mode", icon=viser.Icon.PRESENTATION, color="gray",
+            hint="Hide this panel; larger text and thicker lines for a projector. F again brings it back (F)",
+        )  # fmt: skip
         gui.add_markdown(f"<small>{key_line()}</small>")
     readout = gui.add_markdown("", order=4.0)
     gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS, order=5.0)
     gui.main_panel.dock_right()
     gui.main_panel.set_width(CONTROL_PX)
-    panel = gui.add_panel()
-    panel.dock_left()
-    panel.set_width(PLOT_PANEL_PX)
-    empty = go.Figure()
-    with panel.add_tab("Minkowski diagrams"):
-        lab_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT)
-        frame_plot = gui.add_plotly(empty, aspect=PLOT_ASPECT)
-    with panel.add_tab("Lengths (Fig. 2)"):
-        length_plot = gui.add_plotly(empty, aspect=LENGTH_ASPECT)
     commands = {h.action: gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}") for h in HOTKEYS}
     return Controls(
-        preset, scene, params, overlay, notices, frame, beta, play, time, speed, loop, fit, reset_view, readout,
-        (lab_plot, frame_plot, length_plot), commands,
+        preset, scene, params, overlay, notices, frame, beta, play, time, speed, loop, fit, reset_view, presenter,
+        readout, commands,
     )  # fmt: skip
 
 

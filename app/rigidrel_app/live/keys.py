@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 #: The keys used here, as viser names them (a subset of its ``HotkeyKey``).
-Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R"]
+Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F"]
 
 
 class Action(enum.Enum):
@@ -25,6 +25,7 @@ class Action(enum.Enum):
     PREVIOUS_FIGURE = "previous figure"
     NEXT_FIGURE = "next figure"
     RESET_VIEW = "reset view"
+    TOGGLE_PRESENTER = "presenter mode"
 
 
 @dataclass(frozen=True)
@@ -46,10 +47,11 @@ HOTKEYS: tuple[Hotkey, ...] = (
     Hotkey("pageup", Action.PREVIOUS_FIGURE, "Previous paper figure of this scene", "PgUp", "figure"),
     Hotkey("pagedown", Action.NEXT_FIGURE, "Next paper figure of this scene", "PgDn", "figure"),
     Hotkey("R", Action.RESET_VIEW, "Reset view", "R", "reset"),
+    Hotkey("F", Action.TOGGLE_PRESENTER, "Presenter mode (panel hidden, larger text) on / off", "F", "presenter"),
 )
 
 #: Keys kept free for what is planned but not built: no hotkey here may take them.
-RESERVED: dict[str, str] = {"F": "presenter mode"}
+RESERVED: dict[str, str] = {}
 
 
 def action_for(key: str) -> Action | None:

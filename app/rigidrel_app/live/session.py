@@ -15,9 +15,11 @@ import viser
 
 import rigidrel_core as rr
 
-from ..backends.plotly import APP_CONFIG, SplicedFigure
-from ..backends.viser import LaneRenderer, show_figure_json
-from ..view.scene_view import LANE_Z, PLOT_HZ, Drawn, build_drawing, camera_pose, lane_states, nice_step
+from ..backends.viser import PageRenderer
+from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
+from ..view.lanes import LanePicture
+from ..view.layout import LEGEND_ROWS, NORMAL, PRESENTER, CanvasLayout, canvas_layout
+from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, build_drawing, nice_step
 from ..view.scene_view import readout_markdown as readout
 from ..view.state import Resolved, Settings, frame_choice, frame_choices, preset_step, scene_presets
 from ..view.state import resolve as resolve_settings
@@ -43,7 +45,15 @@ class Session:
         self.messages_handled = 0
         """Control values a client sent that the session has checked and acted on or refused (in any order)."""
         self.drawn: Drawn | None = None
-        self._figures: tuple[SplicedFigure, ...] = ()
+        self.presenter = False
+        """Presenter mode (key F): the control panel minimized, the projector theme."""
+        self.layout: CanvasLayout | None = None
+        self.chart_frames: tuple[ChartFrame, ...] = ()
+        """Each diagram's data -> page px (the plot areas of this layout)."""
+        self.static_picture = PagePicture()
+        """What the diagrams show that does not move (as last sent)."""
+        self.renderer_lanes: list[LanePicture] = []
+        """The lanes as last drawn."""
         self._last_plot = 0.0
         resolved = resolve_settings(self.settings)
         if isinstance(resolved, str):  # a start state given from outside that makes no scene
@@ -52,7 +62,7 @@ class Session:
             assert isinstance(resolved, Resolved)
         with client.atomic():
             self.controls = build_controls(client.gui, self.settings)
-            self.renderer = LaneRenderer(client.scene, LANE_Z)
+            self.renderer = PageRenderer(client.scene)
             self.playback = Playback.start((-1.0, 1.0))
             self._wire()
             self._apply(resolved, refit=True)
@@ -61,14 +71,22 @@ class Session:
     # ------------------------------------------------------------------ wiring
     def _wire(self) -> None:
         self.controls.wire(self)
-        self._aspect = self.client.camera.aspect
 
         @self.client.camera.on_update
         def _(camera: viser.CameraHandle) -> None:
-            # the docked panels change the canvas' shape after connect: refit once it is known
-            if abs(camera.aspect - self._aspect) > 0.02 and self.controls.fit.value and self.drawn is not None:
-                self._aspect = camera.aspect
-                self.fit_camera()
+            # the docked panel, presenter mode or the window change the canvas' size: lay it out again
+            with self.lock:
+                if self.closed or self.drawn is None or self.layout is None:
+                    return
+                if (camera.image_width, camera.image_height) != (self.layout.width, self.layout.height):
+                    with self.client.atomic():
+                        self._apply(self.drawn.resolved, refit=True)
+
+    def _canvas_layout(self, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
+        """The page for this tab's canvas size and mode."""
+        camera = self.client.camera
+        theme = PRESENTER if self.presenter else NORMAL
+        return canvas_layout(camera.image_width, camera.image_height, theme, legend_rows)
 
     # ------------------------------------------------------------------ state
     def change(self, new: Settings, refit: bool | None = None) -> None:
@@ -127,8 +145,24 @@ class Session:
                     self.change(figure, refit=True)
             elif action is Action.RESET_VIEW:
                 self.fit_camera()
+            elif action is Action.TOGGLE_PRESENTER:
+                self.set_presenter(not self.presenter)
             else:  # a new Action must be handled here
                 raise AssertionError(action)
+
+    def set_presenter(self, on: bool) -> None:
+        """Presenter mode: the control panel minimized and the canvas in the projector theme (larger
+        text, thicker lines); off: the panel back and the normal theme. The canvas' new size
+        arrives from the browser and lays the page out again."""
+        with self.lock, self.client.atomic():
+            self.presenter = on
+            panel = self.client.gui.main_panel
+            if on:
+                panel.minimize()
+            else:
+                panel.expand()
+            if self.drawn is not None:
+                self._apply(self.drawn.resolved, refit=True)
 
     def checked(self, respond: Callable[[], None]) -> None:
         """Respond to one value a client sent, under the lock, and count it whatever happened; then
@@ -175,8 +209,8 @@ class Session:
     # ------------------------------------------------------------------ drawing
     def _apply(self, resolved: Resolved, refit: bool) -> None:
         c = self.controls
-        self.drawn = d = build_drawing(resolved)
-        self._figures = tuple(SplicedFigure(chart, APP_CONFIG) for chart in d.charts)
+        self.layout = layout = self._canvas_layout()
+        self.drawn = d = build_drawing(resolved, areas=layout.chart_areas)
         c.show_settings(self.settings)
         choices = frame_choices(resolved.scene)
         if tuple(c.frame.options) != choices:
@@ -186,35 +220,51 @@ class Session:
             c.frame.value = chosen
         self.set_playback(self.playback.with_window(d.window))
         c.time.retarget(time_entry(d.window, nice_step(d.window[1] - d.window[0])))
-        self.renderer.set_static(d.lane_statics())
+        legend = d.legend()
+        rows = legend_rows(legend, layout.legend.width, layout.theme)
+        if rows != LEGEND_ROWS:  # the plots give the legend the rows it needs (their curves still fit)
+            self.layout = layout = self._canvas_layout(rows)
+        frames: list[ChartFrame] = []
+        picture = PagePicture()
+        for chart, place in zip(d.charts, layout.charts, strict=True):
+            f, p = chart_picture(chart, place, layout.theme)
+            frames.append(f)
+            picture += p
+        picture += legend_picture(legend, layout.legend, layout.theme)
+        self.chart_frames, self.static_picture = tuple(frames), picture
+        self.renderer.set_static(layout, picture, RULER_NAMES)
         if refit:
             self.fit_camera()
         c.readout.content = readout(resolved)
         self.draw_now(force_plots=True)
 
     def fit_camera(self) -> None:
-        if self.drawn is None:
+        if self.layout is None:
             return
         camera = self.client.camera
-        pose = camera_pose(self.drawn.lane_x_range, camera.aspect)
+        pose = self.renderer.pose(self.layout)
+        distance = abs(pose.position[1])
+        camera.near, camera.far = 0.1 * distance, 3.0 * distance  # depth resolution for the page's layers
         camera.up_direction, camera.fov = pose.up, pose.fov
         camera.position, camera.look_at = pose.position, pose.look_at
 
     def draw_now(self, force_plots: bool = False) -> None:
-        """Draw the lanes at the clock, and the diagrams too if due (they follow at :data:`PLOT_HZ`)."""
-        d = self.drawn
-        if d is None:
+        """Draw the lanes and the diagrams' moving parts at the clock, in one batch (one instant);
+        the playback clock's box follows at :data:`PLOT_HZ`, or now if ``force_plots``."""
+        d, layout = self.drawn, self.layout
+        if d is None or layout is None:
             return
         now = self.playback.now
         wall = time.monotonic()
-        slow = force_plots or wall - self._last_plot >= 1.0 / PLOT_HZ
-        states = lane_states(d, now, labels=slow)
+        lanes = d.lane_pictures(now, layout)
+        moving = PagePicture()
+        for f, items in zip(self.chart_frames, d.moving_items(now, [lane.ends for lane in lanes]), strict=True):
+            moving += items_picture(items, f, layout.theme, MOVING)
+        self.renderer_lanes = lanes
         with self.client.atomic():
-            self.renderer.update(states, d.geometry.clock_radius, labels=slow)
-            if slow:
+            self.renderer.update(lanes, moving)
+            if force_plots or not self.playback.playing or wall - self._last_plot >= 1.0 / PLOT_HZ:
                 self._last_plot = wall
-                for plot, figure, items in zip(self.controls.plots, self._figures, d.moving_items(now, states)):
-                    show_figure_json(plot, figure.with_dynamic(items))
                 self.controls.time.show(round(now, 6))
 
     def tick(self, dt: float) -> None:
@@ -223,4 +273,4 @@ class Session:
             if self.closed or not self.playback.playing:
                 return
             self.set_playback(self.playback.advance(dt))
-            self.draw_now()
+            self.draw_now(force_plots=not self.playback.playing)  # stopped at the end: the box shows the end

@@ -56,3 +56,11 @@ def project(points: FloatArray, pose: CameraPose, width: int, height: int) -> Fl
     ndc_x = (rel @ right) / depth / (tan_v * aspect)
     ndc_y = (rel @ up) / depth / tan_v
     return np.stack([(ndc_x + 1.0) * 0.5 * width, (1.0 - ndc_y) * 0.5 * height], axis=-1)
+
+
+def fit_page(width: float, height: float, fov: float = FOV) -> CameraPose:
+    """A camera on -y looking at the middle of a ``width`` x ``height`` page (page px, z up, the
+    page in the plane y = 0), as far as makes one page px one canvas CSS px."""
+    distance = 0.5 * height / math.tan(0.5 * fov)
+    xc, zc = 0.5 * width, 0.5 * height
+    return CameraPose((xc, -distance, zc), (xc, 0.0, zc), (0.0, 0.0, 1.0), fov)

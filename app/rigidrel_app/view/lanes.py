@@ -16,6 +16,7 @@ import numpy.typing as npt
 
 import rigidrel_core as rr
 
+from .layout import LaneLayout
 from .vocabulary import DOOR_COLOR, FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, Label, Segments, Style
 
 #: Material points with ticks: every tenth of the rest length.
@@ -24,6 +25,8 @@ TICK_FRACTIONS = np.linspace(0.0, 1.0, 11)
 CLOCK_PERIOD = 1.0
 #: The ruler's name (x, x′) is this big: a coordinate's name, read from the back of a hall.
 AXIS_NAME_SIZE = 16.0
+#: The right ends' dials sit this many dial radii above the left ends' ones.
+DIAL_ROW_GAP = 2.4
 
 
 @dataclass(frozen=True)
@@ -52,9 +55,15 @@ class LaneGeometry:
         return 0.5 * self.rod_height + 1.6 * self.clock_radius
 
     @property
+    def clock_rows(self) -> tuple[float, float]:
+        """Heights of the dials on the rods' left ends and on their right ends: two rows, so the two
+        dials of a short rod (or of two rods in contact) never overlap."""
+        return self.clock_z, self.clock_z + DIAL_ROW_GAP * self.clock_radius
+
+    @property
     def title_z(self) -> float:
         """Height of the lane's title (frame name and clock), above the clocks."""
-        return self.clock_z + 3.6 * self.clock_radius
+        return self.clock_rows[1] + 3.6 * self.clock_radius
 
 
 @dataclass(frozen=True)
@@ -84,16 +93,19 @@ def lane_state(
     title: str,
     title_x: float,
     labels: bool = True,
+    snapshot: tuple[FloatArray, FloatArray] | None = None,
 ) -> LaneState:
     """The rods of ``scene`` at time ``now`` of ``frame``, drawn in lane coordinates.
 
     One two-line label per lane, at a fixed place (only if ``labels``): ``title`` (the
     frame's name and clock) at lane x ``title_x``, and beneath it the readings of the
     proper-time clocks on the rods' ends. Each end carries a dial whose hand turns once per
-    ``CLOCK_PERIOD``.
+    ``CLOCK_PERIOD``: the left ends' dials in one row, the right ends' in a row above
+    (:attr:`LaneGeometry.clock_rows`). ``snapshot`` is ``scene.snapshot(now, frame,
+    fractions=TICK_FRACTIONS)`` if the caller already has it.
     """
     u = geo.unit
-    x_phys, tau = scene.snapshot(now, frame, fractions=TICK_FRACTIONS)  # (rods, 11), (rods, 2)
+    x_phys, tau = snapshot if snapshot is not None else scene.snapshot(now, frame, fractions=TICK_FRACTIONS)
     x = x_phys / u
     h = geo.rod_height
     boxes = [Box(float(x[r, 0]), float(x[r, -1]), h, ROD_COLORS[r % len(ROD_COLORS)]) for r in range(scene.n_rods)]
@@ -102,14 +114,14 @@ def lane_state(
     tx = x.ravel()
     n = tx.size
     cx = x[:, [0, -1]].ravel()  # the ends: (rods * 2,)
-    cz = geo.clock_z
+    cz = np.tile(np.array(geo.clock_rows), scene.n_rods)
     phase = 2.0 * np.pi * tau.ravel() / (CLOCK_PERIOD * u)
     hand = 0.85 * geo.clock_radius
     x0 = np.concatenate([tx, cx])
-    z0 = np.concatenate([np.full(n, -0.5 * h), np.full(cx.size, cz)])
+    z0 = np.concatenate([np.full(n, -0.5 * h), cz])
     x1 = np.concatenate([tx, cx + hand * np.sin(phase)])
     z1 = np.concatenate([np.full(n, 0.5 * h), cz + hand * np.cos(phase)])
-    dials = np.stack([cx, np.full(cx.size, cz)], axis=-1)
+    dials = np.stack([cx, cz], axis=-1)
     texts: tuple[Label, ...] = ()
     if labels:  # one two-line label per lane: each label update is a message
         readings = "    ".join(f"{rod.name}: {tau[i, 0]:+.3f} | {tau[i, 1]:+.3f}" for i, rod in enumerate(scene.rods))
@@ -180,3 +192,140 @@ def segments_array(seg: Segments, z_offset: float, y: float) -> npt.NDArray[np.f
     pts[:, 1, 0], pts[:, 1, 2] = seg.x1, seg.y1 + z_offset
     pts[:, :, 1] = y
     return pts
+
+
+# ---------------------------------------------------------------------- the app's canvas lanes
+#: Each rod spans at least this share of its lane times its rest length over the largest one: the
+#: lane zooms in when a rod contracts below that (the ruler's numbers say so).
+ROD_SHARE = 0.2
+#: The rods together take at most this share of the lane, so there is room around them.
+FIT_SHARE = 0.8
+#: Ruler ticks per lane, about.
+RULER_TICKS = 6.0
+
+
+def steady_width(scene: rr.Scene, frame: rr.Frame, window: tuple[float, float]) -> float:
+    """A lane's x width (the frame's x units) while no rod is too contracted to see: the rods'
+    largest joint extent over the time ``window``, over :data:`FIT_SHARE`. One scale for the whole
+    playback, so Lorentz contraction shows as a rod getting shorter on the screen."""
+    t = np.linspace(window[0], window[1], 193)
+    x = scene.positions(t, frame)  # (rods, 2, t)
+    extent = x.max(axis=(0, 1)) - x.min(axis=(0, 1))
+    return float(extent.max()) / FIT_SHARE
+
+
+@dataclass(frozen=True)
+class LaneWindow:
+    """The part of a frame's x axis a lane shows at one instant (the frame's x units)."""
+
+    center: float
+    width: float
+
+
+def lane_window(ends: FloatArray, rest_lengths: FloatArray, steady: float) -> LaneWindow:
+    """Centred on the rods (``ends``: ``(rods, 2)``, the frame's x), at the steady width unless a
+    rod would be drawn under :data:`ROD_SHARE` of the lane (scaled by its rest length): then
+    narrower, just enough; never so narrow that the rods leave the lane.
+
+    width = max(extent / FIT_SHARE, min(steady, min_r length_r * L_max / (ROD_SHARE * L_r))),
+    continuous in time, so the zoom never jumps.
+    """
+    lo, hi = float(ends.min()), float(ends.max())
+    unit = float(rest_lengths.max())
+    lengths = ends[:, 1] - ends[:, 0]
+    zoom = float(np.min(lengths * unit / (ROD_SHARE * rest_lengths)))
+    width = max((hi - lo) / FIT_SHARE, min(steady, zoom))
+    return LaneWindow(0.5 * (lo + hi), width)
+
+
+def ruler_step(width: float) -> float:
+    """The ruler's tick spacing for a lane ``width`` wide: 1, 2 or 5 times a power of ten, the one
+    nearest (in ratio) to :data:`RULER_TICKS` ticks across."""
+    raw = width / RULER_TICKS
+    if not np.isfinite(raw) or raw <= 0:
+        return 1.0
+    e = np.floor(np.log10(raw))
+    candidates = np.array([1.0, 2.0, 5.0, 10.0]) * 10**e
+    return float(candidates[np.argmin(np.abs(np.log(candidates / raw)))])
+
+
+def ruler_text(value: float, step: float) -> str:
+    """A ruler number with the decimals its step needs (never ``-0``)."""
+    decimals = max(0, -int(np.floor(np.log10(step) + 1e-9)))
+    return f"{round(value, decimals) + 0.0:.{decimals}f}"
+
+
+@dataclass(frozen=True)
+class LanePicture:
+    """One lane of the app's canvas at one instant, in page pixels (:mod:`.layout`)."""
+
+    boxes: tuple[Box, ...]
+    """Rods and obstacles, clipped to the lane's track; ``Box.z`` is the box's centre height."""
+    segments: tuple[Segments, ...]
+    """The rods' ticks and clock hands (ink), the ruler's line and ticks (the frame's colour)."""
+    dials: FloatArray
+    """Centres ``(x, z)`` of the clock dials inside the track, ``(n, 2)``."""
+    title: str
+    """The frame and its time, and the clocks' readings (two lines)."""
+    window: LaneWindow
+    scale: float
+    """Page px per unit of the frame's x."""
+    origin_px: float
+    """Page x of the frame's x = 0 (the ruler's numbers are at ``origin_px + value * scale``)."""
+    ruler_step: float
+    ends: FloatArray
+    """The rods' end positions in the frame (the frame's x), ``(rods, 2)``."""
+
+
+def lane_picture(
+    scene: rr.Scene, frame: rr.Frame, now: float, steady: float, place: LaneLayout, title: str
+) -> LanePicture:
+    """The rods of ``scene`` at time ``now`` of ``frame`` in the lane ``place``: the lane follows
+    its rods (:func:`lane_window`), with true positions on a ruler of the frame's x; dials and
+    rods keep their pixel sizes at any zoom."""
+    snap = scene.snapshot(now, frame, fractions=TICK_FRACTIONS)
+    rest = np.array([r.motion.length for r in scene.rods])
+    ends = snap[0][:, [0, -1]]
+    win = lane_window(ends, rest, steady)
+    track = place.track
+    scale = track.width / win.width
+    origin = 0.5 * (track.x0 + track.x1) - win.center * scale
+    unit = float(rest.max())
+    k = unit * scale  # px per lane unit
+    geo = LaneGeometry(
+        unit, rod_height=place.rod_px / k, clock_radius=place.clock_px / k, wall_height=place.wall_px / k
+    )
+    st = lane_state(scene, frame, now, geo, title, 0.0, True, snap)
+
+    def px(x: FloatArray | float) -> FloatArray:
+        return origin + k * np.asarray(x, dtype=float)
+
+    boxes: list[Box] = []
+    for b in st.boxes:
+        x0, x1 = max(float(px(b.x0)), track.x0), min(float(px(b.x1)), track.x1)
+        if x1 > x0:
+            boxes.append(Box(x0, x1, b.height * k, b.color, place.rod_z + b.z * k))
+    seg = st.segments
+    sx0, sx1 = px(seg.x0), px(seg.x1)
+    inside = (np.minimum(sx0, sx1) >= track.x0) & (np.maximum(sx0, sx1) <= track.x1)
+    rods = Segments(
+        sx0[inside], place.rod_z + k * seg.y0[inside], sx1[inside], place.rod_z + k * seg.y1[inside], seg.style
+    )
+    dx = px(st.dials[:, 0])
+    keep = (dx >= track.x0) & (dx <= track.x1)
+    dials = np.stack([dx[keep], place.rod_z + k * st.dials[keep, 1]], axis=-1)
+    step = ruler_step(win.width)
+    marks = np.arange(
+        np.ceil((win.center - 0.5 * win.width) / step), np.floor((win.center + 0.5 * win.width) / step) + 1
+    )
+    mx = origin + marks * step * scale
+    mx = mx[(mx >= track.x0) & (mx <= track.x1)]
+    zr, tick = place.ruler_z, place.tick_px
+    origin_tick = [origin] if track.x0 <= origin <= track.x1 else []
+    rx0 = np.concatenate([[track.x0], mx, origin_tick])
+    rz0 = np.concatenate([[zr], np.full(mx.size, zr), [zr] * len(origin_tick)])
+    rz1 = np.concatenate([[zr], np.full(mx.size, zr - tick), [place.rod_z - 0.5 * place.rod_px] * len(origin_tick)])
+    rx1 = np.concatenate([[track.x1], mx, origin_tick])
+    ruler = Segments(rx0, rz0, rx1, rz1, Style(FRAME_COLOR, 1.5))
+    text = st.labels[0].text if st.labels else title
+    return LanePicture(tuple(boxes), (rods, ruler), dials, text, win, scale, origin, step, ends)

@@ -7,13 +7,15 @@ here, so the exporters use exactly what the app shows.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 import rigidrel_core as rr
 
 from . import camera as cam
+from .canvas import LegendEntry, legend_entries
 from .diagrams import (
     View,
     equal_scale_ranges,
@@ -25,10 +27,20 @@ from .diagrams import (
     overlay_label,
     window_x_range,
 )
-from .lanes import LaneGeometry, LaneState, lane_geometry, lane_state, lane_static
+from .lanes import (
+    LaneGeometry,
+    LanePicture,
+    LaneState,
+    lane_geometry,
+    lane_picture,
+    lane_state,
+    lane_static,
+    steady_width,
+)
+from .layout import CanvasLayout
 from .sampling import ADAPTIVE, Sampler
 from .state import Resolved, format_value
-from .vocabulary import Chart, Item, Label, Segments
+from .vocabulary import ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style
 
 #: Lane heights (z, in lane units): the lab on top, the chosen frame below.
 LAB_Z = 0.55
@@ -40,8 +52,13 @@ RULER_NAMES = ("x", "x′")
 CLOCK_RULE = "every clock reads 0 where its point starts changing velocity"
 #: The window plays in this many seconds at speed 1.
 PLAY_SECONDS = 8.0
-#: Diagrams follow playback at this rate (the 3-D lanes at the animation rate).
+#: The playback clock's box in the control panel follows playback at this rate (the canvas, lanes
+#: and diagrams alike, at the animation rate); the recordings relabel their lanes at this rate.
 PLOT_HZ = 10.0
+#: The rods' current places on the diagrams: a diamond in the rod's colour (the black dots are the
+#: named events).
+NOW_MARKER = "diamond"
+NOW_MARKER_NAME = "rods now"
 #: Widths of the docked panels (CSS pixels) and the plots' height/width.
 CONTROL_PX = 340
 PLOT_PANEL_PX = 440
@@ -67,6 +84,8 @@ class Drawn:
     length_chart: Chart
     views: tuple[View, View]
     """The lab diagram's view and the chosen frame's (their relative frames composed once)."""
+    steady_widths: tuple[float, float] = (1.0, 1.0)
+    """Each lane's x width (the frame's units) while no rod is too contracted to see (:func:`lanes.steady_width`)."""
 
     @property
     def x_range(self) -> tuple[float, float]:
@@ -93,21 +112,65 @@ class Drawn:
         """The lab diagram, the chosen frame's diagram, the equal-time lengths."""
         return (self.lab_chart, self.frame_chart, self.length_chart)
 
-    def moving_items(self, now: float, states: list[LaneState]) -> tuple[tuple[Item, ...], ...]:
+    def moving_items(self, now: float, ends: Sequence[FloatArray]) -> tuple[tuple[Item, ...], ...]:
         """What moves on each of :attr:`charts` at playback time ``now``: the now-lines and markers.
 
-        ``states`` are :func:`lane_states` at ``now``: their ends mark the rods on the diagrams.
-        The length plot's markers are the core's equal-time lengths in both frames.
+        ``ends`` are the rods' end positions at ``now`` in the lab and in the chosen frame (each
+        ``(rods, 2)``, from the core, as the lanes drew them): they mark the rods on the diagrams,
+        as diamonds in the rods' colours. The length plot's markers are the core's equal-time
+        lengths in both frames. The now-lines' legend names carry no number (the lanes show it).
         """
         r = self.resolved
         lab_view, frame_view = self.views
-        lengths = [r.scene.lengths(now, f) for f in (_LAB, r.frame)]
+        lengths = np.stack([r.scene.lengths(now, f) for f in (_LAB, r.frame)])  # (2, rods)
         length_top = self.length_chart.y_range[1]
+        lab = minkowski_now(lab_view, now, self.span, ends[0])
+        frame = minkowski_now(frame_view, now, self.span, ends[1])
+        length = length_now(now, length_top, lengths)
         return (
-            minkowski_now(lab_view, now, self.span, states[0].ends),
-            minkowski_now(frame_view, now, self.span, states[1].ends),
-            length_now(now, length_top, np.stack(lengths)),
+            _now_items(lab, ends[0], np.full(ends[0].shape, now)),
+            _now_items(frame, ends[1], np.full(ends[1].shape, now)),
+            _now_items(length, np.full(lengths.T.shape, now), lengths.T),
         )
+
+    def legend(self) -> list[LegendEntry]:
+        """Every named item of the three charts, static or moving, each name once."""
+        moving = self.moving_items(self.window[0], [np.zeros((self.resolved.scene.n_rods, 2))] * 2)
+        items = [it for chart in self.charts for it in chart.items] + [it for m in moving for it in m]
+        return legend_entries(items)
+
+    def lane_pictures(self, now: float, layout: CanvasLayout) -> list[LanePicture]:
+        """Both lanes at playback time ``now`` on the canvas: the lab at t = now, the chosen frame at t' = now."""
+        r = self.resolved
+        titles = lane_titles(r, now)
+        frames = (_LAB, r.frame)
+        return [
+            lane_picture(r.scene, f, now, w, place, title)
+            for f, w, place, title in zip(frames, self.steady_widths, layout.lanes, titles, strict=True)
+        ]
+
+
+def _now_items(items: tuple[Item, ...], x: FloatArray, y: FloatArray) -> tuple[Item, ...]:
+    """A diagram's moving items with the rods' current places as diamonds in each rod's colour
+    (``x``, ``y``: ``(rods, k)`` data coordinates) instead of dots, and now-lines named without
+    their number."""
+    out: list[Item] = []
+    for it in items:
+        if isinstance(it, Points):
+            continue
+        if isinstance(it, Polyline | Segments) and it.style.name is not None:
+            it = replace(it, style=replace(it.style, name=it.style.name.split(" = ")[0]))
+        out.append(it)
+    for r in range(x.shape[0]):
+        name = NOW_MARKER_NAME if r == 0 else None
+        style = Style(ROD_COLORS[r % len(ROD_COLORS)], name=name, group=NOW_MARKER_NAME)
+        out.append(Points(np.ravel(x[r]), np.ravel(y[r]), style, size=9, symbol=NOW_MARKER))
+    return tuple(out)
+
+
+def lane_titles(r: Resolved, now: float) -> tuple[str, str]:
+    """The lanes' first lines: the frame and its time."""
+    return f"lab frame:   t = {now:+.3f}", f"{frame_title(r.frame)} frame:   t' = {now:+.3f}"
 
 
 def _views(frame: rr.Frame) -> tuple[View, View]:
@@ -115,11 +178,17 @@ def _views(frame: rr.Frame) -> tuple[View, View]:
     return View(_LAB, frame, "", "'"), View(frame, _LAB, "'", "")
 
 
-def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
+def build_drawing(
+    resolved: Resolved,
+    sampler: Sampler = ADAPTIVE,
+    areas: tuple[tuple[float, float], tuple[float, float]] = (PLOT_AREA_PX, LENGTH_AREA_PX),
+) -> Drawn:
     """Everything that depends only on the scene and frame (not on playback time).
 
-    ``sampler`` samples the diagrams' curves (the app's adaptive one unless a benchmark swaps it).
+    ``sampler`` samples the diagrams' curves (the app's adaptive one unless a benchmark swaps it);
+    ``areas`` are the plot areas (px) of the Minkowski diagrams and of the lengths chart.
     """
+    plot_area, length_area = areas
     scene, frame = resolved.scene, resolved.frame
     lab = _LAB
     a0, a1 = scene.time_window(lab)
@@ -133,12 +202,12 @@ def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
         return (lo - pad, hi + pad)
 
     lab_view, frame_view = _views(frame)
-    lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window, PLOT_AREA_PX)
-    fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window, PLOT_AREA_PX)
+    lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window, plot_area)
+    fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window, plot_area)
     label = overlay_label(scene)
-    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, PLOT_AREA_PX[0], resolved.overlay, sampler, label)
-    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, PLOT_AREA_PX[0], resolved.overlay, sampler, label)
-    length_chart = length_static(scene, lab, frame, window, LENGTH_AREA_PX, sampler)
+    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, plot_area[0], resolved.overlay, sampler, label)
+    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, plot_area[0], resolved.overlay, sampler, label)
+    length_chart = length_static(scene, lab, frame, window, length_area, sampler)
     return Drawn(
         resolved=resolved,
         window=window,
@@ -148,6 +217,11 @@ def build_drawing(resolved: Resolved, sampler: Sampler = ADAPTIVE) -> Drawn:
         frame_chart=frame_chart,
         length_chart=length_chart,
         views=(lab_view, frame_view),
+        # each lane's scale from its own frame's window: the lab lane does not change with the frame
+        steady_widths=(
+            steady_width(scene, lab, _round_outward(a0, a1)),
+            steady_width(scene, frame, _round_outward(b0, b1)),
+        ),
     )
 
 
@@ -173,11 +247,10 @@ def lane_states(d: Drawn, now: float, labels: bool = True) -> list[LaneState]:
     """Both lanes at playback time ``now``: the lab at t = now, the chosen frame at t' = now."""
     r = d.resolved
     lab_x, frame_x = (rng[0] / d.geometry.unit for rng in d.lane_ranges)
+    lab_title, frame_title_ = lane_titles(r, now)
     return [
-        lane_state(r.scene, _LAB, now, d.geometry, f"lab frame:   t = {now:+.3f}", lab_x, labels),
-        lane_state(
-            r.scene, r.frame, now, d.geometry, f"{frame_title(r.frame)} frame:   t' = {now:+.3f}", frame_x, labels
-        ),
+        lane_state(r.scene, _LAB, now, d.geometry, lab_title, lab_x, labels),
+        lane_state(r.scene, r.frame, now, d.geometry, frame_title_, frame_x, labels),
     ]
 
 

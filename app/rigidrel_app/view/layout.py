@@ -1,0 +1,190 @@
+"""Where everything goes on the app's canvas: the two lanes on top, the three diagrams below.
+
+The canvas is laid out in CSS pixels: page coordinates ``(x, z)`` with ``x`` from the
+canvas' left edge and ``z`` up from its bottom edge (the camera looks along +y at this
+plane, :func:`rigidrel_app.view.camera.fit_page`). Sizes come from a :class:`Theme`: the
+normal one for a desk, the presenter one for a hall (larger text, thicker lines). Pure
+arithmetic, no drawing library.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from .vocabulary import INK
+
+ThemeName = Literal["normal", "presenter"]
+
+
+@dataclass(frozen=True)
+class Theme:
+    """Text and line sizes (CSS px) and the ink of one look of the canvas."""
+
+    name: ThemeName
+    text_px: float
+    """The smallest text on the canvas: ruler numbers, tick numbers, legend, event names."""
+    title_px: float
+    """Lane titles and clock readings, diagram titles."""
+    line_px: float
+    """The thinnest line drawn (ticks, grid excepted), and the unit the diagrams' widths scale from."""
+    ink: str = INK
+    grid: str = "#E4E4E4"
+    """Faint grid lines of the diagrams."""
+
+    @property
+    def line_scale(self) -> float:
+        """Diagram line widths (plotly widths, 1-5) times this, and never under :attr:`line_px`."""
+        return self.line_px / 1.5
+
+
+NORMAL = Theme("normal", text_px=15.0, title_px=16.0, line_px=2.0)
+#: For a projector: larger text, thicker lines, pure black ink (the lanes' and the diagrams' colours
+#: are the colour-blind-safe palette, dark enough on white).
+PRESENTER = Theme("presenter", text_px=19.0, title_px=21.0, line_px=3.0, ink="#000000", grid="#D0D0D0")
+THEMES: dict[ThemeName, Theme] = {"normal": NORMAL, "presenter": PRESENTER}
+
+#: Text width per character, in ems (a generous average for the system sans-serif font).
+CHAR_EM = 0.58
+
+
+def text_width(text: str, px: float) -> float:
+    """Estimated width (px) of one line of ``text`` at ``px``."""
+    return max((len(line) for line in text.split("\n")), default=0) * CHAR_EM * px
+
+
+@dataclass(frozen=True)
+class Rect:
+    """A page rectangle: ``x0 <= x <= x1``, ``z0 <= z <= z1`` (px, z up)."""
+
+    x0: float
+    z0: float
+    x1: float
+    z1: float
+
+    @property
+    def width(self) -> float:
+        return self.x1 - self.x0
+
+    @property
+    def height(self) -> float:
+        return self.z1 - self.z0
+
+
+@dataclass(frozen=True)
+class LaneLayout:
+    """One lane: a title block, two rows of clock dials, the rods, the ruler (top to bottom)."""
+
+    band: Rect
+    track: Rect
+    """Where the rods and the ruler's ticks may be: the band less a gutter for the ruler's name."""
+    title_z: float
+    """Top of the title (frame and time) and clock-reading lines."""
+    rod_z: float
+    """Centre line of the rods."""
+    rod_px: float
+    clock_px: float
+    """Radius of a clock dial."""
+    dial_z: tuple[float, float]
+    """Centre heights of the dials on the rods' left ends and on their right ends (two rows, so
+    the dials of a short rod never overlap)."""
+    wall_px: float
+    """Height of an obstacle's bar, from the rods' bottom to the top of the dials (never into the title)."""
+    ruler_z: float
+    """The ruler's line; its ticks hang below, their numbers below those."""
+    tick_px: float
+
+
+@dataclass(frozen=True)
+class ChartLayout:
+    outer: Rect
+    plot: Rect
+    """The plot area (inside the axes)."""
+
+
+@dataclass(frozen=True)
+class CanvasLayout:
+    width: float
+    height: float
+    theme: Theme
+    lanes: tuple[LaneLayout, LaneLayout]
+    """The lab lane (top) and the chosen frame's."""
+    charts: tuple[ChartLayout, ChartLayout, ChartLayout]
+    """The lab diagram, the chosen frame's diagram, the equal-time lengths."""
+    legend: Rect
+
+    @property
+    def chart_areas(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """Plot-area sizes (px) of the Minkowski diagrams and of the lengths chart."""
+        a, c = self.charts[0].plot, self.charts[2].plot
+        return (a.width, a.height), (c.width, c.height)
+
+
+MARGIN = 10.0
+#: The legend takes this many rows below the diagrams unless told otherwise.
+LEGEND_ROWS = 2
+#: One legend row is this many text heights.
+LEGEND_ROW_EM = 1.45
+
+
+def lane_height(theme: Theme) -> float:
+    """One lane's height: title (two lines), two dial rows, the rod, the ruler and its numbers."""
+    r = clock_radius(theme)
+    return 2.5 * theme.title_px + 4.0 + 5.0 * r + rod_height(theme) + 6.0 + 1.8 * theme.text_px + 4.0
+
+
+def clock_radius(theme: Theme) -> float:
+    return 0.6 * theme.text_px
+
+
+def rod_height(theme: Theme) -> float:
+    return 1.2 * theme.text_px
+
+
+def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
+    """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at the bottom."""
+    w, h = max(width, 320.0), max(height, 240.0)
+    lane_h = lane_height(theme)
+    lanes: list[LaneLayout] = []
+    top = h - MARGIN
+    gutter = text_width("x′", theme.title_px) + 12.0
+    for _ in range(2):
+        band = Rect(MARGIN, top - lane_h, w - MARGIN, top)
+        r = clock_radius(theme)
+        title_z = band.z1
+        # the dial rows as :class:`~.lanes.LaneGeometry` puts them: 1.6 r above the rod, 2.4 r apart
+        dial_hi = title_z - 2.5 * theme.title_px - 4.0 - r
+        dial_lo = dial_hi - 2.4 * r
+        rod_px = rod_height(theme)
+        rod_z = dial_lo - 1.6 * r - 0.5 * rod_px
+        ruler_z = rod_z - 0.5 * rod_px - 6.0
+        lanes.append(
+            LaneLayout(
+                band=band,
+                track=Rect(band.x0 + gutter, band.z0, band.x1 - 4.0, band.z1),
+                title_z=title_z,
+                rod_z=rod_z,
+                rod_px=rod_px,
+                clock_px=r,
+                dial_z=(dial_lo, dial_hi),
+                wall_px=(dial_hi + r) - (rod_z - 0.5 * rod_px),
+                ruler_z=ruler_z,
+                tick_px=0.4 * theme.text_px,
+            )
+        )
+        top = band.z0 - 4.0
+    legend_h = legend_rows * LEGEND_ROW_EM * theme.text_px
+    legend = Rect(MARGIN, MARGIN, w - MARGIN, MARGIN + legend_h)
+    charts_top, charts_bottom = top - 4.0, legend.z1 + 4.0
+    gap = 12.0
+    cw = (w - 2 * MARGIN - 2 * gap) / 3.0
+    charts: list[ChartLayout] = []
+    for k in range(3):
+        x0 = MARGIN + k * (cw + gap)
+        outer = Rect(x0, charts_bottom, x0 + cw, max(charts_top, charts_bottom + 60.0))
+        left = 3.6 * theme.text_px  # the time axis' numbers
+        bottom = 1.5 * theme.text_px + 6.0  # the x axis' numbers
+        head = 2.5 * theme.title_px  # the title, on up to two lines
+        plot = Rect(outer.x0 + left, outer.z0 + bottom, outer.x1 - 6.0, max(outer.z1 - head, outer.z0 + bottom + 30.0))
+        charts.append(ChartLayout(outer, plot))
+    return CanvasLayout(w, h, theme, (lanes[0], lanes[1]), (charts[0], charts[1], charts[2]), legend)

@@ -1,0 +1,137 @@
+"""Measure one tab of the app in headless Chromium: bytes until the first picture, playback fps, and
+slider-to-redraw time. A script, not a test (numbers vary with the machine's load):
+
+    python -m tests.browser.measure_canvas [--width 1280 --height 720 --seconds 5]
+
+* bytes: websocket payload the page receives from connecting until the server has sent its first
+  complete drawing and 1 s has passed quietly.
+* fps: ``requestAnimationFrame`` ticks in which the page's JavaScript handled at least one new
+  websocket message (a new picture to show; viser's websocket worker hands them over), per
+  second, over ``--seconds`` of playback of the paper's Fig. 3, at the given viewport (the
+  diagrams visible). Also the page's animation frames per second and messages per second.
+* slider-to-redraw: from the Enter that submits V = 0.85 in its box to the last websocket message
+  of the redraw the page handles (messages closer than 60 ms counted as one burst); median of 5.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+from typing import Any
+
+from rigidrel_app.live.server import App
+from rigidrel_app.view.state import presets
+from tests.browser.conftest import launch_chromium
+from tests.viser_client import wait_until
+
+COUNT_FRAMES = """
+window.__msgs = 0; window.__frames = 0; window.__ticks = 0; window.__times = [];
+(() => {
+  const Orig = window.WebSocket;
+  function Counted(...args) {
+    const ws = new Orig(...args);
+    ws.addEventListener('message', (e) => {
+      window.__msgs++; window.__times.push(performance.now());
+    });
+    return ws;
+  }
+  Counted.prototype = Orig.prototype;
+  Object.assign(Counted, {CONNECTING: 0, OPEN: 1, CLOSING: 2, CLOSED: 3});
+  window.WebSocket = Counted;
+  // viser reads its websocket in a worker: count what the worker hands the page
+  const OrigWorker = window.Worker;
+  function CountedWorker(...args) {
+    const w = new OrigWorker(...args);
+    w.addEventListener('message', () => { window.__msgs++; window.__times.push(performance.now()); });
+    return w;
+  }
+  CountedWorker.prototype = OrigWorker.prototype;
+  window.Worker = CountedWorker;
+  let last = 0;
+  function loop() {
+    window.__ticks++;
+    if (window.__msgs !== last) { window.__frames++; last = window.__msgs; }
+    requestAnimationFrame(loop);
+  }
+  requestAnimationFrame(loop);
+})();
+"""
+
+
+def measure(width: int, height: int, seconds: float) -> dict[str, float]:
+    from playwright.sync_api import sync_playwright
+
+    with App(port=0) as app, sync_playwright() as p:
+        browser = launch_chromium(p)
+        try:
+            page = browser.new_page(viewport={"width": width, "height": height})
+            page.add_init_script(COUNT_FRAMES)
+            received: list[tuple[float, int]] = []
+
+            def on_socket(ws: Any) -> None:
+                ws.on("framereceived", lambda payload: received.append((time.monotonic(), len(payload or b""))))
+
+            page.on("websocket", on_socket)
+            page.goto(app.url)
+            page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
+            session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
+            wait_until(lambda: session.drawn is not None, timeout=60)
+
+            def quiet() -> bool:
+                return bool(received) and time.monotonic() - received[-1][0] > 1.0
+
+            wait_until(quiet, timeout=60, interval=0.1)
+            first_bytes = sum(n for _, n in received)
+            for button in page.locator(".mantine-Notification-root button").all():
+                button.click()
+            with session.lock:
+                session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
+                session.toggle_play()
+            time.sleep(2.0)  # warm
+            f0, k0, m0 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")
+            time.sleep(seconds)
+            f1, k1, m1 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")
+            with session.lock:
+                session.toggle_play()
+            time.sleep(1.0)
+            redraws = []
+            uid = page.locator('label:text-is("V1")').get_attribute("for")
+            box = page.locator(f"[id='{uid}']").locator("xpath=..").locator("input.mantine-NumberInput-input")
+            for k in range(5):
+                box.fill(f"{0.8 + 0.01 * k:.2f}")
+                page.evaluate("() => { window.__times = []; }")
+                t0 = page.evaluate("() => performance.now()")
+                box.press("Enter")
+                time.sleep(1.5)
+                times = page.evaluate("() => window.__times")
+                burst = [t for t in times if t >= t0]
+                end = burst[0] if burst else t0
+                for t in burst[1:]:
+                    if t - end > 60.0:
+                        break
+                    end = t
+                redraws.append(end - t0)
+            return {
+                "bytes_first_picture": float(first_bytes),
+                "fps": (f1 - f0) / seconds,
+                "animation_frames_per_s": (k1 - k0) / seconds,
+                "messages_per_s": (m1 - m0) / seconds,
+                "slider_to_redraw_ms": statistics.median(redraws),
+            }
+        finally:
+            browser.close()
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--width", type=int, default=1280)
+    parser.add_argument("--height", type=int, default=720)
+    parser.add_argument("--seconds", type=float, default=5.0)
+    args = parser.parse_args()
+    r = measure(args.width, args.height, args.seconds)
+    print(" ".join(f"{k}={v:.1f}" for k, v in r.items()), flush=True)
+
+
+if __name__ == "__main__":
+    main()
