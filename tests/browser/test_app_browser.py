@@ -352,7 +352,7 @@ def test_the_canvas_carries_the_diagrams_event_labels_and_legend(tab: AppPage) -
         assert name in texts, name
     assert any("axes of barycentric" in t for t in texts)
     assert {"rod 1, lab (t)", "rod 2, lab (t)"} <= set(texts)
-    assert {"t", "x", "t'", "x'"} <= set(texts)  # the axes are named in each frame's coordinates
+    assert {"t", "x", "t′", "x′"} <= set(texts)  # the axes are named in each frame's coordinates
     assert {"x", "x′"} <= set(texts)  # and so are the rulers
 
 

@@ -11,6 +11,7 @@ import threading
 import time
 from collections.abc import Callable
 
+import numpy as np
 import viser
 
 import rigidrel_core as rr
@@ -246,6 +247,10 @@ class Session:
         distance = abs(pose.position[1])
         camera.near, camera.far = 0.1 * distance, 3.0 * distance  # depth resolution for the page's layers
         camera.up_direction, camera.fov = pose.up, pose.fov
+        # viser skips an assignment equal to the camera state it last heard of, and that lags the
+        # browser while the user orbits: step aside first, so the exact pose is always sent
+        aside = np.array([0.0, 1e-3 * distance, 0.0])
+        camera.position, camera.look_at = np.asarray(pose.position) + aside, np.asarray(pose.look_at) + aside
         camera.position, camera.look_at = pose.position, pose.look_at
 
     def draw_now(self, force_plots: bool = False) -> None:
