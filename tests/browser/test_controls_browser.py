@@ -166,17 +166,16 @@ def test_r_and_the_button_reset_the_view(tab: AppPage, shots: Path) -> None:
         tab.page.mouse.move(x + 240, y - 120, steps=8)  # the lecturer orbits the view away
         tab.page.mouse.up()
         moved = tab.canvas_after(picture)
-        away = np.abs(rod_bounds(moved, True) - rod_bounds(home, True)).max()
-        assert away >= 24, (reset, away)
+        assert np.abs(rod_bounds(moved) - rod_bounds(picture)).max() >= 8, reset  # the view moved
         if reset == "key":
             press(tab, "r")
         else:
             tab.page.locator("button:visible", has_text="Reset view").click()
-        picture = back = tab.canvas_after(moved)
-        # back where the view started, within what the browser's orbit damping adds after the drag
-        # (the orbit coasts on after the mouse is released; viser's client owns that motion)
+        picture = back = tab.canvas_after(moved)  # the reset changed the picture (else this times out)
+        # and the lanes' rods are back where the view started, within what the browser's orbit
+        # damping adds after the drag (the orbit coasts on after release; viser's client owns that)
         off = np.abs(rod_bounds(back, True) - rod_bounds(home, True)).max()
-        assert off <= 24 and off < away / 2, (reset, off, away)
+        assert off <= 16, (reset, off)
     tab.page.screenshot(path=str(shots / "view_reset.png"))
 
 
