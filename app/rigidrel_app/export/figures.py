@@ -7,6 +7,7 @@ black curves, the rods' world tubes lightly shaded, events named as in the paper
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -198,19 +199,21 @@ def print_style(chart: Chart) -> dict[str, Any]:
     return fig
 
 
-def write_figures(out: Path) -> list[Path]:
-    """Every figure as SVG and PNG in ``out`` (one Chromium for all, through kaleido)."""
+def write_figures(out: Path, figures: Sequence[PaperFigure] | None = None, captions: bool = False) -> list[Path]:
+    """Figures (default: the paper's) as SVG and PNG in ``out`` (one Chromium for all, through
+    kaleido); with ``captions``, each caption too as ``<name>.txt``."""
     from .images import image_writer
 
     out.mkdir(parents=True, exist_ok=True)
-    written = []
+    written: list[Path] = []
     with image_writer() as writer:
-        for fig in paper_figures():
+        for fig in paper_figures() if figures is None else figures:
             plotly_fig = print_style(fig.chart)
             for ext in ("svg", "png"):
-                written.append(
-                    writer.write(
-                        plotly_fig, out / f"{fig.name}.{ext}", *FIGURE_SIZE, scale=_PNG_SCALE if ext == "png" else 1.0
-                    )
-                )
+                scale = _PNG_SCALE if ext == "png" else 1.0
+                written.append(writer.write(plotly_fig, out / f"{fig.name}.{ext}", *FIGURE_SIZE, scale=scale))
+            if captions:
+                caption = out / f"{fig.name}.txt"
+                caption.write_text(fig.caption + "\n")
+                written.append(caption)
     return written

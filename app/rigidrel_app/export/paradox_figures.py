@@ -15,7 +15,7 @@ import rigidrel_core as rr
 
 from ..view.sampling import sample_worldlines
 from ..view.vocabulary import Area, Chart, Dash, Item, Label, Points, Polyline, Style, event_label
-from .figures import _PLOT_AREA, _PNG_SCALE, FIGURE_SIZE, FIGURE_TOLERANCE_PX, PaperFigure, _ranges, print_style
+from .figures import _PLOT_AREA, _PNG_SCALE, FIGURE_TOLERANCE_PX, PaperFigure, _ranges, write_figures
 
 _BLACK = "#000000"
 _GREY = "#555555"
@@ -116,17 +116,4 @@ def paradox_figures() -> list[PaperFigure]:
 
 def write_paradox_figures(out: Path) -> list[Path]:
     """Both figures as SVG and PNG in ``out``, and their captions as ``<name>.txt``."""
-    from .images import image_writer
-
-    out.mkdir(parents=True, exist_ok=True)
-    written = []
-    with image_writer() as writer:
-        for fig in paradox_figures():
-            plotly_fig = print_style(fig.chart)
-            for ext in ("svg", "png"):
-                scale = _PNG_SCALE if ext == "png" else 1.0
-                written.append(writer.write(plotly_fig, out / f"{fig.name}.{ext}", *FIGURE_SIZE, scale=scale))
-            caption = out / f"{fig.name}.txt"
-            caption.write_text(fig.caption + "\n")
-            written.append(caption)
-    return written
+    return write_figures(out, paradox_figures(), captions=True)
