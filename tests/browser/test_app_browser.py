@@ -324,7 +324,7 @@ def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) 
     # an unchanged lane one pixel over (antialiasing of the stripes and labels).
     before_lab, before_frame = rod_extents(img0[lab_rows]), rod_extents(img0[frame_rows])
     after_lab, after_frame = rod_extents(img1[lab_rows]), rod_extents(img1[frame_rows])
-    assert np.abs(after_lab - before_lab).max() <= 3, (before_lab, after_lab)
+    assert np.abs(after_lab - before_lab).max() <= 3, (before_lab, after_lab, layout.height, img0.shape)
     assert np.abs(after_frame - before_frame).max() >= 8, (before_frame, after_frame)
 
 

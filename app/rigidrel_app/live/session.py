@@ -19,7 +19,7 @@ import rigidrel_core as rr
 from ..backends.viser import PageRenderer
 from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
 from ..view.lanes import LanePicture
-from ..view.layout import LEGEND_ROWS, NORMAL, PRESENTER, CanvasLayout, canvas_layout
+from ..view.layout import LEGEND_ROWS, NORMAL, PRESENTER, CanvasLayout, CanvasSize, canvas_layout
 from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, build_drawing, nice_step
 from ..view.scene_view import readout_markdown as readout
 from ..view.state import Resolved, Settings, frame_choice, frame_choices, preset_step, scene_presets
@@ -49,6 +49,9 @@ class Session:
         self.presenter = False
         """Presenter mode (key F): the control panel minimized, the projector theme."""
         self.layout: CanvasLayout | None = None
+        camera = client.camera
+        self.canvas_size = CanvasSize(float(camera.image_width), float(camera.image_height))
+        """The canvas in CSS px, which the page is laid out in (its camera reports rendered pixels)."""
         self.chart_frames: tuple[ChartFrame, ...] = ()
         """Each diagram's data -> page px (the plot areas of this layout)."""
         self.static_picture = PagePicture()
@@ -79,15 +82,17 @@ class Session:
             with self.lock:
                 if self.closed or self.drawn is None or self.layout is None:
                     return
-                if (camera.image_width, camera.image_height) != (self.layout.width, self.layout.height):
+                size = self.canvas_size.reported(camera.image_width, camera.image_height)
+                resized = (size.width, size.height) != (self.canvas_size.width, self.canvas_size.height)
+                self.canvas_size = size  # a step of the client's adaptive resolution is not a new page
+                if resized:
                     with self.client.atomic():
                         self._apply(self.drawn.resolved, refit=True)
 
     def _canvas_layout(self, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
         """The page for this tab's canvas size and mode."""
-        camera = self.client.camera
         theme = PRESENTER if self.presenter else NORMAL
-        return canvas_layout(camera.image_width, camera.image_height, theme, legend_rows)
+        return canvas_layout(self.canvas_size.width, self.canvas_size.height, theme, legend_rows)
 
     # ------------------------------------------------------------------ state
     def change(self, new: Settings, refit: bool | None = None) -> None:

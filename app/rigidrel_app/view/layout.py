@@ -141,6 +141,36 @@ def rod_height(theme: Theme) -> float:
     return 1.2 * theme.text_px
 
 
+#: The share of the screen's pixel ratio viser's client renders its canvas at: it steps down to 0.875
+#: and 0.75 while frames come slowly and back up when they come fast again. Its camera reports the
+#: canvas' size in rendered pixels, so each such step looks like a smaller canvas, though the page
+#: (in CSS px, where the labels are sized) has not changed.
+ADAPTIVE_RESOLUTIONS = (1.0, 0.875, 0.75)
+
+
+@dataclass(frozen=True)
+class CanvasSize:
+    """A canvas' size in CSS px, and the rendered pixels per CSS px it was last reported at (1 for
+    the first report: the client starts at full resolution)."""
+
+    width: float
+    height: float
+    resolution: float = 1.0
+
+    def reported(self, pixels_wide: int, pixels_high: int) -> CanvasSize:
+        """The canvas after its camera reports ``pixels_wide`` × ``pixels_high`` rendered pixels.
+
+        The same CSS size at another of :data:`ADAPTIVE_RESOLUTIONS` (each side within 1.5 px, the
+        browser's rounding) is a change of resolution only; anything else is a new size, at the
+        resolution last known.
+        """
+        for r in ADAPTIVE_RESOLUTIONS:
+            if abs(pixels_wide - self.width * r) <= 1.5 and abs(pixels_high - self.height * r) <= 1.5:
+                return CanvasSize(self.width, self.height, r)
+        r = self.resolution
+        return CanvasSize(pixels_wide / r, pixels_high / r, r)
+
+
 def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
     """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at the bottom."""
     w, h = max(width, 320.0), max(height, 240.0)
