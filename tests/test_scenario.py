@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 import rigidrel_core as rr
+from rigidrel_app.view.layers import DEFAULT_LAYERS, Layer
 from rigidrel_app.view.scenario import ScenarioError, format_scenario, parse_scenario
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings, build, presets
 
@@ -33,6 +34,19 @@ def test_frames_with_spaces_and_velocities() -> None:
     assert "--frame 'rod before'" in format_scenario(s)
 
 
+def test_layers_are_written_only_when_not_the_default() -> None:
+    plain = parse_scenario("wall-collision --v 0.6").settings
+    assert plain.layers == DEFAULT_LAYERS and "--layers" not in format_scenario(plain)
+    with_signals = plain.with_layers(DEFAULT_LAYERS | {Layer.SIGNALS})
+    line = format_scenario(with_signals)
+    assert "--layers world-tube,interior-lines,light-cone,signals," in line
+    assert parse_scenario(line).settings == with_signals
+    assert build(with_signals).layers == with_signals.layers  # the drawing is told what to show
+    bare = plain.with_layers(frozenset())
+    assert "--layers none" in format_scenario(bare) and parse_scenario(format_scenario(bare)).settings == bare
+    assert plain.with_scene("rod-collision").layers == plain.layers  # a new scene keeps the layers
+
+
 def test_optional_parameter_omitted() -> None:
     s = parse_scenario("velocity-change --v-initial 0.2 --v-final -0.5 --a-front none").settings
     assert s.value("a_front") is None
@@ -53,6 +67,8 @@ def test_optional_parameter_omitted() -> None:
         ("wall-collision --t nan", "t", "finite"),
         ("rod-collision --v1 0.2 --v2 0.5", "v2", "less than"),
         ("wall-collision --frame 'rod", "scene", "cannot read"),
+        ("wall-collision --layers signals,cones", "layers", "'cones' is not a layer"),
+        ("wall-collision --layers", "layers", "needs a value"),
     ],
 )
 def test_bad_lines_name_the_flag(line: str, parameter: str, words: str) -> None:

@@ -4,10 +4,12 @@
 
 The scene's name, then one ``--flag value`` per parameter (the flag is the parameter's name with
 ``-`` for ``_``; ``none`` omits an optional one), then ``--frame`` (a preset name, quoted if it has
-spaces, or a velocity in (-1, 1)), ``--t`` (the time shown, in that frame) and ``--overlay``
-(the description's comparison curve). ``rigidrel serve``, lesson files and the app's scenario box
-all read this syntax, and the app shows the current state in it, so a state can be copied from a
-student's screen into a lesson. Everything is generated from the scene registry.
+spaces, or a velocity in (-1, 1)), ``--t`` (the time shown, in that frame), ``--overlay``
+(the description's comparison curve) and ``--layers`` (the layers drawn, comma-separated, written
+only when they are not the default: ``--layers world-tube,light-cone,signals``). ``rigidrel
+serve``, lesson files and the app's scenario box all read this syntax, and the app shows the
+current state in it, so a state can be copied from a student's screen into a lesson. Everything
+is generated from the scene registry.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from dataclasses import dataclass
 
 import rigidrel_core as rr
 
+from .layers import DEFAULT_LAYERS, Layer
 from .state import CUSTOM_FRAME, Settings, format_value
 
 
@@ -61,6 +64,8 @@ def format_scenario(settings: Settings, t: float | None = None) -> str:
         parts += ["--frame", _quote(settings.frame)]
     if settings.overlay:
         parts.append("--overlay")
+    if settings.layers != DEFAULT_LAYERS:
+        parts += ["--layers", ",".join(layer.value for layer in Layer if layer in settings.layers) or "none"]
     if t is not None:
         parts += ["--t", format_value(t)]
     return " ".join(parts)
@@ -74,6 +79,20 @@ def _number(name: str, text: str, allowed: str) -> float:
     if not math.isfinite(value):
         raise ScenarioError(name, f"--{name} needs {allowed}; got {text!r}")
     return value
+
+
+def _layers(text: str) -> frozenset[Layer]:
+    """``world-tube,signals`` -> those layers; ``none`` -> no layer."""
+    if text.strip().lower() == "none":
+        return frozenset()
+    names = [n.strip() for n in text.split(",")]
+    known = {layer.value: layer for layer in Layer}
+    for n in names:
+        if n not in known:
+            raise ScenarioError(
+                "layers", f"{n!r} is not a layer; --layers takes a comma-separated list of {', '.join(known)} (or none)"
+            )
+    return frozenset(known[n] for n in names)
 
 
 def parse_scenario(text: str) -> Scenario:
@@ -95,6 +114,7 @@ def parse_scenario(text: str) -> Scenario:
     frame: str | None = None
     beta = 0.0
     overlay = False
+    layers = DEFAULT_LAYERS
     t: float | None = None
     i = 0
     while i < len(rest):
@@ -102,8 +122,8 @@ def parse_scenario(text: str) -> Scenario:
         if name == "--overlay":
             overlay, i = True, i + 1
             continue
-        if name not in (*by_flag, "--frame", "--t"):
-            options = ", ".join((*by_flag, "--frame", "--t", "--overlay"))
+        if name not in (*by_flag, "--frame", "--t", "--layers"):
+            options = ", ".join((*by_flag, "--frame", "--t", "--overlay", "--layers"))
             raise ScenarioError("scene", f"{name!r} is not an option of {kind}; its options are {options}")
         if i + 1 >= len(rest):
             raise ScenarioError(name.lstrip("-"), f"{name} needs a value")
@@ -120,13 +140,15 @@ def parse_scenario(text: str) -> Scenario:
                 frame = CUSTOM_FRAME
         elif name == "--t":
             t = _number("t", value, "a time (a finite number)")
+        elif name == "--layers":
+            layers = _layers(value)
         else:
             p = by_flag[name]
             if p.optional and value.strip().lower() == "none":
                 values[p.name] = None
             else:
                 values[p.name] = _number(p.name.replace("_", "-"), value, p.allowed())
-    settings = Settings(kind, tuple(values.items()), frame, beta, overlay)
+    settings = Settings(kind, tuple(values.items()), frame, beta, overlay, layers)
     try:
         d.build(**settings.parameters())
     except ValueError as exc:

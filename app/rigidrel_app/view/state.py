@@ -16,6 +16,8 @@ from types import MappingProxyType
 
 import rigidrel_core as rr
 
+from .layers import DEFAULT_LAYERS, Layer
+
 #: The frame dropdown's entry for a frame set by the β slider.
 CUSTOM_FRAME = "custom (β slider)"
 #: The range of the app's β slider (the core, the exports and the command line take any |β| < 1).
@@ -51,6 +53,8 @@ class Settings:
     """The custom frame's velocity."""
     overlay: bool = False
     """Draw the description's comparison scene (Fig. 1's dashed impulsive curve) dashed over the scene."""
+    layers: frozenset[Layer] = DEFAULT_LAYERS
+    """What the drawings show (:class:`~.layers.Layer`): the light signals are off unless asked for."""
     _by_name: Mapping[str, float | None] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -81,7 +85,10 @@ class Settings:
         if kind == self.scene:
             return self
         keep = {p.name: self._by_name[p.name] for p in rr.describe(kind).parameters if p.name in self._by_name}
-        return Settings(kind, tuple(keep.items()), None, self.beta, False)
+        return Settings(kind, tuple(keep.items()), None, self.beta, False, self.layers)
+
+    def with_layers(self, layers: frozenset[Layer]) -> Settings:
+        return replace(self, layers=frozenset(layers))
 
 
 @dataclass(frozen=True)
@@ -91,6 +98,8 @@ class Resolved:
     scene: rr.Scene
     frame: rr.Frame
     overlay: rr.Scene | None = None
+    layers: frozenset[Layer] = DEFAULT_LAYERS
+    """The layers the settings ask to be drawn."""
 
 
 def presets() -> dict[str, Settings]:
@@ -188,7 +197,7 @@ def build(s: Settings) -> Resolved:
         frame = scene.frame(s.frame)
     d = s.description
     overlay = d.overlay.build(scene.parameters) if s.overlay and d.overlay is not None else None
-    return Resolved(scene, frame, overlay)
+    return Resolved(scene, frame, overlay, s.layers)
 
 
 def resolve(s: Settings) -> Resolved | str:
