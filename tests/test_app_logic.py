@@ -31,7 +31,7 @@ from rigidrel_app.view.canvas import (
 )
 from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from rigidrel_app.view.lanes import ROD_SHARE, TICK_FRACTIONS, lane_geometry, lane_state
-from rigidrel_app.view.layout import NORMAL, PRESENTER, CanvasSize, Rect, canvas_layout
+from rigidrel_app.view.layout import NORMAL, PRESENTER, Rect, canvas_layout
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
 from rigidrel_app.view.scene_view import (
     CLOCK_RULE,
@@ -452,24 +452,6 @@ def test_the_canvas_layout_keeps_text_large_and_regions_apart() -> None:
         for a, b in zip(layout.charts, layout.charts[1:]):
             assert a.outer.x1 < b.outer.x0
         assert all(c.plot.width > 150 and c.plot.height > 120 for c in layout.charts), (w, h, theme.name)
-
-
-def test_a_step_of_the_clients_resolution_is_not_a_new_canvas() -> None:
-    """viser's client renders at 0.875 or 0.75 of its pixel ratio while frames are slow; its camera
-    then reports fewer pixels, but the page in CSS px, which the labels are sized in, is the same."""
-    first = CanvasSize(1096.0, 900.0)
-    slow = first.reported(959, 787)  # 1096 x 900 at 0.875, rounded down by the browser
-    assert (slow.width, slow.height, slow.resolution) == (1096.0, 900.0, 0.875)
-    slower = slow.reported(822, 675)
-    assert (slower.width, slower.height, slower.resolution) == (1096.0, 900.0, 0.75)
-    # the window resized while at 0.75: the new size is read in CSS px at that resolution
-    resized = slower.reported(600, 450)
-    assert (resized.width, resized.height, resized.resolution) == (800.0, 600.0, 0.75)
-    assert resized.reported(800, 600) == CanvasSize(800.0, 600.0, 1.0)  # fast again: full resolution
-    # a real resize is a new size, even one close to a step (only one side matches)
-    assert first.reported(959, 900) == CanvasSize(959.0, 900.0, 1.0)
-    assert first.reported(1096, 787) == CanvasSize(1096.0, 787.0, 1.0)
-    assert first.reported(1096, 900) == first
 
 
 @pytest.mark.parametrize("settings", ALL_SETTINGS, ids=scene_id)

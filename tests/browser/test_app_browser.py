@@ -19,6 +19,7 @@ import pytest
 from PIL import Image
 
 import rigidrel_core as rr
+from rigidrel_app.live.canvas_report import LABEL as CANVAS_REPORT_LABEL
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings
@@ -35,11 +36,11 @@ PIXEL_TOLERANCE = 3.0
 class AppPage:
     """One browser tab on the app, with the server-side session behind it."""
 
-    def __init__(self, browser: Any, app: App) -> None:
+    def __init__(self, browser: Any, app: App, device_scale_factor: float = 1.0) -> None:
         self.app = app
         self.errors: list[str] = []
         before = set(app.sessions)
-        self.page = browser.new_page(viewport=VIEWPORT)
+        self.page = browser.new_page(viewport=VIEWPORT, device_scale_factor=device_scale_factor)
         self.external: list[str] = []
 
         def route(r: Any) -> None:  # the app needs nothing beyond its own server
@@ -303,6 +304,26 @@ def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
     assert _changed_fraction(after[top:], img[top:]) > 1e-3
     tab.page.screenshot(path=str(shots / "after_V_0.85.png"))
     assert tab.errors == []
+
+
+@pytest.mark.parametrize("density", [2.0, 1.25])
+def test_a_high_density_screen_gets_the_page_laid_out_in_css_px(browser: Any, app_server: App, density: float) -> None:
+    """A laptop's screen has 2 pixels per CSS px, a zoomed page 1.25: the camera reports rendered pixels,
+    the page reports its CSS size, and the layout (whose labels are sized in CSS px) uses the latter."""
+    tab = AppPage(browser, app_server, device_scale_factor=density)
+    try:
+        css = tab.page.evaluate(
+            "() => { const c = document.querySelector('canvas[data-engine]'); return [c.clientWidth, c.clientHeight]; }"
+        )
+        s = tab.session
+        wait_until(lambda: s.layout is not None and (s.layout.width, s.layout.height) == (css[0], css[1]))
+        camera = s.client.camera
+        assert abs(camera.image_height - density * css[1]) <= 1.5  # what viser alone would have laid out in
+        assert s.canvas_size.measured
+        assert not tab.page.locator(f'label:text-is("{CANVAS_REPORT_LABEL}")').is_visible()  # the box is hidden
+        assert tab.errors == []
+    finally:
+        tab.close()
 
 
 def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) -> None:

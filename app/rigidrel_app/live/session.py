@@ -25,6 +25,7 @@ from ..view.scene_view import readout_markdown as readout
 from ..view.state import Resolved, Settings, frame_choice, frame_choices, preset_step, scene_presets
 from ..view.state import resolve as resolve_settings
 from ..view.vocabulary import markdown_literal
+from .canvas_report import add_canvas_report, decode
 from .controls import Place, build_controls, notice_place, time_entry
 from .keys import Action
 from .playback import Playback
@@ -66,6 +67,7 @@ class Session:
             assert isinstance(resolved, Resolved)
         with client.atomic():
             self.controls = build_controls(client.gui, self.settings)
+            self.canvas_report = add_canvas_report(client.gui)
             self.renderer = PageRenderer(client.scene)
             self.playback = Playback.start((-1.0, 1.0))
             self._wire()
@@ -82,12 +84,26 @@ class Session:
             with self.lock:
                 if self.closed or self.drawn is None or self.layout is None:
                     return
-                size = self.canvas_size.reported(camera.image_width, camera.image_height)
-                resized = (size.width, size.height) != (self.canvas_size.width, self.canvas_size.height)
-                self.canvas_size = size  # a step of the client's adaptive resolution is not a new page
-                if resized:
-                    with self.client.atomic():
-                        self._apply(self.drawn.resolved, refit=True)
+                # a step of the client's adaptive resolution is not a new page
+                self._resize(self.canvas_size.reported(camera.image_width, camera.image_height))
+
+        @self.canvas_report.on_update
+        def _(event: viser.GuiEvent) -> None:
+            size = decode(self.canvas_report.value)
+            if event.client is None or size is None:  # not a size any page of ours sends: ignored
+                return
+            with self.lock:
+                if not self.closed:
+                    self._resize(self.canvas_size.measured_at(size.width, size.height, size.resolution))
+            self.client.flush()
+
+    def _resize(self, size: CanvasSize) -> None:
+        """Take the canvas' new size (CSS px); lay the page out again if it changed."""
+        resized = (size.width, size.height) != (self.canvas_size.width, self.canvas_size.height)
+        self.canvas_size = size
+        if resized and self.drawn is not None and self.layout is not None:
+            with self.client.atomic():
+                self._apply(self.drawn.resolved, refit=True)
 
     def _canvas_layout(self, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
         """The page for this tab's canvas size and mode."""

@@ -146,29 +146,42 @@ def rod_height(theme: Theme) -> float:
 #: canvas' size in rendered pixels, so each such step looks like a smaller canvas, though the page
 #: (in CSS px, where the labels are sized) has not changed.
 ADAPTIVE_RESOLUTIONS = (1.0, 0.875, 0.75)
+#: What one step of the client's adaptive resolution multiplies the rendered pixels by (1 first).
+RESOLUTION_STEPS = (1.0, *sorted({b / a for a in ADAPTIVE_RESOLUTIONS for b in ADAPTIVE_RESOLUTIONS} - {1.0}))
 
 
 @dataclass(frozen=True)
 class CanvasSize:
-    """A canvas' size in CSS px, and the rendered pixels per CSS px it was last reported at (1 for
-    the first report: the client starts at full resolution)."""
+    """A canvas' size in CSS px, and how many rendered pixels its camera reports per CSS px.
+
+    The page measures both itself when it can (:meth:`measured_at`); the camera's reports in
+    rendered pixels (:meth:`reported`) then only tell a new resolution from a new size. Before the
+    page has spoken, one rendered pixel is taken for one CSS px.
+    """
 
     width: float
     height: float
     resolution: float = 1.0
+    measured: bool = False
+    """The page measured this size itself (else it was inferred from the camera's pixels)."""
 
     def reported(self, pixels_wide: int, pixels_high: int) -> CanvasSize:
         """The canvas after its camera reports ``pixels_wide`` × ``pixels_high`` rendered pixels.
 
-        The same CSS size at another of :data:`ADAPTIVE_RESOLUTIONS` (each side within 1.5 px, the
-        browser's rounding) is a change of resolution only; anything else is a new size, at the
-        resolution last known.
+        The same CSS size after a step of the client's adaptive resolution (:data:`RESOLUTION_STEPS`,
+        each side within 1.5 px, the browser's rounding) is a change of resolution only; anything
+        else is a new size, read at the resolution last known.
         """
-        for r in ADAPTIVE_RESOLUTIONS:
+        for step in RESOLUTION_STEPS:
+            r = self.resolution * step
             if abs(pixels_wide - self.width * r) <= 1.5 and abs(pixels_high - self.height * r) <= 1.5:
-                return CanvasSize(self.width, self.height, r)
+                return CanvasSize(self.width, self.height, r, self.measured)
         r = self.resolution
-        return CanvasSize(pixels_wide / r, pixels_high / r, r)
+        return CanvasSize(pixels_wide / r, pixels_high / r, r, False)
+
+    def measured_at(self, width: float, height: float, resolution: float) -> CanvasSize:
+        """The canvas as the page measured it: CSS px, and rendered pixels per CSS px."""
+        return CanvasSize(width, height, resolution, True)
 
 
 def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:

@@ -1,0 +1,85 @@
+"""The page tells the server its canvas' size in CSS px.
+
+viser's camera reports the canvas in rendered pixels: CSS px times the screen's pixel ratio (2 on
+most laptops sold today) times the client's adaptive resolution (0.75 to 1 of that while frames
+are slow). The page is laid out in CSS px, the unit its labels are sized in, so on a high-density
+screen a layout in rendered pixels draws the diagrams at twice the labels' scale and off the canvas.
+No viser message carries the pixel ratio, so the page measures its own canvas: a hidden number box
+of the panel receives ``(width * SIZE_BASE + height) * RATIO_BASE + ratio`` (CSS px, rounded, and
+the rendered pixels per CSS px in thousandths, measured at the same instant) whenever that changes,
+written by a small script (viser's HTML element runs no ``<script>``; an image that fails to load
+runs its ``onerror``). Until it has spoken, or if it never does, and while the panel is minimised
+(presenter mode: the box is not on the page), the server infers the size from the camera's pixels
+(:meth:`~rigidrel_app.view.layout.CanvasSize.reported`) at the ratio it last heard of.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import viser
+
+#: ``(width * SIZE_BASE + height) * RATIO_BASE + ratio``: one number carries the two sides (each
+#: below ``SIZE_BASE`` px) and the pixel ratio in thousandths (below ``RATIO_BASE``), under 2**53.
+SIZE_BASE = 65536
+RATIO_BASE = 8192
+#: The label of the hidden box (never shown; named for the page's inspector).
+LABEL = "canvas size (CSS px)"
+#: How often the page looks at its canvas' size, in ms (it sends only a change).
+POLL_MS = 250
+
+
+@dataclass(frozen=True)
+class CssSize:
+    """A canvas as its page measured it."""
+
+    width: int
+    """CSS px."""
+    height: int
+    resolution: float
+    """Rendered pixels per CSS px (the screen's pixel ratio times the client's adaptive share)."""
+
+
+def encode(width: int, height: int, resolution: float) -> int:
+    """What the page's script sends (the inverse of :func:`decode`)."""
+    return (width * SIZE_BASE + height) * RATIO_BASE + round(resolution * 1000)
+
+
+def decode(value: float) -> CssSize | None:
+    """The size a page sent, or ``None`` for a value no page of ours sends (ignored)."""
+    if not (isinstance(value, (int, float)) and 0 < value < SIZE_BASE * SIZE_BASE * RATIO_BASE):
+        return None  # NaN fails the comparison too
+    n = int(value)
+    if n != value:
+        return None
+    size, ratio = divmod(n, RATIO_BASE)
+    width, height = divmod(size, SIZE_BASE)
+    if not (1 <= width < SIZE_BASE and 1 <= height < SIZE_BASE and ratio >= 100):  # a ratio of at least 0.1
+        return None
+    return CssSize(width, height, ratio / 1000)
+
+
+def script(uuid: str) -> str:
+    """The HTML that hides the box (its whole row) and keeps it up to date with the canvas."""
+    js = (
+        "(function () { var last = ''; setInterval(function () { "
+        f"var box = document.getElementById('{uuid}'); "
+        "var canvas = document.querySelector('canvas[data-engine]'); "
+        "if (!box || !canvas || !canvas.clientWidth || !canvas.clientHeight) { return; } "
+        "var h = Math.round(canvas.clientHeight); "
+        f"var v = String((Math.round(canvas.clientWidth) * {SIZE_BASE} + h) * {RATIO_BASE} "
+        "+ Math.round(1000 * canvas.height / canvas.clientHeight)); "
+        "if (v === last) { return; } last = v; "
+        "var set = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value').set; "
+        "set.call(box, v); box.dispatchEvent(new Event('input', { bubbles: true })); "
+        f"}}, {POLL_MS}); }})()"
+    )
+    style = f'<style>div:has(> .mantine-Flex-root [for="{uuid}"]) {{ display: none !important; }}</style>'
+    return f'{style}<img alt="" src="data:," style="display: none" onerror="{js}">'
+
+
+def add_canvas_report(gui: viser.GuiApi) -> viser.GuiNumberHandle[float]:
+    """The hidden box the page writes its canvas' CSS size into (read it with :func:`decode`)."""
+    box = gui.add_number(LABEL, 0.0, step=1.0, order=1e9)
+    gui.add_html(script(box._impl.uuid), order=1e9 + 1)  # viser has no public id of a handle
+    return box
