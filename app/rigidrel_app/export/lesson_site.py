@@ -18,6 +18,7 @@ import html
 import json
 import shutil
 from collections.abc import Callable
+from dataclasses import replace
 from pathlib import Path
 
 import plotly
@@ -138,8 +139,9 @@ def export_lesson(
     write(out / "index.html", _index_page(lesson))
     for k, step in enumerate(lesson.steps):
         name = step_name(k)
-        resolved = step.resolved
+        resolved = replace(step.resolved, layers=step.layers)  # what the step shows, as the live app does
         write(out / f"{name}-lanes.html", record_lanes_html(build_drawing(resolved), seconds, fps))
-        write(out / f"{name}-diagram.html", diagram_html(settings_for(resolved.scene, resolved.frame), "beside"))
+        settings = settings_for(resolved.scene, resolved.frame).with_layers(step.layers)
+        write(out / f"{name}-diagram.html", diagram_html(settings, "beside"))
         write(out / f"{name}.html", _step_page(lesson, k, step))
     return written
