@@ -53,6 +53,28 @@ EXPECTED: dict[str, list[str]] = {
         "T_F   lab t = +0.750000 x = -0.250000   rod after t' = +0.750000",
         "(the far end (F) stops changing velocity)",
     ],
+    "04_light_signals.py": [
+        "light from the contact reaches the far end at lab (t, x) = (2.0, 2.0)",
+        # the time order of T_1 and the contact depends on the frame; the arrival is after T_1' in each
+        "lab         T_1 t = -0.7500 (before the contact)  T_1' t = +0.7500  arrival t = +2.0000",
+        "rod before  T_1 t = +0.0000 (at the same time as the contact)  T_1' t = +1.8750  arrival t = +4.0000",
+        "rod after   T_1 t = -1.8750 (before the contact)  T_1' t = +0.0000  arrival t = +1.0000",
+        "(the lab's arrival carried over: +4.0000)",
+        "contact -> T_1: spacelike, interval -1.0000",
+        "contact -> T_1': spacelike, interval -1.0000",
+        "no signal from the contact can have caused it, in any frame",
+    ],
+    "05_bell_spaceships.py": [
+        "rear ends in the ships' frame after: 1.250000 apart",
+        "string rest length: 0.900000 -> 1.150000",
+        "the string breaks at strain 0.2: lab (t, x) = (1.055865, 0.350500)",
+    ],
+    "06_pole_barn.py": [
+        "Born-rigid pole: rear end at rest at x = 1.000000",
+        "is never entirely inside",
+        "signal-limited pole: rear end at rest at x = 0.333333",
+        "is entirely inside the barn at some instant",
+    ],
 }
 
 FILES = sorted(p.name for p in EXAMPLES.glob("*.py"))
