@@ -4,7 +4,8 @@
 
 Writes assets/app.png and assets/app-presenter.png (the app in headless Chromium at 1280x720,
 with its control panel and in presenter mode: Fig. 3's collision seen from the barycentric
-frame, paused mid-collision), assets/figures/fig1-4.{svg,png} (the paper's figures),
+frame, paused mid-collision), assets/scenes/<scene>{,-presenter}.png (every registered scene at
+its defaults, halfway through its events, in both modes), assets/figures/fig1-4.{svg,png} (the paper's figures),
 assets/figures/{bell-spaceships,pole-barn}.{svg,png,txt} (the paradoxes) and
 assets/rod-collision-lanes.gif (the lanes of that collision).
 """
@@ -12,6 +13,7 @@ assets/rod-collision-lanes.gif (the lanes of that collision).
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import rigidrel_core as rr
 from rigidrel_app.backends.raster import write_gif
@@ -20,7 +22,7 @@ from rigidrel_app.export.paradox_figures import write_paradox_figures
 from rigidrel_app.export.recording import playback_times
 from rigidrel_app.live.server import App
 from rigidrel_app.view.scene_view import build_drawing
-from rigidrel_app.view.state import Resolved, presets
+from rigidrel_app.view.state import Resolved, Settings, presets
 from tests.browser.conftest import CHROMIUM, launch_chromium
 from tests.viser_client import wait_until
 
@@ -31,39 +33,74 @@ ASSETS = Path(__file__).resolve().parents[1] / "assets"
 SCREENSHOT = {"width": 1280, "height": 720}
 
 
-def app_screenshots(normal: Path, presenter: Path) -> None:
-    """The app as a lecturer opens it, then in presenter mode (key F), each once its canvas has
-    been laid out for its size and has stopped changing (its labels drawn)."""
+class _Tab:
+    """One headless tab on a fresh app server, and a way to photograph its canvas once it is still."""
+
+    def __init__(self, app: App, browser: Any) -> None:
+        self.page = browser.new_page(viewport=SCREENSHOT)
+        self.page.goto(app.url)
+        self.page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
+        self.session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
+        wait_until(lambda: self.session.drawn is not None, timeout=60)
+        for button in self.page.locator(".mantine-Notification-root button").all():
+            button.click()  # the headless browser's "software WebGL" notice
+
+    def show(self, settings: Settings, now: float | None = None) -> None:
+        """``settings`` paused at ``now`` (by default halfway between the scene's first and last event)."""
+        with self.session.lock:
+            self.session.change(settings, refit=True)
+            drawn = self.session.drawn
+            assert drawn is not None and drawn.resolved.scene.kind == settings.scene, settings
+            if now is None:
+                times = [t for t, _ in drawn.resolved.scene.events_in(drawn.resolved.frame).values()]
+                now = 0.5 * (min(times) + max(times))
+            self.session.seek(now)
+
+    def presenter(self, on: bool) -> None:
+        if self.session.presenter != on:
+            self.page.evaluate("() => document.activeElement && document.activeElement.blur()")
+            self.page.keyboard.press("f")
+            wait_until(lambda: self.session.presenter == on, timeout=60)
+
+    def photograph(self, path: Path) -> None:
+        """Once laid out for the mode's canvas (wide without the panel) and no longer changing."""
+
+        def laid_out() -> bool:
+            layout = self.session.layout
+            if layout is None:
+                return False
+            return layout.width >= 1200 if self.session.presenter else layout.width < 1000
+
+        wait_until(laid_out, timeout=60)
+        shots: list[bytes] = [b""]
+
+        def still() -> bool:  # the same PNG bytes twice: the canvas has stopped changing
+            shots.append(self.page.screenshot(type="png"))
+            return shots[-1] == shots[-2]
+
+        wait_until(still, timeout=120, interval=1.5)
+        path.write_bytes(shots[-1])
+
+
+def app_screenshots(normal: Path, presenter: Path, scenes: Path) -> None:
+    """The app as a lecturer opens it, then in presenter mode (key F): Fig. 3's collision from the
+    barycentric frame paused mid-collision; then every registered scene at its defaults in both modes
+    (``scenes/<kind>.png`` and ``scenes/<kind>-presenter.png``)."""
     from playwright.sync_api import sync_playwright
 
+    scenes.mkdir(parents=True, exist_ok=True)
     with App(port=0) as app, sync_playwright() as p:
         browser = launch_chromium(p)
-        page = browser.new_page(viewport=SCREENSHOT)  # type: ignore[arg-type]
-        page.goto(app.url)
-        page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
-        session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
-        wait_until(lambda: session.drawn is not None, timeout=60)
-        for button in page.locator(".mantine-Notification-root button").all():
-            button.click()  # the headless browser's "software WebGL" notice
-        with session.lock:
-            session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)  # its default, barycentric frame
-            session.seek(0.15)
-
-        def settled(path: Path, width: int) -> None:
-            wait_until(lambda: session.layout is not None and session.layout.width >= width, timeout=60)
-            shots: list[bytes] = [b""]
-
-            def still() -> bool:  # the same PNG bytes twice: the canvas has stopped changing
-                shots.append(page.screenshot(type="png"))
-                return shots[-1] == shots[-2]
-
-            wait_until(still, timeout=120, interval=1.5)
-            page.screenshot(path=str(path))
-
-        settled(normal, 900)
-        page.evaluate("() => document.activeElement && document.activeElement.blur()")
-        page.keyboard.press("f")
-        settled(presenter, 1200)
+        tab = _Tab(app, browser)
+        tab.show(presets()["Fig. 3: collision, M2 = 2 M1"], 0.15)  # its default, barycentric frame
+        tab.photograph(normal)
+        tab.presenter(True)
+        tab.photograph(presenter)
+        for kind in rr.scene_descriptions():
+            for on in (False, True):
+                tab.presenter(on)
+                tab.show(Settings(kind))
+                tab.photograph(scenes / f"{kind}{'-presenter' if on else ''}.png")
         browser.close()
 
 
@@ -75,7 +112,7 @@ def lanes_gif(path: Path) -> None:
 
 def main() -> None:
     ASSETS.mkdir(exist_ok=True)
-    app_screenshots(ASSETS / "app.png", ASSETS / "app-presenter.png")
+    app_screenshots(ASSETS / "app.png", ASSETS / "app-presenter.png", ASSETS / "scenes")
     write_figures(ASSETS / "figures")
     write_paradox_figures(ASSETS / "figures")
     lanes_gif(ASSETS / "rod-collision-lanes.gif")
