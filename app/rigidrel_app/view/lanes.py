@@ -17,7 +17,18 @@ import numpy.typing as npt
 import rigidrel_core as rr
 
 from .layout import LaneLayout
-from .vocabulary import DOOR_COLOR, FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, Label, Segments, Style
+from .vocabulary import (
+    DOOR_COLOR,
+    FRAME_COLOR,
+    INK,
+    LIGHT_COLOR,
+    ROD_COLORS,
+    WALL_COLOR,
+    FloatArray,
+    Label,
+    Segments,
+    Style,
+)
 
 #: Material points with ticks: every tenth of the rest length.
 TICK_FRACTIONS = np.linspace(0.0, 1.0, 11)
@@ -329,3 +340,39 @@ def lane_picture(
     ruler = Segments(rx0, rz0, rx1, rz1, Style(FRAME_COLOR, 1.5))
     text = st.labels[0].text if st.labels else title
     return LanePicture(tuple(boxes), (rods, ruler), dials, text, win, scale, origin, step, ends)
+
+
+# ---------------------------------------------------------------------- light pulses in the lanes
+#: A pulse is a bright bar this many CSS px wide, reaching this share of the rod's height above and below it.
+PULSE_PX = 8.0
+PULSE_REACH = 0.95
+#: Vertical strokes per pulse bar (the lane's lines have one width: the bar is a row of them).
+PULSE_STROKES = 5
+
+
+def pulse_segments(pulses: FloatArray, arrivals: FloatArray, lane: LanePicture, place: LaneLayout) -> Segments:
+    """The light pulses in flight and the far ends' arrival places in one lane, in page px.
+
+    ``pulses``: the x of each pulse at the lane's time (the frame's x, from
+    :meth:`.signals.Signals.pulse_positions`): each a bright bar across the rod, ``PULSE_PX`` wide.
+    ``arrivals``: the x where the light reaches each far end (the frame's x of the arrival event
+    ``S``): a dashed line from the ruler to the dials, so the rod's far end can be seen to get
+    there (or to have changed already) before the light does. Both clipped to the lane's track.
+    """
+    track = place.track
+    half = PULSE_REACH * place.rod_px
+    offsets = np.linspace(-0.5, 0.5, PULSE_STROKES) * (PULSE_PX - 2.0)
+    px = lane.origin_px + np.asarray(pulses, dtype=float) * lane.scale
+    bar_x = (px[:, None] + offsets[None, :]).ravel()
+    bar_x = bar_x[(bar_x >= track.x0) & (bar_x <= track.x1)]
+    top = place.dial_z[1] + place.clock_px
+    steps = np.linspace(place.ruler_z, top, 9)  # four dashes
+    ax = lane.origin_px + np.asarray(arrivals, dtype=float) * lane.scale
+    ax = ax[(ax >= track.x0) & (ax <= track.x1)]
+    dash_x = np.repeat(ax, 4)
+    dash_z0 = np.tile(steps[0:-1:2], ax.size)
+    dash_z1 = np.tile(steps[1::2], ax.size)
+    x = np.concatenate([bar_x, dash_x])
+    z0 = np.concatenate([np.full(bar_x.size, place.rod_z - half), dash_z0])
+    z1 = np.concatenate([np.full(bar_x.size, place.rod_z + half), dash_z1])
+    return Segments(x, z0, x.copy(), z1, Style(LIGHT_COLOR, 2.0))
