@@ -9,6 +9,7 @@ the frame's own x, and a mark at the origin event's place.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -350,7 +351,9 @@ PULSE_REACH = 0.95
 PULSE_STROKES = 5
 
 
-def pulse_segments(pulses: FloatArray, arrivals: FloatArray, lane: LanePicture, place: LaneLayout) -> Segments:
+def pulse_segments(
+    pulses: Sequence[float], arrivals: Sequence[float], lane: LanePicture, place: LaneLayout
+) -> Segments:
     """The light pulses in flight and the far ends' arrival places in one lane, in page px.
 
     ``pulses``: the x of each pulse at the lane's time (the frame's x, from
@@ -358,21 +361,33 @@ def pulse_segments(pulses: FloatArray, arrivals: FloatArray, lane: LanePicture, 
     ``arrivals``: the x where the light reaches each far end (the frame's x of the arrival event
     ``S``): a dashed line from the ruler to the dials, so the rod's far end can be seen to get
     there (or to have changed already) before the light does. Both clipped to the lane's track.
+    Plain floats, not numpy: a handful of segments every playback frame.
     """
     track = place.track
-    half = PULSE_REACH * place.rod_px
-    offsets = np.linspace(-0.5, 0.5, PULSE_STROKES) * (PULSE_PX - 2.0)
-    px = lane.origin_px + np.asarray(pulses, dtype=float) * lane.scale
-    bar_x = (px[:, None] + offsets[None, :]).ravel()
-    bar_x = bar_x[(bar_x >= track.x0) & (bar_x <= track.x1)]
-    top = place.dial_z[1] + place.clock_px
-    steps = np.linspace(place.ruler_z, top, 9)  # four dashes
-    ax = lane.origin_px + np.asarray(arrivals, dtype=float) * lane.scale
-    ax = ax[(ax >= track.x0) & (ax <= track.x1)]
-    dash_x = np.repeat(ax, 4)
-    dash_z0 = np.tile(steps[0:-1:2], ax.size)
-    dash_z1 = np.tile(steps[1::2], ax.size)
-    x = np.concatenate([bar_x, dash_x])
-    z0 = np.concatenate([np.full(bar_x.size, place.rod_z - half), dash_z0])
-    z1 = np.concatenate([np.full(bar_x.size, place.rod_z + half), dash_z1])
-    return Segments(x, z0, x.copy(), z1, Style(LIGHT_COLOR, 2.0))
+    lo, hi = track.x0, track.x1
+    x: list[float] = []
+    z0: list[float] = []
+    z1: list[float] = []
+    bottom, top = place.rod_z - PULSE_REACH * place.rod_px, place.rod_z + PULSE_REACH * place.rod_px
+    for p in pulses:
+        centre = lane.origin_px + float(p) * lane.scale
+        for dx in _PULSE_OFFSETS:
+            if lo <= centre + dx <= hi:
+                x.append(centre + dx)
+                z0.append(bottom)
+                z1.append(top)
+    dash_top = place.dial_z[1] + place.clock_px
+    step = (dash_top - place.ruler_z) / 8.0  # four dashes, four gaps
+    for a in arrivals:
+        ax = lane.origin_px + float(a) * lane.scale
+        if lo <= ax <= hi:
+            for k in range(4):
+                x.append(ax)
+                z0.append(place.ruler_z + 2 * k * step)
+                z1.append(place.ruler_z + (2 * k + 1) * step)
+    xs = np.array(x, dtype=np.float64)
+    return Segments(xs, np.array(z0, dtype=np.float64), xs, np.array(z1, dtype=np.float64), Style(LIGHT_COLOR, 2.0))
+
+
+#: The pulse bar's strokes, page px from its centre.
+_PULSE_OFFSETS = tuple(float(v) for v in np.linspace(-0.5, 0.5, PULSE_STROKES) * (PULSE_PX - 2.0))

@@ -161,8 +161,7 @@ class Drawn:
             return lanes
         out = []
         for lane, place, sig in zip(lanes, layout.lanes, self.signals, strict=True):
-            arrivals = np.array([leg.arrival[1] for leg in sig.legs if leg.name.startswith("S")])
-            light = pulse_segments(sig.pulse_positions(now), arrivals, lane, place)
+            light = pulse_segments(sig.pulses_at(now), sig.far_arrivals, lane, place)
             out.append(replace(lane, segments=(*lane.segments, light)))
         return out
 
