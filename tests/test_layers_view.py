@@ -13,7 +13,7 @@ import rigidrel_core as rr
 from rigidrel_app.view.canvas import chart_frame, chart_picture
 from rigidrel_app.view.layers import DEFAULT_LAYERS, Layer
 from rigidrel_app.view.layout import canvas_layout
-from rigidrel_app.view.placement import overlaps, place_labels
+from rigidrel_app.view.placement import Box, _to_px, label_box, overlaps, place_labels
 from rigidrel_app.view.scene_view import (
     LENGTH_HIDDEN_NOTE,
     LENGTH_HIDDEN_TITLE,
@@ -167,3 +167,35 @@ def test_the_readout_gives_the_verdicts_only_with_the_signals() -> None:
         assert line in text
     assert "outside the light cone of the contact" in text
     assert text in readout_markdown(on)
+
+
+@pytest.mark.parametrize("size", [(940, 720), (1580, 1080)])
+@pytest.mark.parametrize("beta", [0.0, 0.99, -0.99])
+def test_no_label_covers_a_marker_as_the_canvas_draws_it(size: tuple[float, float], beta: float) -> None:
+    """The arrivals' and events' names clear every marker at the size the canvas draws it (larger
+    than plotly's), in the crash with its signals."""
+    layout = canvas_layout(*size)
+    s = replace(CRASH, frame=CUSTOM_FRAME if beta else "rod before", beta=beta).with_layers(ALL)
+    r = resolve(s)
+    assert isinstance(r, Resolved)
+    d = build_drawing(r, areas=layout.chart_areas)
+    for chart, place in zip(d.charts[:2], layout.charts[:2], strict=True):
+        f = chart_frame(chart, place.plot)
+        area = (f.plot.width, f.plot.height)
+        placed = place_labels(chart, area)
+
+        def inside(x: float, y: float, area: tuple[float, float] = area) -> bool:
+            return 0.0 <= x <= area[0] and 0.0 <= y <= area[1]
+
+        marks = []
+        for it in placed.items:
+            if isinstance(it, Points):
+                px, py = _to_px(placed, area, np.asarray(it.x, float), np.asarray(it.y, float))
+                h = 0.5 * max(it.size * layout.theme.line_scale * 1.2, 0.6 * layout.theme.text_px)
+                marks += [Box(a - h, b - h, a + h, b + h) for a, b in zip(px, py, strict=True) if inside(a, b)]
+        for label in (it for it in placed.items if isinstance(it, Label)):
+            lx, ly = _to_px(placed, area, np.array([label.x]), np.array([label.y]))
+            if not inside(float(lx[0]), float(ly[0])):
+                continue  # the canvas draws neither a label nor a marker whose point is off the plot
+            box = label_box(placed, area, label)
+            assert not any(box.meets(m) for m in marks), (size, beta, label.text)
