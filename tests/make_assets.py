@@ -7,7 +7,8 @@ with its control panel and in presenter mode: Fig. 3's collision seen from the b
 frame, paused mid-collision), assets/scenes/<scene>{,-presenter}.png (every registered scene at
 its defaults, halfway through its events, in both modes), assets/figures/fig1-4.{svg,png} (the paper's figures),
 assets/figures/{bell-spaceships,pole-barn}.{svg,png,txt} (the paradoxes) and
-assets/rod-collision-lanes.gif (the lanes of that collision).
+assets/rod-collision-lanes.gif (the lanes of that collision) and assets/wall-crash-signals.png
+(Sec. 5's crash into a wall with the light-signal layer, in the lab and the rod's frame before).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from rigidrel_app.export.figures import write_figures
 from rigidrel_app.export.paradox_figures import write_paradox_figures
 from rigidrel_app.export.recording import playback_times
 from rigidrel_app.live.server import App
+from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, Settings, presets
 from tests.browser.conftest import CHROMIUM, launch_chromium
@@ -104,6 +106,51 @@ def app_screenshots(normal: Path, presenter: Path, scenes: Path) -> None:
         browser.close()
 
 
+#: The crash with every layer, light signals included: the rod's frame before the crash is the
+#: chosen one (at ε = 0 the rod's frame after is the lab's).
+WALL_CRASH_SIGNALS = presets()["Sec. 5: crash into a wall, V = 0.6"].with_layers(frozenset(Layer))
+WALL_CRASH_FRAME = "rod before"
+#: Lab time shown: the pulse from the contact is half-way along the rod in the lab.
+WALL_CRASH_NOW = 0.5
+
+
+def signals_screenshot(
+    path: Path,
+    settings: Settings = WALL_CRASH_SIGNALS,
+    frame: str = WALL_CRASH_FRAME,
+    now: float = WALL_CRASH_NOW,
+    viewport: dict[str, int] = SCREENSHOT,
+) -> None:
+    """The app showing ``settings`` in ``frame`` with the light signals, paused at ``now``, once
+    its canvas has stopped changing."""
+    from dataclasses import replace
+
+    from playwright.sync_api import sync_playwright
+
+    with App(port=0) as app, sync_playwright() as p:
+        browser = launch_chromium(p)
+        page = browser.new_page(viewport=viewport)  # type: ignore[arg-type]
+        page.goto(app.url)
+        page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
+        session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
+        wait_until(lambda: session.drawn is not None, timeout=60)
+        for button in page.locator(".mantine-Notification-root button").all():
+            button.click()
+        with session.lock:
+            session.change(replace(settings, frame=frame), refit=True)
+            session.seek(now)
+        wait_until(lambda: session.layout is not None and session.layout.width >= 0.5 * viewport["width"], timeout=60)
+        shots: list[bytes] = [b""]
+
+        def still() -> bool:
+            shots.append(page.screenshot(type="png"))
+            return shots[-1] == shots[-2]
+
+        wait_until(still, timeout=120, interval=1.5)
+        page.screenshot(path=str(path))
+        browser.close()
+
+
 def lanes_gif(path: Path) -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
     drawn = build_drawing(Resolved(scene, scene.frame("barycentric")))
@@ -116,6 +163,7 @@ def main() -> None:
     write_figures(ASSETS / "figures")
     write_paradox_figures(ASSETS / "figures")
     lanes_gif(ASSETS / "rod-collision-lanes.gif")
+    signals_screenshot(ASSETS / "wall-crash-signals.png")
     print(f"assets written: {ASSETS} ({CHROMIUM})")
 
 

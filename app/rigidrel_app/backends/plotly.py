@@ -143,6 +143,9 @@ def chart_layout(chart: Chart, height: int | None = None) -> dict[str, Any]:
                 "title": {"text": layout[ax]["title"]["text"], "font": {"size": TITLE_PX}},
             }
         )
+    if not chart.x_title and not chart.y_title:  # a hidden panel's note: no axes
+        for ax in ("xaxis", "yaxis"):
+            layout[ax].update({"visible": False})
     if height is not None:
         layout["height"] = height
     return layout

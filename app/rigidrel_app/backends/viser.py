@@ -363,11 +363,13 @@ def _to_linear(colors: np.ndarray) -> np.ndarray:
 
 
 class _LineNodes:
-    """Line-segments nodes keyed by (width, layer): one node per key, its points replaced in place."""
+    """Line-segments nodes keyed by (width, layer): one node per key, its points replaced in place.
+    Layer ``k`` is drawn at depth ``y - k _LAYER_Y`` (the camera looks along +y: smaller is nearer)."""
 
-    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
+    def __init__(self, scene: viser.SceneApi, prefix: str, y: float = 0.0) -> None:
         self._scene = scene
         self._prefix = prefix
+        self._y = y
         self._nodes: dict[tuple[float, int], viser.LineSegmentsHandle] = {}
         self._counts: dict[tuple[float, int], int] = {}
         self.points = np.zeros((0, 2, 3), dtype=np.float32)
@@ -385,7 +387,7 @@ class _LineNodes:
             cols = np.concatenate([m.colors for m in members])
             pts = np.empty((len(pts2), 2, 3), dtype=np.float32)
             pts[:, :, 0] = pts2[:, :, 0]
-            pts[:, :, 1] = -_LAYER_Y * layer
+            pts[:, :, 1] = self._y - _LAYER_Y * layer
             pts[:, :, 2] = pts2[:, :, 1]
             shown.append(pts)
             colors = np.repeat(_to_linear(cols)[:, None, :], 2, axis=1)
@@ -489,7 +491,9 @@ class PageRenderer:
         self.static_texts = _Texts(scene, "/page/text")
         self._moving_lines = _LineNodes(scene, "/page/moving")
         self._moving_dots = _DotNodes(scene, "/page/moving_dots")
-        self._lane_lines = _LineNodes(scene, "/page/lanes")
+        # in front of the rods' boxes (which reach to y = -_PAGE_ROD_DEPTH / 2): the ticks, clock
+        # hands and light pulses are never inside a box, where the depth test may hide them
+        self._lane_lines = _LineNodes(scene, "/page/lanes", _LANE_LINES_Y)
         self.titles = _Texts(scene, "/page/title")
         self._rulers = (_Ruler(scene, "/page/ruler0"), _Ruler(scene, "/page/ruler1"))
         self._boxes: viser.BatchedMeshHandle | None = None

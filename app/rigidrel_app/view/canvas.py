@@ -420,8 +420,18 @@ def wrap(text: str, px: float, width: float) -> str:
 
 def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme) -> PagePicture:
     """The frame of the plot area, a faint grid at round numbers, their numbers, the axis names
-    (t and x, or t′ and x′) at the axes' ends and the chart's title above."""
+    (t and x, or t′ and x′) at the axes' ends and the chart's title above. A chart without axis
+    names (a hidden panel's note) gets its title only."""
     p = f.plot
+    title = PageText(
+        layout.outer.x0 + 2.0,
+        layout.outer.z1,
+        wrap(page_text(chart.title), theme.title_px, layout.outer.width),
+        theme.title_px,
+        "top-left",
+    )
+    if not chart.x_title and not chart.y_title:
+        return PagePicture((), (), (title,))
     ink = color_rgb(theme.ink)
     grid = color_rgb(theme.grid)
     xt = nice_ticks(*f.x_range, p.width / (5.5 * theme.text_px))
@@ -453,15 +463,7 @@ def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme)
     texts.append(
         PageText(p.x0 + 4.0, p.z1 - 0.8 * theme.text_px, page_text(chart.y_title), theme.text_px, "center-left")
     )
-    texts.append(
-        PageText(
-            layout.outer.x0 + 2.0,
-            layout.outer.z1,
-            wrap(page_text(chart.title), theme.title_px, layout.outer.width),
-            theme.title_px,
-            "top-left",
-        )
-    )
+    texts.append(title)
     return PagePicture(lines, (), tuple(texts))
 
 

@@ -8,14 +8,16 @@ one unit of each equally long, so light moves at 45 degrees.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 import rigidrel_core as rr
 
+from .layers import DEFAULT_LAYERS, Layer
 from .placement import place_labels
 from .sampling import ADAPTIVE, Sampler
+from .signals import signal_items, signals_in
 from .vocabulary import (
     DOOR_COLOR,
     FRAME_COLOR,
@@ -155,12 +157,16 @@ def minkowski_static(
     sampler: Sampler = ADAPTIVE,
     overlay_label: str = "comparison",
     area_px: tuple[float, float] | None = None,
+    layers: frozenset[Layer] = DEFAULT_LAYERS,
 ) -> Chart:
     """Everything in a Minkowski diagram that does not move with playback.
 
     ``overlay`` is a second scene drawn dashed (Fig. 1's impulsive curve), named ``overlay_label``.
     The event labels are placed (:func:`~rigidrel_app.view.placement.place_labels`) for a plot
-    area of ``area_px`` CSS pixels; ``None``: ``panel_px`` wide at equal scales.
+    area of ``area_px`` CSS pixels; ``None``: ``panel_px`` wide at equal scales. ``layers`` says
+    what is drawn (:class:`~.layers.Layer`): the origin's light cone, the other frame's axes, the
+    world tubes and end worldlines, the interior worldlines, and the light signals of
+    :mod:`.signals` (their arrivals named and placed with the events' labels, so none overprints).
     """
     frame = view.frame
     px_per_x = panel_px / max(x_range[1] - x_range[0], 1e-300)
@@ -168,14 +174,19 @@ def minkowski_static(
     t0, t1 = t_range
     # light cone of the origin event (start / kick / contact): x = +-t
     span = max(abs(t0), abs(t1), abs(x_range[0]), abs(x_range[1])) * 2.0
-    cone = Style(LIGHT_COLOR, 1.5, "dash", name="light cone of the origin", group="cone")
-    items.append(Polyline(np.array([-span, span]), np.array([-span, span]), cone))
-    items.append(
-        Polyline(np.array([-span, span]), np.array([span, -span]), Style(LIGHT_COLOR, 1.5, "dash", group="cone"))
-    )
+    signal_layer: tuple[Item, ...] = ()
+    if Layer.SIGNALS in layers:  # the key event's future, shaded under everything else
+        signal_layer = signal_items(signals_in(scene, frame), x_range, t_range)
+        items.extend(i for i in signal_layer if isinstance(i, Area))
+    if Layer.LIGHT_CONE in layers:
+        cone = Style(LIGHT_COLOR, 1.5, "dash", name="light cone of the origin", group="cone")
+        items.append(Polyline(np.array([-span, span]), np.array([-span, span]), cone))
+        items.append(
+            Polyline(np.array([-span, span]), np.array([span, -span]), Style(LIGHT_COLOR, 1.5, "dash", group="cone"))
+        )
     # the other frame's time and space axes (x_o = 0 and t_o = 0), through the origin
     other = typeset_prime(view.other_prime)
-    if view.compares:
+    if view.compares and Layer.OTHER_AXES in layers:
         ax = Style(
             FRAME_COLOR,
             1.5,
@@ -199,22 +210,27 @@ def minkowski_static(
             style = Style(DOOR_COLOR, 2.5, "dash", name=obstacle.name)
         items.append(Polyline(obstacle.positions(tt, frame), tt, style))
     # world tubes and worldlines
-    lines = sampler.worldlines(scene, frame, DIAGRAM_FRACTIONS, t_range, px_per_x)
-    for r, rod in enumerate(scene.rods):
+    tube, interior = Layer.WORLD_TUBE in layers, Layer.INTERIOR_LINES in layers
+    fractions = DIAGRAM_FRACTIONS if interior else DIAGRAM_FRACTIONS[[0, -1]]
+    lines = sampler.worldlines(scene, frame, fractions, t_range, px_per_x) if tube or interior else []
+    for r, rod in enumerate(scene.rods if lines else ()):
         color = ROD_COLORS[r % len(ROD_COLORS)]
         left, right = lines[r][0], lines[r][-1]
-        items.append(
-            Area(
-                np.concatenate([left.x, right.x[::-1]]),
-                np.concatenate([left.t, right.t[::-1]]),
-                Style(rgba(color, 0.16), 0.0, group=rod.name),
+        if tube:
+            items.append(
+                Area(
+                    np.concatenate([left.x, right.x[::-1]]),
+                    np.concatenate([left.t, right.t[::-1]]),
+                    Style(rgba(color, 0.16), 0.0, group=rod.name),
+                )
             )
-        )
-        for k in range(1, DIAGRAM_FRACTIONS.size - 1):
+        for k in range(1, fractions.size - 1):
             w = lines[r][k]
-            items.append(Polyline(w.x, w.t, Style(color, 1.0, opacity=0.7, group=rod.name)))
-        items.append(Polyline(left.x, left.t, Style(color, 2.5, name=rod.name, group=rod.name)))
-        items.append(Polyline(right.x, right.t, Style(color, 2.5, group=rod.name)))
+            name = rod.name if not tube and k == 1 else None  # the legend names the rod by what is drawn
+            items.append(Polyline(w.x, w.t, Style(color, 1.0, opacity=0.7, name=name, group=rod.name)))
+        if tube:
+            items.append(Polyline(left.x, left.t, Style(color, 2.5, name=rod.name, group=rod.name)))
+            items.append(Polyline(right.x, right.t, Style(color, 2.5, group=rod.name)))
     if overlay is not None:  # e.g. Fig. 1's dashed curve: the impulsive start to the same V
         for r, (left, right) in enumerate(sampler.worldlines(overlay, frame, np.array([0.0, 1.0]), t_range, px_per_x)):
             items.append(Polyline(left.x, left.t, Style(INK, 1.5, "dash", group="overlay")))
@@ -228,6 +244,11 @@ def minkowski_static(
         items.append(Points(ex, et, Style(INK, name="events", group="events"), size=7))
         for name, (t, x) in events.items():
             items.append(Label(x, t, event_label(name), Style(INK), size=EVENT_LABEL_PX, movable=True))
+    for it in signal_layer:  # the rays and arrivals over the worldlines; their names placed with the events'
+        if isinstance(it, Label):
+            items.append(replace(it, size=EVENT_LABEL_PX, movable=True))
+        elif not isinstance(it, Area):
+            items.append(it)
     chart = Chart(
         items=tuple(items),
         x_title=f"x{typeset_prime(view.prime)}",

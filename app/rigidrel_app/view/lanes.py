@@ -9,6 +9,7 @@ the frame's own x, and a mark at the origin event's place.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -17,7 +18,18 @@ import numpy.typing as npt
 import rigidrel_core as rr
 
 from .layout import LaneLayout
-from .vocabulary import DOOR_COLOR, FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, FloatArray, Label, Segments, Style
+from .vocabulary import (
+    DOOR_COLOR,
+    FRAME_COLOR,
+    INK,
+    LIGHT_COLOR,
+    ROD_COLORS,
+    WALL_COLOR,
+    FloatArray,
+    Label,
+    Segments,
+    Style,
+)
 
 #: Material points with ticks: every tenth of the rest length.
 TICK_FRACTIONS = np.linspace(0.0, 1.0, 11)
@@ -329,3 +341,53 @@ def lane_picture(
     ruler = Segments(rx0, rz0, rx1, rz1, Style(FRAME_COLOR, 1.5))
     text = st.labels[0].text if st.labels else title
     return LanePicture(tuple(boxes), (rods, ruler), dials, text, win, scale, origin, step, ends)
+
+
+# ---------------------------------------------------------------------- light pulses in the lanes
+#: A pulse is a bright bar this many CSS px wide, reaching this share of the rod's height above and below it.
+PULSE_PX = 8.0
+PULSE_REACH = 0.95
+#: Vertical strokes per pulse bar (the lane's lines have one width: the bar is a row of them).
+PULSE_STROKES = 5
+
+
+def pulse_segments(
+    pulses: Sequence[float], arrivals: Sequence[float], lane: LanePicture, place: LaneLayout
+) -> Segments:
+    """The light pulses in flight and the far ends' arrival places in one lane, in page px.
+
+    ``pulses``: the x of each pulse at the lane's time (the frame's x, from
+    :meth:`.signals.Signals.pulse_positions`): each a bright bar across the rod, ``PULSE_PX`` wide.
+    ``arrivals``: the x where the light reaches each far end (the frame's x of the arrival event
+    ``S``): a dashed line from the ruler to the dials, so the rod's far end can be seen to get
+    there (or to have changed already) before the light does. Both clipped to the lane's track.
+    Plain floats, not numpy: a handful of segments every playback frame.
+    """
+    track = place.track
+    lo, hi = track.x0, track.x1
+    x: list[float] = []
+    z0: list[float] = []
+    z1: list[float] = []
+    bottom, top = place.rod_z - PULSE_REACH * place.rod_px, place.rod_z + PULSE_REACH * place.rod_px
+    for p in pulses:
+        centre = lane.origin_px + float(p) * lane.scale
+        for dx in _PULSE_OFFSETS:
+            if lo <= centre + dx <= hi:
+                x.append(centre + dx)
+                z0.append(bottom)
+                z1.append(top)
+    dash_top = place.dial_z[1] + place.clock_px
+    step = (dash_top - place.ruler_z) / 8.0  # four dashes, four gaps
+    for a in arrivals:
+        ax = lane.origin_px + float(a) * lane.scale
+        if lo <= ax <= hi:
+            for k in range(4):
+                x.append(ax)
+                z0.append(place.ruler_z + 2 * k * step)
+                z1.append(place.ruler_z + (2 * k + 1) * step)
+    xs = np.array(x, dtype=np.float64)
+    return Segments(xs, np.array(z0, dtype=np.float64), xs, np.array(z1, dtype=np.float64), Style(LIGHT_COLOR, 2.0))
+
+
+#: The pulse bar's strokes, page px from its centre.
+_PULSE_OFFSETS = tuple(float(v) for v in np.linspace(-0.5, 0.5, PULSE_STROKES) * (PULSE_PX - 2.0))

@@ -33,6 +33,10 @@ LINE_EM = 1.45
 GAP_PX = 6.0
 #: Room kept around a box when testing it against curves and other boxes, CSS pixels.
 MARGIN_PX = 1.5
+#: A marker's box per its size: the app's canvas draws markers this much larger than plotly does
+#: (:func:`rigidrel_app.view.canvas.items_picture`: size x line scale 4/3 x 1.2), so text clear of
+#: the larger one is clear of both.
+MARKER_SCALE = 1.6
 #: Rings of candidate spots: the first touches the point, the others need a leader line.
 RINGS = 6
 #: Rings tried when none of the first :data:`RINGS` has a spot clear of labels and markers.
@@ -245,7 +249,7 @@ def obstacles(chart: Chart, area: tuple[float, float]) -> Obstacles:
             ys1.append(by)
         elif isinstance(item, Points):
             px, py = _to_px(chart, area, np.asarray(item.x, float), np.asarray(item.y, float))
-            h = 0.5 * item.size
+            h = 0.5 * item.size * MARKER_SCALE
             markers.extend(Box(a - h, b - h, a + h, b + h) for a, b in zip(px, py, strict=True))
         elif isinstance(item, Area):
             continue  # a light fill: text may sit on it

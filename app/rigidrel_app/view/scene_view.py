@@ -35,12 +35,15 @@ from .lanes import (
     lane_picture,
     lane_state,
     lane_static,
+    pulse_segments,
     steady_width,
 )
+from .layers import Layer
 from .layout import CanvasLayout
 from .sampling import ADAPTIVE, Sampler
+from .signals import Signals, signals_in, verdict_lines
 from .state import Resolved, format_value
-from .vocabulary import ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style
+from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style
 
 #: Lane heights (z, in lane units): the lab on top, the chosen frame below.
 LAB_Z = 0.55
@@ -86,6 +89,9 @@ class Drawn:
     """The lab diagram's view and the chosen frame's (their relative frames composed once)."""
     steady_widths: tuple[float, float] = (1.0, 1.0)
     """Each lane's x width (the frame's units) while no rod is too contracted to see (:func:`lanes.steady_width`)."""
+    signals: tuple[Signals, Signals] | None = None
+    """The light signals in the lab and in the chosen frame (:func:`.signals.signals_in`), if the
+    :attr:`~.layers.Layer.SIGNALS` layer is shown: the lanes' pulses, at no cost to the core per frame."""
 
     @property
     def x_range(self) -> tuple[float, float]:
@@ -122,15 +128,18 @@ class Drawn:
         """
         r = self.resolved
         lab_view, frame_view = self.views
-        lengths = np.stack([r.scene.lengths(now, f) for f in (_LAB, r.frame)])  # (2, rods)
-        length_top = self.length_chart.y_range[1]
+        now_lines = Layer.SIMULTANEITY in r.layers
         lab = minkowski_now(lab_view, now, self.span, ends[0])
         frame = minkowski_now(frame_view, now, self.span, ends[1])
-        length = length_now(now, length_top, lengths)
+        if Layer.LENGTH_PANEL in r.layers:
+            lengths = np.stack([r.scene.lengths(now, f) for f in (_LAB, r.frame)])  # (2, rods)
+            length = _now_items(length_now(now, self.length_chart.y_range[1], lengths), *_at(now, lengths.T))
+        else:
+            length = ()
         return (
-            _now_items(lab, ends[0], np.full(ends[0].shape, now)),
-            _now_items(frame, ends[1], np.full(ends[1].shape, now)),
-            _now_items(length, np.full(lengths.T.shape, now), lengths.T),
+            _now_items(lab, ends[0], np.full(ends[0].shape, now), now_lines),
+            _now_items(frame, ends[1], np.full(ends[1].shape, now), now_lines),
+            length,
         )
 
     def legend(self) -> list[LegendEntry]:
@@ -144,19 +153,33 @@ class Drawn:
         r = self.resolved
         titles = lane_titles(r, now)
         frames = (_LAB, r.frame)
-        return [
+        lanes = [
             lane_picture(r.scene, f, now, w, place, title)
             for f, w, place, title in zip(frames, self.steady_widths, layout.lanes, titles, strict=True)
         ]
+        if self.signals is None:
+            return lanes
+        out = []
+        for lane, place, sig in zip(lanes, layout.lanes, self.signals, strict=True):
+            light = pulse_segments(sig.pulses_at(now), sig.far_arrivals, lane, place)
+            out.append(replace(lane, segments=(*lane.segments, light)))
+        return out
 
 
-def _now_items(items: tuple[Item, ...], x: FloatArray, y: FloatArray) -> tuple[Item, ...]:
+def _at(now: float, values: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """The length chart's markers: ``(rods, frames)`` lengths at time ``now`` as ``(x, y)``."""
+    return np.full(values.shape, now), values
+
+
+def _now_items(items: tuple[Item, ...], x: FloatArray, y: FloatArray, now_lines: bool = True) -> tuple[Item, ...]:
     """A diagram's moving items with the rods' current places as diamonds in each rod's colour
     (``x``, ``y``: ``(rods, k)`` data coordinates) instead of dots, and now-lines named without
-    their number."""
+    their number (left out unless ``now_lines``: the simultaneity layer hidden)."""
     out: list[Item] = []
     for it in items:
         if isinstance(it, Points):
+            continue
+        if not now_lines and isinstance(it, Polyline):
             continue
         if isinstance(it, Polyline | Segments) and it.style.name is not None:
             it = replace(it, style=replace(it.style, name=it.style.name.split(" = ")[0]))
@@ -193,7 +216,8 @@ def build_drawing(
     lab = _LAB
     a0, a1 = scene.time_window(lab)
     b0, b1 = scene.time_window(frame)
-    window = _round_outward(min(a0, b0), max(a1, b1))
+    signals = (signals_in(scene, lab), signals_in(scene, frame)) if Layer.SIGNALS in resolved.layers else None
+    window = _round_outward(min(a0, b0), _signals_end(max(a1, b1), min(a0, b0), signals))
     geometry = lane_geometry(scene)
 
     def lane_range(f: rr.Frame) -> tuple[float, float]:
@@ -205,9 +229,17 @@ def build_drawing(
     lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window, plot_area)
     fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window, plot_area)
     label = overlay_label(scene)
-    lab_chart = minkowski_static(scene, lab_view, lab_t, lab_x, plot_area[0], resolved.overlay, sampler, label)
-    frame_chart = minkowski_static(scene, frame_view, fr_t, fr_x, plot_area[0], resolved.overlay, sampler, label)
-    length_chart = length_static(scene, lab, frame, window, length_area, sampler)
+    layers = resolved.layers
+    lab_chart = minkowski_static(
+        scene, lab_view, lab_t, lab_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers
+    )
+    frame_chart = minkowski_static(
+        scene, frame_view, fr_t, fr_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers
+    )
+    if Layer.LENGTH_PANEL in layers:
+        length_chart = length_static(scene, lab, frame, window, length_area, sampler)
+    else:
+        length_chart = hidden_chart(LENGTH_HIDDEN_TITLE, LENGTH_HIDDEN_NOTE)
     return Drawn(
         resolved=resolved,
         window=window,
@@ -222,7 +254,37 @@ def build_drawing(
             steady_width(scene, lab, _round_outward(a0, a1)),
             steady_width(scene, frame, _round_outward(b0, b1)),
         ),
+        signals=signals,
     )
+
+
+#: The length panel's place when its layer is hidden: a title and a note say so and how to bring it
+#: back (the panel keeps its place, so the diagrams do not jump while a lecturer toggles it).
+LENGTH_HIDDEN_TITLE = "Equal-time length (hidden)"
+LENGTH_HIDDEN_NOTE = "The length panel is hidden:\nturn on its layer to show it."
+
+
+def hidden_chart(title: str, note: str) -> Chart:
+    """A panel that shows only ``title`` and ``note`` (no axes: its chart has no axis names)."""
+    text = Label(0.5, 0.5, note, Style(INK), anchor="center", size=15.0)
+    return Chart(items=(text,), x_title="", y_title="", x_range=(0.0, 1.0), y_range=(0.0, 1.0), title=title)
+
+
+#: The window grows to show the light reach the far ends only if that adds at most this many windows.
+SIGNAL_REACH = 1.5
+
+
+def _signals_end(end: float, start: float, signals: tuple[Signals, Signals] | None) -> float:
+    """The window's end, late enough for the light from the key event to reach every far end
+    (the arrivals ``S`` in both frames), unless that would squeeze the diagrams: then the rays run
+    off the top and the readout gives the arrival in numbers."""
+    if signals is None:
+        return end
+    arrivals = [leg.arrival[0] for sig in signals for leg in sig.legs if leg.name.startswith("S")]
+    late = max(arrivals, default=end)
+    if late <= end or late - end > SIGNAL_REACH * (end - start):
+        return end
+    return late + 0.05 * (late - start)
 
 
 def _round_outward(t0: float, t1: float) -> tuple[float, float]:
@@ -254,6 +316,15 @@ def lane_states(d: Drawn, now: float, labels: bool = True) -> list[LaneState]:
     ]
 
 
+def signals_readout(resolved: Resolved) -> str:
+    """The causal verdicts in words (:func:`.signals.verdict_lines`, from the core's
+    :meth:`~rigidrel_core.Scene.causal_verdicts`) as readout Markdown, or ``""`` while the
+    :attr:`~.layers.Layer.SIGNALS` layer is hidden."""
+    if Layer.SIGNALS not in resolved.layers:
+        return ""
+    return "".join(f"  \n**Light** {line}" for line in verdict_lines(resolved.scene))
+
+
 def readout_markdown(resolved: Resolved) -> str:
     """Parameters, final velocities and events in plain numbers, for the control panel."""
     scene, frame = resolved.scene, resolved.frame
@@ -264,7 +335,7 @@ def readout_markdown(resolved: Resolved) -> str:
     notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame))  # a paradox's verdicts, in words
     return (
         f"**Scene** {', '.join(params)}  \n**Final velocities** {v}  \n**Events (lab t, x)** {ev}  \n"
-        f"**Frame** {frame_title(frame)}  \n**Clocks** {CLOCK_RULE}{notes}"
+        f"**Frame** {frame_title(frame)}  \n**Clocks** {CLOCK_RULE}{notes}{signals_readout(resolved)}"
     )
 
 

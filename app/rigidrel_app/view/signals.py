@@ -66,8 +66,16 @@ class Signals:
 
     def pulse_positions(self, t: float) -> FloatArray:
         """The x of every pulse in flight at time ``t`` (shape ``(n,)``, possibly empty)."""
-        xs = [x for leg in self.legs if (x := leg.position(t)) is not None]
-        return np.array(xs, dtype=np.float64)
+        return np.array(self.pulses_at(t), dtype=np.float64)
+
+    def pulses_at(self, t: float) -> list[float]:
+        """:meth:`pulse_positions` as plain floats (every playback frame: no numpy per call)."""
+        return [x for leg in self.legs if (x := leg.position(t)) is not None]
+
+    @property
+    def far_arrivals(self) -> tuple[float, ...]:
+        """The x of each event ``S``: where the first light from the key event reaches a far end."""
+        return tuple(leg.arrival[1] for leg in self.legs if leg.name.startswith("S"))
 
 
 def _key_event(scene: rr.Scene) -> tuple[str, str, tuple[float, float]]:

@@ -1,0 +1,217 @@
+"""The layers on the canvas, looked at in pixels: the light signals appear in the diagrams' plot
+areas and in the lanes (the pulse moving with time) when asked for and never otherwise; hiding the
+world tubes or the length panel empties exactly those regions.
+
+The settings are set on the server, as a preset would (``show``); every picture is awaited until
+it has changed and settled, never after a fixed sleep.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from rigidrel_app.live.server import App
+from rigidrel_app.view.canvas import color_rgb
+from rigidrel_app.view.layers import DEFAULT_LAYERS, Layer
+from rigidrel_app.view.layout import Rect
+from rigidrel_app.view.scene_view import LENGTH_HIDDEN_NOTE, LENGTH_HIDDEN_TITLE
+from rigidrel_app.view.state import Settings, presets
+from rigidrel_app.view.vocabulary import LIGHT_COLOR, ROD_COLORS, rgba
+from tests.browser.test_app_browser import AppPage, show
+from tests.viser_client import wait_until
+
+pytestmark = pytest.mark.browser
+
+CRASH = presets()["Sec. 5: crash into a wall, V = 0.6"]
+#: The origin's light cone is drawn in the light's colour too: hidden here, so any of that colour is a signal.
+BASE = DEFAULT_LAYERS - {Layer.LIGHT_CONE}
+
+
+@pytest.fixture
+def tab(browser: Any, app_server: App) -> Any:
+    page = AppPage(browser, app_server)
+    try:
+        yield page
+    finally:
+        page.close()
+
+
+def crash(layers: frozenset[Layer]) -> Settings:
+    return CRASH.with_layers(layers)
+
+
+def region(img: np.ndarray, tab: AppPage, r: Rect, inset: float = 3.0) -> np.ndarray:
+    """The pixels of a page rectangle (less ``inset`` px all round)."""
+    c0, r0 = tab.page_to_pixel(r.x0 + inset, r.z1 - inset)
+    c1, r1 = tab.page_to_pixel(r.x1 - inset, r.z0 + inset)
+    return img[round(r0) : round(r1), round(c0) : round(c1)]
+
+
+def near(img: np.ndarray, color: np.ndarray, tol: float) -> np.ndarray:
+    """Which pixels are within ``tol`` of ``color`` in every channel."""
+    return np.asarray((np.abs(img - color.astype(np.int16)) <= tol).all(axis=-1))
+
+
+def light(img: np.ndarray) -> np.ndarray:
+    """Pixels of the light's colour (#C9A400: a strong yellow, unlike the rods, the wall and the frames' purple)."""
+    r, g, b = img[..., 0], img[..., 1], img[..., 2]
+    return np.asarray((r > 150) & (g > 110) & (b < 90) & (r - b > 110) & (np.abs(r - g) < 70))
+
+
+def cone_shade(img: np.ndarray) -> np.ndarray:
+    """Pixels of the key event's shaded future (the light's colour at 13 % over white)."""
+    return near(img, color_rgb(rgba(LIGHT_COLOR, 0.13)), 6)
+
+
+def rod_blue(img: np.ndarray) -> np.ndarray:
+    """Pixels of the rod's colour, solid or as the world tube's pale shade."""
+    return near(img, color_rgb(ROD_COLORS[0]), 40) | near(img, color_rgb(rgba(ROD_COLORS[0], 0.16)), 8)
+
+
+def save(img: np.ndarray, path: Path) -> None:
+    Image.fromarray(img.astype(np.uint8)).save(path)
+
+
+Check = Callable[[np.ndarray], list[str]]
+
+
+def canvas_showing(tab: AppPage, before: np.ndarray, check: Check, timeout: float = 60.0) -> np.ndarray:
+    """The canvas once it has changed from ``before``, settled, and passes ``check`` (no problems
+    listed): the server's whole update drawn, however slowly the browser draws it. On a timeout the
+    problems of the last canvas are the failure's message."""
+    shots = [tab.canvas_after(before)]
+
+    def ok() -> bool:
+        if not check(shots[-1]):
+            return True
+        shots.append(tab.canvas())
+        return False
+
+    try:
+        wait_until(ok, timeout=timeout, interval=0.25)
+    except AssertionError:
+        pytest.fail("; ".join(check(shots[-1])))
+    return shots[-1]
+
+
+def pulse_problems(tab: AppPage, img: np.ndarray, now: float) -> list[str]:
+    """Each lane's pulse: a bar of the light's colour at the page x where the core's signal is at ``now``."""
+    s = tab.session
+    layout, d = s.layout, s.drawn
+    assert layout is not None and d is not None and d.signals is not None
+    problems = []
+    for k, (place, lane, sig) in enumerate(zip(layout.lanes, s.renderer_lanes, d.signals, strict=True)):
+        cols = np.flatnonzero(light(region(img, tab, place.band, inset=0.0)).any(axis=0))
+        x = sig.pulse_positions(now)
+        if x.size != 1:
+            problems.append(f"lane {k}: {x.size} pulses in flight at {now}")
+            continue
+        expected = lane.origin_px + float(x[0]) * lane.scale - place.band.x0
+        if cols.size == 0 or np.min(np.abs(cols - expected)) >= 3.0:
+            problems.append(f"lane {k}: no pulse at column {expected:.1f} (light at {cols.tolist()[:12]})")
+    return problems
+
+
+def test_signals_are_drawn_in_the_diagrams_and_lanes_only_when_asked_for(tab: AppPage, shots: Path) -> None:
+    s = tab.session
+    first = tab.canvas()
+    show(tab, crash(BASE), 0.5)
+    layout = s.layout
+    assert layout is not None
+    regions = [layout.charts[0].plot, layout.charts[1].plot, *(lane.band for lane in layout.lanes)]
+
+    def no_light(img: np.ndarray) -> list[str]:
+        counts = [(light(region(img, tab, r)).sum(), cone_shade(region(img, tab, r)).sum()) for r in regions]
+        return [f"region {k}: {a} px of light, {b} of its cone" for k, (a, b) in enumerate(counts) if a > 0 or b >= 20]
+
+    off = canvas_showing(tab, first, no_light)
+    save(off, shots / "signals_off.png")
+
+    def diagrams_lit(img: np.ndarray) -> list[str]:
+        assert layout is not None
+        problems = []
+        for k in (0, 1):
+            plot = region(img, tab, layout.charts[k].plot)
+            if light(plot).sum() <= 150:
+                problems.append(f"no light ray in diagram {k}")
+            if cone_shade(plot).mean() <= 0.05:
+                problems.append(f"no shaded future in diagram {k}")
+        return problems
+
+    show(tab, crash(BASE | {Layer.SIGNALS}), 0.5)
+    layout = s.layout  # the legend may take another row
+    assert layout is not None
+    on = canvas_showing(tab, off, lambda img: diagrams_lit(img) + pulse_problems(tab, img, 0.5))
+    save(on, shots / "signals_on.png")
+
+    # later, the pulse has moved on with the light (one unit of x per unit of t) in each lane
+    with s.lock:
+        s.seek(0.8)
+    later = canvas_showing(tab, on, lambda img: pulse_problems(tab, img, 0.8))
+    save(later, shots / "signals_later.png")
+    for k, place in enumerate(layout.lanes):  # and on the screen: the bar has moved right
+        was = np.flatnonzero(light(region(on, tab, place.band)).any(axis=0)).mean()
+        now = np.flatnonzero(light(region(later, tab, place.band)).any(axis=0)).mean()
+        assert now - was > 10.0, f"lane {k}: the light moved from column {was:.0f} to {now:.0f}"
+
+
+def test_hiding_the_world_tubes_and_the_length_panel_empties_their_regions(tab: AppPage, shots: Path) -> None:
+    s = tab.session
+    first = tab.canvas()
+    show(tab, crash(DEFAULT_LAYERS), 0.5)
+    layout = s.layout
+    assert layout is not None
+    plot = layout.charts[2].plot
+    middle = slice(round(0.35 * plot.height), round(0.65 * plot.height))  # the hidden panel's note
+
+    def lengths_ink(img: np.ndarray) -> int:
+        """Dark pixels of the length panel's plot area, its middle rows (the note) left out."""
+        return int((np.delete(region(img, tab, plot), middle, axis=0).sum(axis=-1) < 600).sum())
+
+    def drawn(img: np.ndarray) -> list[str]:
+        problems = [
+            f"diagram {k}: no rod" for k in (0, 1) if rod_blue(region(img, tab, layout.charts[k].plot)).sum() < 2000
+        ]
+        return problems + (["no length curves"] if lengths_ink(img) < 1500 else [])
+
+    full = canvas_showing(tab, first, drawn)
+    save(full, shots / "all_layers.png")
+    tubes = [rod_blue(region(full, tab, layout.charts[k].plot)).sum() for k in (0, 1)]
+    lanes = [rod_blue(region(full, tab, lane.band)).sum() for lane in layout.lanes]
+    ink = lengths_ink(full)
+
+    def hidden(img: np.ndarray) -> list[str]:
+        problems = []
+        for k in (0, 1):
+            left = rod_blue(region(img, tab, layout.charts[k].plot)).sum()
+            if left >= 0.05 * tubes[k]:
+                problems.append(f"diagram {k}: the rod's colour is left ({left} of {tubes[k]} px)")
+        for k, lane in enumerate(layout.lanes):  # the lanes still draw the rod (edges blur when the
+            now = rod_blue(region(img, tab, lane.band)).sum()  # client renders below full resolution)
+            if abs(now - lanes[k]) >= 0.2 * lanes[k]:
+                problems.append(f"lane {k}: the rod changed ({now} of {lanes[k]} px)")
+        if lengths_ink(img) >= 0.02 * ink:
+            problems.append(f"the length panel still has {lengths_ink(img)} of {ink} dark px")
+        return problems
+
+    show(tab, crash(DEFAULT_LAYERS - {Layer.WORLD_TUBE, Layer.INTERIOR_LINES, Layer.LENGTH_PANEL}), 0.5)
+    assert s.layout == layout  # the panels keep their places (the legend its rows)
+    bare = canvas_showing(tab, full, hidden)
+    save(bare, shots / "no_tubes_no_lengths.png")
+    texts = tab.texts()
+    assert LENGTH_HIDDEN_TITLE in texts
+    assert LENGTH_HIDDEN_NOTE in texts
+
+
+def test_layers_reach_the_session(tab: AppPage) -> None:
+    """The drawing the session keeps is built with the layers asked for (the pixel tests' premise)."""
+    show(tab, crash(frozenset(Layer)), 0.2)
+    d: Any = tab.session.drawn
+    assert d.resolved.layers == frozenset(Layer)
+    assert d.signals is not None
