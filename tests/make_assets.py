@@ -13,6 +13,7 @@ assets/rod-collision-lanes.gif (the lanes of that collision) and assets/wall-cra
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -38,8 +39,9 @@ SCREENSHOT = {"width": 1280, "height": 720}
 class _Tab:
     """One headless tab on a fresh app server, and a way to photograph its canvas once it is still."""
 
-    def __init__(self, app: App, browser: Any) -> None:
-        self.page = browser.new_page(viewport=SCREENSHOT)
+    def __init__(self, app: App, browser: Any, viewport: dict[str, int] = SCREENSHOT) -> None:
+        self.viewport = viewport
+        self.page = browser.new_page(viewport=viewport)
         self.page.goto(app.url)
         self.page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
         self.session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
@@ -65,13 +67,14 @@ class _Tab:
             wait_until(lambda: self.session.presenter == on, timeout=60)
 
     def photograph(self, path: Path) -> None:
-        """Once laid out for the mode's canvas (wide without the panel) and no longer changing."""
+        """Once laid out for the canvas as it is now and no longer changing."""
 
-        def laid_out() -> bool:
-            layout = self.session.layout
-            if layout is None:
+        def laid_out() -> bool:  # for the canvas as the page has it: the panel docked, or minimised
+            layout, size = self.session.layout, self.session.canvas_size
+            if layout is None or (layout.width, layout.height) != (size.width, size.height):
                 return False
-            return layout.width >= 1200 if self.session.presenter else layout.width < 1000
+            wide = layout.width > 0.9 * self.viewport["width"]
+            return wide if self.session.presenter else size.measured and not wide
 
         wait_until(laid_out, timeout=60)
         shots: list[bytes] = [b""]
@@ -123,31 +126,13 @@ def signals_screenshot(
 ) -> None:
     """The app showing ``settings`` in ``frame`` with the light signals, paused at ``now``, once
     its canvas has stopped changing."""
-    from dataclasses import replace
-
     from playwright.sync_api import sync_playwright
 
     with App(port=0) as app, sync_playwright() as p:
         browser = launch_chromium(p)
-        page = browser.new_page(viewport=viewport)  # type: ignore[arg-type]
-        page.goto(app.url)
-        page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
-        session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
-        wait_until(lambda: session.drawn is not None, timeout=60)
-        for button in page.locator(".mantine-Notification-root button").all():
-            button.click()
-        with session.lock:
-            session.change(replace(settings, frame=frame), refit=True)
-            session.seek(now)
-        wait_until(lambda: session.layout is not None and session.layout.width >= 0.5 * viewport["width"], timeout=60)
-        shots: list[bytes] = [b""]
-
-        def still() -> bool:
-            shots.append(page.screenshot(type="png"))
-            return shots[-1] == shots[-2]
-
-        wait_until(still, timeout=120, interval=1.5)
-        page.screenshot(path=str(path))
+        tab = _Tab(app, browser, viewport)
+        tab.show(replace(settings, frame=frame), now)
+        tab.photograph(path)
         browser.close()
 
 
