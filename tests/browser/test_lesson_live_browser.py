@@ -4,13 +4,17 @@ locks disable controls, and the scenario box round-trips a state and refuses a b
 
 from __future__ import annotations
 
+import io
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
+from PIL import Image
 
 from rigidrel_app.lessons import builtin_lesson, parse_lesson
+from rigidrel_app.live.keys import Action
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
 from rigidrel_app.view.layers import Layer
@@ -70,6 +74,32 @@ class LessonTab:
         """A text box by its label (viser's text box label names no id)."""
         return self.page.locator(f'label:text-is("{label}")').first.locator("xpath=following::input[1]")
 
+    def canvas(self) -> np.ndarray:
+        png = self.page.locator("canvas[data-engine]").screenshot()
+        return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
+
+    def screenshot(self, path: Path) -> None:
+        """The page once paused and drawn (two canvases half a second apart the same), for a person to look at."""
+        if self.session.playback.playing:
+            self.session.perform(Action.TOGGLE_PLAY)
+        shots = [self.canvas()]
+
+        def still() -> bool:
+            shots.append(self.canvas())
+            a, b = shots[-2], shots[-1]
+            return a.shape == b.shape and float((np.abs(a - b).sum(axis=-1) > 30).mean()) < 1e-4
+
+        wait_until(still, timeout=60, interval=0.5)
+        self.page.screenshot(path=str(path))
+
+    def caption_px(self) -> float:
+        """The caption text's font size (CSS px)."""
+        return float(
+            self.page.evaluate(
+                "() => parseFloat(getComputedStyle(document.querySelector('#rigidrel-caption p')).fontSize)"
+            )
+        )
+
     def press(self, key: str) -> None:
         self.page.evaluate("() => document.activeElement && document.activeElement.blur()")  # no box has the focus
         self.page.keyboard.press(key)
@@ -89,7 +119,7 @@ def test_keyboard_walk_through_the_paper_lesson(browser: Any, lesson_app: App, s
     s = tab.session
     tab.wait_caption(PAPER.steps[0].title)
     assert s.step_index == 0 and "a′_F = 0.5" in tab.caption()  # a number the core filled in
-    tab.page.screenshot(path=str(shots / "step-1-1280.png"))
+    tab.screenshot(shots / "step-1-1280.png")
     walk = [("PageDown", 1), ("PageDown", 2), ("ArrowRight", 3), ("PageUp", 2), ("ArrowLeft", 1), ("PageUp", 0)]
     for key, step in walk:
         tab.press(key)
@@ -118,7 +148,8 @@ def test_keyboard_walk_through_the_paper_lesson(browser: Any, lesson_app: App, s
     tab.press("PageDown")
     tab.wait_caption(PAPER.steps[4].title)
     assert tab.page.locator("#rigidrel-caption .rr-caption-presenter").count() == 1
-    tab.page.screenshot(path=str(shots / "presenter-step-5-1280.png"))
+    assert tab.caption_px() >= 20  # read from the back of a hall, on a 1280x720 projector
+    tab.screenshot(shots / "presenter-step-5-1280.png")
     tab.press("c")  # the caption band folds away, and back
     wait_until(lambda: tab.caption() == "", timeout=30)
     tab.press("c")
@@ -139,7 +170,8 @@ def test_presenter_caption_at_1920(browser: Any, lesson_app: App, shots: Path) -
     assert band is not None and canvas is not None
     assert canvas["y"] >= band["y"] + band["height"] - 1  # the lanes start below the caption
     wait_until(lambda: tab.session.canvas_size.height < 1080 - band["height"] + 2, timeout=30)
-    tab.page.screenshot(path=str(shots / "presenter-step-6-1920.png"))
+    assert tab.caption_px() >= 28
+    tab.screenshot(shots / "presenter-step-6-1920.png")
 
 
 def test_follow_the_leading_tab(browser: Any, shots: Path) -> None:

@@ -251,8 +251,10 @@ class Session:
             elif action is Action.TOGGLE_PRESENTER:
                 self.set_presenter(not self.presenter)
             elif action in (Action.PREVIOUS_STEP, Action.NEXT_STEP):
-                if self.lesson is not None:
-                    self.go_to_step(self.step_index + (-1 if action is Action.PREVIOUS_STEP else 1))
+                if self.lesson is not None:  # past either end nothing happens (the step is not reset)
+                    index = clamp_step(self.lesson, self.step_index + (-1 if action is Action.PREVIOUS_STEP else 1))
+                    if index != self.step_index:
+                        self.go_to_step(index)
             elif action is Action.TOGGLE_CAPTION:
                 self.caption_shown = not self.caption_shown
                 self._send_caption()
