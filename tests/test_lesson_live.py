@@ -69,7 +69,7 @@ def test_locks_refuse_only_what_they_fix() -> None:
     assert locked_changes(frozenset({"scene"}), s, parse_scenario("impulsive-start").settings) == ("scene",)
     assert locked_changes(locked, s, s.with_layers(frozenset())) == ()  # layers are never locked
     reason = lock_reason(LESSON, 0, s)
-    assert reason.startswith("🔒 Step 1 fixes V, Frame") and lock_reason(LESSON, 1, s) == ""
+    assert reason.startswith("**Locked by step 1**: V, Frame") and lock_reason(LESSON, 1, s) == ""
 
 
 def test_caption_band_is_the_filled_in_markdown() -> None:

@@ -100,7 +100,7 @@ def lock_reason(lesson: Lesson, index: int, settings: Settings) -> str:
         return ""
     names = control_names(settings)
     shown = ", ".join(names.get(n, n) for n in sorted(step.locked, key=list(names).index))
-    return f"🔒 Step {index + 1} fixes {shown}: the lesson shows them this way (the next step frees them)."
+    return f"**Locked by step {index + 1}**: {shown} (the lesson shows them this way; another step frees them)."
 
 
 def lock_notice(lesson: Lesson, index: int, settings: Settings, changed: tuple[str, ...]) -> str:

@@ -227,6 +227,17 @@ def hidden_box_css(controls: Sequence[NumberControl]) -> str:
     return f"<style>{boxes} {{ display: none !important; }} {rows} {{ min-height: 1.875em; }}</style>"
 
 
+def locked_box_css(controls: Sequence[NumberControl]) -> str:
+    """Style rules that grey out and take the pointer from the browser's own number box beside each
+    slider of ``controls`` (viser disables a slider but not its box; the server refuses a value
+    typed there anyway). A log slider's own text box is a handle, disabled as such."""
+    ids = [c.slider._impl.uuid for c in controls]  # viser has no public id
+    if not ids:
+        return ""
+    boxes = ", ".join(f'[id="{i}"] + .mantine-NumberInput-root' for i in ids)
+    return f"<style>{boxes} {{ pointer-events: none; opacity: 0.5; }}</style>"
+
+
 #: A slider's handle keeps the keyboard focus after a drag, and then ← and → move that slider (the
 #: browser's way); they must not also step playback, as viser's hotkeys listen on the whole page
 #: (dragging V and then stepping would change V too). A listener on the page's body stops those two
@@ -298,6 +309,8 @@ class Controls:
     """Why controls are disabled: the step of the lesson that fixes them (top of the Scene folder)."""
     fixed: frozenset[str] = frozenset()
     """The controls the lesson's current step fixes (disabled)."""
+    lock_css: viser.GuiHtmlHandle | None = None
+    """Style rules that grey out the number boxes of locked sliders (viser disables only the slider)."""
 
     def control_for(self, settings: Settings, name: str) -> NumberControl | None:
         return self.parameters.get(settings.description.parameter(name))
@@ -399,6 +412,13 @@ class Controls:
                 h.disabled = scene_locked
         self.fixed = locked
         self.show_settings(settings)
+        if self.lock_css is not None:
+            boxes = [c for p, c in self.parameters.items() if p.name in locked]
+            boxes += [self.beta] if "frame" in locked else []
+            boxes += [self.time] if "time" in locked else []
+            css = locked_box_css(boxes)
+            if self.lock_css.content != css:
+                self.lock_css.content = css
         for h in (self.frame, *self.beta.handles):
             if h.disabled != ("frame" in locked):
                 h.disabled = "frame" in locked
@@ -618,6 +638,7 @@ def build_controls(
     controls = Controls(
         preset, scene, params, overlay, notices, frame, beta, play, time, speed, loop, fit, reset_view, presenter,
         readout, commands, layers, scenario_shown, scenario_box, scenario_load, lesson_controls, locks,
+        lock_css=gui.add_html("", order=5.1) if lesson is not None else None,
     )  # fmt: skip
     return controls
 
