@@ -77,6 +77,7 @@ def test_caption_band_is_the_filled_in_markdown() -> None:
     assert "rr-caption-presenter" in band and "<h2>Crash</h2>" in band
     assert "Braking at t = -0.75; <strong>before</strong> contact." in band
     assert '"shown": false' in caption_message(band, False)
+    assert "another scene" in caption_html(LESSON.steps[0], off_step=True) and "another scene" not in band
 
 
 def test_lesson_keys() -> None:

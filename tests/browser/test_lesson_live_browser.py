@@ -233,6 +233,7 @@ def test_scenario_box_round_trip_and_a_bad_one(browser: Any, lesson_app: App, sh
     tab.page.locator("button:has-text('Load scenario')").click()
     wait_until(lambda: s.settings.scene == "rod-collision" and abs(s.playback.now - 0.3) < 1e-9, timeout=30)
     assert s.settings.layers == {Layer.WORLD_TUBE, Layer.SIGNALS} and s.notice == ""
+    wait_until(lambda: "now shows another scene" in tab.caption(), timeout=30)  # the step's caption says so
     shown = tab.page.locator("code.rigidrel-scenario")
     wait_until(lambda: shown.inner_text() == line, timeout=30)  # the same line comes back
     assert parse_scenario(shown.inner_text()).settings == s.settings

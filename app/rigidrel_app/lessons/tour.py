@@ -110,10 +110,15 @@ def lock_notice(lesson: Lesson, index: int, settings: Settings, changed: tuple[s
     return f"{shown} is locked by step {index + 1} of the lesson; nothing changed. Go to another step to change it."
 
 
-def caption_html(step: Step, presenter: bool = False) -> str:
+#: Said under a caption while the tab shows another scene than its step's (loaded, or chosen).
+OFF_STEP_NOTE = "(This caption is the step's; the app now shows another scene. The step list goes back.)"
+
+
+def caption_html(step: Step, presenter: bool = False, off_step: bool = False) -> str:
     """The caption band over the lanes: the step's title and its caption (Markdown, numbers from the
-    core) as HTML; larger in presenter mode, to be read from the back of a hall."""
-    note = ride_note(step)
+    core) as HTML; larger in presenter mode, to be read from the back of a hall. ``off_step``: the
+    tab shows another scene than the step's, and the band says so."""
+    note = " ".join(n for n in (ride_note(step), OFF_STEP_NOTE if off_step else "") if n)
     body = _MARKDOWN.render(step.caption + (f"\n\n*{note}*" if note else ""))
     size = "presenter" if presenter else "normal"
     return f'<div class="rr-caption-{size}"><h2>{html.escape(step.title)}</h2>{body}</div>'

@@ -99,6 +99,8 @@ class Session:
         """The caption band over the lanes (key C hides it)."""
         self.caption_key = f"rigidrel_caption_{uuid.uuid4().hex}"
         """This tab's localStorage key for the caption band (see :mod:`.controls`)."""
+        self.caption_off_step = False
+        """The caption band says the tab shows another scene than its step's."""
         self.shown_settings: Settings | None = None
         """The settings of what is on screen (the scenario box shows them)."""
         self.lock = threading.RLock()
@@ -340,7 +342,9 @@ class Session:
         """The caption band over the lanes, through the tab's localStorage (the panel may be folded away)."""
         if self.lesson is None:
             return
-        band = caption_html(self.lesson.steps[self.step_index], self.presenter)
+        step = self.lesson.steps[self.step_index]
+        self.caption_off_step = self.settings.scene != step.scenario.settings.scene
+        band = caption_html(step, self.presenter, self.caption_off_step)
         self.client.local_storage.set_item(self.caption_key, caption_message(band, self.caption_shown))
 
     # ------------------------------------------------------------------ scenario box and layers
@@ -460,6 +464,10 @@ class Session:
             self.fit_camera()
         c.readout.content = readout(resolved)
         self.draw_now(force_plots=True)
+        if self.lesson is not None and self.caption_off_step != (
+            resolved.scene.kind != self.lesson.steps[self.step_index].scenario.settings.scene
+        ):
+            self._send_caption()
 
     def fit_camera(self) -> None:
         if self.layout is None:
