@@ -19,7 +19,7 @@ from viser._messages import HotkeyKey
 
 import rigidrel_core as rr
 from rigidrel_app.live.controls import BETA, LOG_SLIDER_LABEL, SPEED, notice_place
-from rigidrel_app.live.keys import HOTKEYS, RESERVED, Action, action_for, key_line
+from rigidrel_app.live.keys import HOTKEYS, LESSON_HOTKEYS, RESERVED, Action, action_for, key_line
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS, Playback
 from rigidrel_app.view.entry import NumberEntry, Refuse, Typing, Undo, Use, read_number, refusal
 from rigidrel_app.view.state import CUSTOM_FRAME, NO_PRESET, Settings, preset_menu, preset_step
@@ -197,7 +197,7 @@ def test_each_action_has_one_key_viser_knows() -> None:
     viser_keys = set(typing.get_args(HotkeyKey))
     keys = [h.key for h in HOTKEYS]
     assert len(set(keys)) == len(keys) and set(keys) <= viser_keys
-    assert sorted(h.action.value for h in HOTKEYS) == sorted(a.value for a in Action)
+    assert sorted({h.action.value for h in HOTKEYS + LESSON_HOTKEYS}) == sorted(a.value for a in Action)
     assert {k: action_for(k) for k in keys} == {
         "space": Action.TOGGLE_PLAY,
         "arrowleft": Action.STEP_BACK,

@@ -246,6 +246,10 @@ def build_parser() -> OneLineParser:
         parents=[server_options(True)],
         description="Start the app. With a SCENE and its options, every new tab opens on that state.",
     )
+    sv.add_argument("--lesson", help="give a lesson: a lesson file (TOML) or a built-in lesson's name (paper)")
+    sv.add_argument(
+        "--follow", action="store_true", help="with --lesson: every tab follows the leading tab's step (key L leads)"
+    )
     add_scene_subparsers(
         sv, [server_options(False)], frame_help + " (default: the scene's default frame)", required=False
     )
@@ -351,10 +355,25 @@ def start_settings(prog: str, args: argparse.Namespace) -> Settings | None:
 
 
 def cmd_serve(args: argparse.Namespace) -> int:
-    start = start_settings("rigidrel serve", args)
+    """``rigidrel serve [SCENE ...]``, or ``rigidrel serve --lesson FILE [--follow]``: a lesson is
+    checked whole before the server starts (a mistake is one located line and exit status 2)."""
+    prog = "rigidrel serve"
+    lesson = None
+    if args.lesson is not None:
+        from .lessons import LessonError, lesson_from
+
+        if args.scene is not None:
+            fail(prog, "give a SCENE or --lesson, not both")
+        try:
+            lesson = lesson_from(args.lesson)
+        except LessonError as exc:
+            fail(prog, str(exc))
+    elif args.follow:
+        fail(prog, "--follow needs --lesson FILE (the tabs follow the leading tab's step)")
+    start = start_settings(prog, args)
     from .live.server import serve  # viser is imported only here
 
-    return serve(args.host, args.port, start)
+    return serve(args.host, args.port, start, lesson, args.follow)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

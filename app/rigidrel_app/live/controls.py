@@ -12,6 +12,8 @@ control.
 from __future__ import annotations
 
 import functools
+import html
+import json
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import Literal, Protocol, TypeVar
@@ -20,15 +22,18 @@ import viser
 
 import rigidrel_core as rr
 
+from ..lessons import Lesson
+from ..lessons.tour import LAYER_LABELS, step_labels
 from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, refusal
+from ..view.layers import Layer
 from ..view.scene_view import CONTROL_PX
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, preset_menu
-from .keys import HOTKEYS, Action, key_line
+from .keys import HOTKEYS, LESSON_HOTKEYS, Action, Hotkey, key_line
 from .playback import Playback
 
 T = TypeVar("T")
 
-Place = Literal["scene", "frame", "playback"]
+Place = Literal["lesson", "scene", "frame", "playback", "scenario"]
 """The folder a notice shows in: the one holding the control whose value was refused, so it is read
 where the lecturer is looking even when the panel is scrolled."""
 
@@ -53,6 +58,9 @@ class Actions(Protocol):
     def perform(self, action: Action) -> None: ...
     def refuse(self, text: str, place: Place) -> None: ...
     def frame_choice(self) -> str: ...
+    def go_to_step(self, index: int) -> None: ...
+    def load_scenario(self, text: str) -> None: ...
+    def set_layer(self, layer: Layer, on: bool) -> None: ...
     def checked(self, respond: Callable[[], None]) -> None:
         """Run ``respond`` to one client message under the session's lock, and count it."""
         ...
@@ -219,6 +227,17 @@ def hidden_box_css(controls: Sequence[NumberControl]) -> str:
     return f"<style>{boxes} {{ display: none !important; }} {rows} {{ min-height: 1.875em; }}</style>"
 
 
+def locked_box_css(controls: Sequence[NumberControl]) -> str:
+    """Style rules that grey out and take the pointer from the browser's own number box beside each
+    slider of ``controls`` (viser disables a slider but not its box; the server refuses a value
+    typed there anyway). A log slider's own text box is a handle, disabled as such."""
+    ids = [c.slider._impl.uuid for c in controls]  # viser has no public id
+    if not ids:
+        return ""
+    boxes = ", ".join(f'[id="{i}"] + .mantine-NumberInput-root' for i in ids)
+    return f"<style>{boxes} {{ pointer-events: none; opacity: 0.5; }}</style>"
+
+
 #: A slider's handle keeps the keyboard focus after a drag, and then ← and → move that slider (the
 #: browser's way); they must not also step playback, as viser's hotkeys listen on the whole page
 #: (dragging V and then stepping would change V too). A listener on the page's body stops those two
@@ -276,8 +295,22 @@ class Controls:
     reset_view: viser.GuiButtonHandle
     presenter: viser.GuiButtonHandle
     readout: viser.GuiMarkdownHandle
-    commands: dict[Action, viser.CommandHandle]
+    commands: tuple[tuple[Hotkey, viser.CommandHandle], ...]
     """The keyboard's and the clicker's commands (:mod:`.keys`)."""
+    layers: dict[Layer, viser.GuiCheckboxHandle]
+    """One toggle per layer of the drawings."""
+    scenario_shown: viser.GuiHtmlHandle
+    """The current state as a scenario string, with a copy button."""
+    scenario_box: viser.GuiTextHandle
+    scenario_load: viser.GuiButtonHandle
+    lesson: LessonControls | None = None
+    """The lesson's folder (``rigidrel serve --lesson``), else None."""
+    locks: viser.GuiMarkdownHandle | None = None
+    """Why controls are disabled: the step of the lesson that fixes them (top of the Scene folder)."""
+    fixed: frozenset[str] = frozenset()
+    """The controls the lesson's current step fixes (disabled)."""
+    lock_css: viser.GuiHtmlHandle | None = None
+    """Style rules that grey out the number boxes of locked sliders (viser disables only the slider)."""
 
     def control_for(self, settings: Settings, name: str) -> NumberControl | None:
         return self.parameters.get(settings.description.parameter(name))
@@ -317,8 +350,16 @@ class Controls:
         self.play.on_click(lambda _: a.perform(Action.TOGGLE_PLAY))
         self.reset_view.on_click(lambda _: a.perform(Action.RESET_VIEW))
         self.presenter.on_click(lambda _: a.perform(Action.TOGGLE_PRESENTER))
-        for action, command in self.commands.items():
-            command.on_trigger(lambda _, action=action: a.perform(action))
+        for hotkey, command in self.commands:
+            command.on_trigger(lambda _, action=hotkey.action: a.perform(action))
+        for layer, box in self.layers.items():
+            in_scene_layers = functools.partial(guard_choice, a=a, place="scenario")
+            in_scene_layers(box, label=LAYER_LABELS[layer], allowed="on or off", legal=on_or_off,
+                            current=lambda layer=layer: layer in a.settings.layers,
+                            act=lambda v, layer=layer: a.set_layer(layer, v))  # fmt: skip
+        self.scenario_load.on_click(lambda _: a.checked(lambda: a.load_scenario(self.scenario_box.value)))
+        if self.lesson is not None:
+            self.lesson.wire(a)
 
     def show_settings(self, s: Settings) -> None:
         """Show the controls of ``s``'s scene with its values, in its description's order; hide the
@@ -343,9 +384,167 @@ class Controls:
             self.preset.options = menu.options
         if self.preset.value != menu.value:
             self.preset.value = menu.value
-        if self.preset.disabled != (len(menu.options) == 1):
-            self.preset.disabled = len(menu.options) == 1  # a scene without a figure of the paper
+        # a scene without a figure of the paper, or a step that fixes what a figure would set
+        fixed = "scene" in self.fixed or any(p.name in self.fixed for p in d.parameters)
+        if self.preset.disabled != (len(menu.options) == 1 or fixed):
+            self.preset.disabled = len(menu.options) == 1 or fixed
         self.beta.show(s.beta)
+        for layer, box in self.layers.items():
+            if box.value != (layer in s.layers):
+                box.value = layer in s.layers
+
+    def show_scenario(self, text: str) -> None:
+        """The scenario string of what is on screen, with its copy button."""
+        content = scenario_html(text)
+        if self.scenario_shown.content != content:
+            self.scenario_shown.content = content
+
+    def lock(self, settings: Settings, locked: frozenset[str]) -> None:
+        """Disable the controls a lesson's step fixes (``locked``), enable the others."""
+        scene_locked = "scene" in locked
+        for p, control in self.parameters.items():
+            for h in control.handles:
+                off = p.name in locked and p in settings.description.parameters
+                if h.disabled != off:
+                    h.disabled = off
+        for h in (self.scene, self.overlay):
+            if h.disabled != scene_locked:
+                h.disabled = scene_locked
+        self.fixed = locked
+        self.show_settings(settings)
+        if self.lock_css is not None:
+            boxes = [c for p, c in self.parameters.items() if p.name in locked]
+            boxes += [self.beta] if "frame" in locked else []
+            boxes += [self.time] if "time" in locked else []
+            css = locked_box_css(boxes)
+            if self.lock_css.content != css:
+                self.lock_css.content = css
+        for h in (self.frame, *self.beta.handles):
+            if h.disabled != ("frame" in locked):
+                h.disabled = "frame" in locked
+        for h in self.time.handles:
+            if h.disabled != ("time" in locked):
+                h.disabled = "time" in locked
+
+
+#: The copy button copies its ``data-s`` (the clipboard API where the page is a secure context, as
+#: on 127.0.0.1, else a selected text area and the browser's copy command).
+_COPY_JS = (
+    "var s = this.dataset.s; var done = function (b) { b.textContent = 'Copied'; }; var b = this; "
+    "if (navigator.clipboard && window.isSecureContext) { navigator.clipboard.writeText(s).then(function () "
+    "{ done(b); }); } else { var t = document.createElement('textarea'); t.value = s; "
+    "document.body.appendChild(t); t.select(); document.execCommand('copy'); t.remove(); done(b); }"
+)
+
+
+def scenario_html(text: str) -> str:
+    """The scenario string in a code box, and a button that copies it."""
+    s = html.escape(text, quote=True)
+    return (
+        f'<div style="font-size: 0.85em"><code class="rigidrel-scenario" style="display: block; '
+        f'white-space: pre-wrap; word-break: break-word; user-select: all">{s}</code>'
+        f'<button type="button" class="rigidrel-copy" data-s="{s}" onclick="{html.escape(_COPY_JS, quote=True)}" '
+        'style="margin-top: 4px; padding: 2px 10px; cursor: pointer">Copy</button></div>'
+    )
+
+
+#: The caption band over the lanes. The panel is unmounted while it is minimized (presenter mode),
+#: so the band cannot live in it: this page script (run once, from an image that fails to load, as
+#: viser's HTML element runs no ``<script>``) adds the band above the app and moves the app below
+#: it, so the canvas shrinks and the server lays the page out again under the band. The server
+#: sends the band's content through the tab's localStorage (a message viser always delivers) under
+#: the session's own key; the script takes it from there and removes it.
+_CAPTION_JS = (
+    "window.rigidrelCaptionKey = this.dataset.key; if (!window.rigidrelCaption) { window.rigidrelCaption = true; "
+    "var band = document.createElement('div'); band.id = 'rigidrel-caption'; band.style.display = 'none'; "
+    "document.body.appendChild(band); var root = document.getElementById('root'); "
+    "var fit = function () { var h = band.style.display === 'none' ? 0 : band.offsetHeight; "
+    "root.style.position = 'fixed'; root.style.left = '0'; root.style.right = '0'; root.style.bottom = '0'; "
+    "root.style.height = 'auto'; root.style.top = h + 'px'; }; new ResizeObserver(fit).observe(band); "
+    "setInterval(function () { var v = localStorage.getItem(window.rigidrelCaptionKey); if (v === null) return; "
+    "localStorage.removeItem(window.rigidrelCaptionKey); var m = JSON.parse(v); band.innerHTML = m.html; "
+    "band.style.display = m.shown ? 'block' : 'none'; fit(); }, 150); }"
+)
+
+#: The band's looks: dark text on a pale band, 17 px (in presenter mode 22 px on a 1280x720 screen, 30 px on
+#: 1920x1080), a blue rule below.
+CAPTION_CSS = (
+    "<style>#rigidrel-caption { position: fixed; top: 0; left: 0; right: 0; z-index: 150; background: #FFFCEB; "
+    "border-bottom: 3px solid #0072B2; padding: 6px 16px 2px; max-height: 45vh; overflow: auto; "
+    "font-family: sans-serif; color: #111; } #rigidrel-caption h2 { margin: 0 0 4px; } "
+    "#rigidrel-caption p { margin: 0 0 6px; } .rr-caption-normal { font-size: 17px; line-height: 1.35; } "
+    ".rr-caption-normal h2 { font-size: 20px; } .rr-caption-presenter { font-size: clamp(20px, 1.6vh + 0.8vw, 30px); "
+    "line-height: 1.3; } .rr-caption-presenter h2 { font-size: 1.15em; }</style>"
+)
+
+
+#: viser's client stores the server's ``local_storage`` items under this prefix.
+VISER_STORAGE_PREFIX = "viser-user:"
+
+
+def caption_installer(key: str) -> str:
+    """The panel's HTML that installs the caption band (see :data:`_CAPTION_JS`); ``key`` is the
+    session's ``local_storage`` key."""
+    stored = html.escape(VISER_STORAGE_PREFIX + key, quote=True)
+    return (
+        f'<img alt="" src="data:," style="display: none" data-key="{stored}" '
+        f'onerror="{html.escape(_CAPTION_JS, quote=True)}">'
+    )
+
+
+def caption_message(band_html: str, shown: bool) -> str:
+    """What the server puts in the tab's localStorage for the band (read by :data:`_CAPTION_JS`)."""
+    return json.dumps({"html": CAPTION_CSS + band_html, "shown": shown})
+
+
+@dataclass
+class LessonControls:
+    """The Lesson folder: the step list, previous and next, the lock line, who leads."""
+
+    lesson: Lesson
+    step: viser.GuiDropdownHandle[str]
+    previous: viser.GuiButtonHandle
+    next: viser.GuiButtonHandle
+    lead: viser.GuiButtonHandle
+    status: viser.GuiMarkdownHandle
+    """Who leads (with ``--follow``)."""
+    notice: viser.GuiMarkdownHandle
+
+    def wire(self, a: Actions) -> None:
+        labels = step_labels(self.lesson)
+        guard_choice(self.step, a, label="Step", allowed="one of the lesson's steps", legal=one_of(labels),
+                     current=lambda: self.step.value, act=lambda v: a.go_to_step(labels.index(v)),
+                     place="lesson")  # fmt: skip
+        self.previous.on_click(lambda _: a.perform(Action.PREVIOUS_STEP))
+        self.next.on_click(lambda _: a.perform(Action.NEXT_STEP))
+        self.lead.on_click(lambda _: a.perform(Action.LEAD))
+
+    def show_step(self, index: int) -> None:
+        label = step_labels(self.lesson)[index]
+        if self.step.value != label:
+            self.step.value = label
+        if self.previous.disabled != (index == 0):
+            self.previous.disabled = index == 0
+        last = index == len(self.lesson.steps) - 1
+        if self.next.disabled != last:
+            self.next.disabled = last
+
+
+def build_lesson_controls(gui: viser.GuiApi, lesson: Lesson, follow: bool) -> LessonControls:
+    """The Lesson folder, first in the panel."""
+    with gui.add_folder("Lesson", order=0.5):
+        subtitle = f"<br><small>{html.escape(lesson.subtitle)}</small>" if lesson.subtitle else ""
+        gui.add_html(f"<b>{html.escape(lesson.title)}</b>{subtitle}", order=0.0)
+        labels = step_labels(lesson)
+        step = gui.add_dropdown("Step", labels, initial_value=labels[0], hint="Go to a step (PgUp / PgDn, ← / →)")
+        previous = gui.add_button("Previous step", icon=viser.Icon.ARROW_LEFT, color="gray", hint="PgUp or ←")
+        nxt = gui.add_button("Next step", icon=viser.Icon.ARROW_RIGHT, hint="PgDn or →")
+        hint = "With --follow, every other tab follows this tab's step (L)"
+        lead = gui.add_button("Lead the other tabs", icon=viser.Icon.PRESENTATION, color="gray", hint=hint,
+                              visible=follow)  # fmt: skip
+        status = gui.add_markdown("", visible=follow)
+        notice = gui.add_markdown("", visible=False)
+    return LessonControls(lesson, step, previous, nxt, lead, status, notice)
 
 
 def _value_or_default(p: rr.Parameter, value: float | None) -> float:
@@ -364,17 +563,25 @@ def scene_titles() -> dict[str, str]:
     return {d.title: kind for kind, d in rr.scene_descriptions().items()}
 
 
-def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
+def build_controls(
+    gui: viser.GuiApi, settings: Settings, lesson: Lesson | None = None, follow: bool = False, caption_key: str = ""
+) -> Controls:
     """The control panel (right) of one tab, and its hotkeys (the lanes and the diagrams are drawn
-    on the canvas)."""
+    on the canvas). With a ``lesson``: its folder first, the lesson's keys, the caption band."""
     notices: dict[Place, viser.GuiMarkdownHandle] = {}
+    lesson_controls = None
+    if lesson is not None:
+        lesson_controls = build_lesson_controls(gui, lesson, follow)
+        notices["lesson"] = lesson_controls.notice
     with gui.add_folder("Scene", order=1.0):
+        locks = gui.add_markdown("", visible=False, order=0.5)
         menu = preset_menu(settings)
         preset = gui.add_dropdown(
             "Paper figure",
             menu.options,
             initial_value=menu.value,
-            hint="Reproduce one of the paper's figures or worked examples of this scene exactly (PgUp / PgDn)",
+            hint="Reproduce one of the paper's figures or worked examples of this scene exactly"
+            + ("" if lesson is not None else " (PgUp / PgDn)"),
             order=1.0,
         )
         scene = gui.add_dropdown("Scene", list(scene_titles()), initial_value=settings.description.title, order=2.0)
@@ -391,9 +598,12 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
             gui, BETA, settings.beta, "Velocity of the custom frame, in (-1, 1); moving it selects the custom frame"
         )
         notices["frame"] = gui.add_markdown("", visible=False)
+    table = LESSON_HOTKEYS if lesson is not None else HOTKEYS
     with gui.add_folder("Playback", order=3.0):
         play = gui.add_button("Play", icon=viser.Icon.PLAYER_PLAY, hint="Space")
-        clock = "Playback clock: the lab lane shows t = this, the frame lane t' = this (← → one frame)"
+        clock = "Playback clock: the lab lane shows t = this, the frame lane t' = this" + (
+            "" if lesson is not None else " (← → one frame)"
+        )
         time = NumberControl(gui, time_entry((-1.0, 1.0), 0.001), 0.0, clock)
         speed = NumberControl(gui, SPEED, 1.0, "Multiple of the normal pace")
         notices["playback"] = gui.add_markdown("", visible=False)
@@ -406,16 +616,31 @@ def build_controls(gui: viser.GuiApi, settings: Settings) -> Controls:
             "Presenter mode", icon=viser.Icon.PRESENTATION, color="gray",
             hint="Hide this panel; larger text and thicker lines for a projector. F again brings it back (F)",
         )  # fmt: skip
-        gui.add_markdown(f"<small>{key_line()}</small>")
+        gui.add_markdown(f"<small>{key_line(table)}</small>")
+    with gui.add_folder("Layers", order=3.5):
+        layers = {
+            layer: gui.add_checkbox(label, layer in settings.layers, hint=f"Draw the {label.lower()} ({layer.value})")
+            for layer, label in LAYER_LABELS.items()
+        }
+    with gui.add_folder("Scenario", order=3.8):
+        scenario_shown = gui.add_html(scenario_html(""))
+        scenario_box = gui.add_text(
+            "Load", "", hint="A scenario string, as rigidrel serve SCENE ... takes it: the scene, then its options"
+        )
+        scenario_load = gui.add_button("Load scenario", icon=viser.Icon.UPLOAD, color="gray")
+        notices["scenario"] = gui.add_markdown("", visible=False)
     readout = gui.add_markdown("", order=4.0)
-    gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS, order=5.0)
+    band = caption_installer(caption_key) if lesson is not None else ""
+    gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS + band, order=5.0)
     gui.main_panel.dock_right()
     gui.main_panel.set_width(CONTROL_PX)
-    commands = {h.action: gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}") for h in HOTKEYS}
-    return Controls(
+    commands = tuple((h, gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}")) for h in table)
+    controls = Controls(
         preset, scene, params, overlay, notices, frame, beta, play, time, speed, loop, fit, reset_view, presenter,
-        readout, commands,
+        readout, commands, layers, scenario_shown, scenario_box, scenario_load, lesson_controls, locks,
+        lock_css=gui.add_html("", order=5.1) if lesson is not None else None,
     )  # fmt: skip
+    return controls
 
 
 def one_of(options: Sequence[str]) -> Callable[[str], bool]:

@@ -4,6 +4,10 @@ A plain table, registered per tab with viser's command palette (``add_command``)
 key also appears there (Ctrl+K) with what it does. viser ignores these keys while a box, menu
 or checkbox has the focus, so typing a value never plays, steps or resets anything; ← and →
 on a focused slider handle move only that slider (``controls.ARROWS_STAY_IN_SLIDERS``).
+
+A tab giving a lesson (``rigidrel serve --lesson``) has its own table, :data:`LESSON_HOTKEYS`:
+PageDown and → go to the next step, PageUp and ← to the previous one, C hides or shows the
+caption and L makes this tab the presenter that ``--follow`` tabs follow.
 """
 
 from __future__ import annotations
@@ -13,7 +17,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 #: The keys used here, as viser names them (a subset of its ``HotkeyKey``).
-Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F"]
+Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "C", "L"]
 
 
 class Action(enum.Enum):
@@ -26,6 +30,10 @@ class Action(enum.Enum):
     NEXT_FIGURE = "next figure"
     RESET_VIEW = "reset view"
     TOGGLE_PRESENTER = "presenter mode"
+    PREVIOUS_STEP = "previous step"
+    NEXT_STEP = "next step"
+    TOGGLE_CAPTION = "caption"
+    LEAD = "lead"
 
 
 @dataclass(frozen=True)
@@ -50,19 +58,32 @@ HOTKEYS: tuple[Hotkey, ...] = (
     Hotkey("F", Action.TOGGLE_PRESENTER, "Presenter mode (panel hidden, larger text) on / off", "F", "presenter"),
 )
 
+#: A lesson's keys: the clicker and the arrows move between steps (no frame stepping, no figures).
+LESSON_HOTKEYS: tuple[Hotkey, ...] = (
+    Hotkey("space", Action.TOGGLE_PLAY, "Play / pause", "Space", "play"),
+    Hotkey("arrowleft", Action.PREVIOUS_STEP, "Previous step of the lesson", "←", "step"),
+    Hotkey("arrowright", Action.NEXT_STEP, "Next step of the lesson", "→", "step"),
+    Hotkey("pageup", Action.PREVIOUS_STEP, "Previous step of the lesson (clicker)", "PgUp", "step"),
+    Hotkey("pagedown", Action.NEXT_STEP, "Next step of the lesson (clicker)", "PgDn", "step"),
+    Hotkey("R", Action.RESET_VIEW, "Reset view", "R", "reset"),
+    Hotkey("F", Action.TOGGLE_PRESENTER, "Presenter mode (panel hidden, larger text) on / off", "F", "presenter"),
+    Hotkey("C", Action.TOGGLE_CAPTION, "Caption over the lanes hidden / shown", "C", "caption"),
+    Hotkey("L", Action.LEAD, "Lead: with --follow, every other tab follows this tab's step", "L", "lead"),
+)
+
 #: Keys kept free for what is planned but not built: no hotkey here may take them.
 RESERVED: dict[str, str] = {}
 
 
-def action_for(key: str) -> Action | None:
+def action_for(key: str, table: tuple[Hotkey, ...] = HOTKEYS) -> Action | None:
     """The action of a key (viser's name for it), or ``None`` for a key that does nothing."""
-    return next((h.action for h in HOTKEYS if h.key == key), None)
+    return next((h.action for h in table if h.key == key), None)
 
 
-def key_line() -> str:
+def key_line(table: tuple[Hotkey, ...] = HOTKEYS) -> str:
     """One line for the control panel: ``Keys: Space play · ← → step · ...``."""
     groups: list[tuple[list[str], str]] = []
-    for h in HOTKEYS:
+    for h in table:
         if groups and groups[-1][1] == h.brief:
             groups[-1][0].append(h.shown)
         else:

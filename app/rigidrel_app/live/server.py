@@ -19,6 +19,7 @@ import viser
 from viser import _messages as viser_messages
 from viser.infra import WebsockClientConnection
 
+from ..lessons import Lesson
 from ..view.state import Settings
 from .greeting import greet
 from .playback import FRAME_RATE
@@ -144,10 +145,23 @@ class App:
         version: str | None = None,
         start: Settings | None = None,
         budget: MessageBudget | None = None,
+        lesson: Lesson | None = None,
+        follow: bool = False,
     ) -> None:
         """``start``: the settings every new tab opens on (default: the first scene's defaults);
-        ``budget``: how many messages a tab may send before it is dropped."""
+        ``budget``: how many messages a tab may send before it is dropped; ``lesson``: every tab gives
+        it, from step 1 (``start`` is then not used); ``follow``: every tab follows the leading tab's
+        step (the first tab to connect leads, or the last to press L; a tab that joins opens on the
+        leader's step)."""
         limit_heap_growth()
+        self.lesson = lesson
+        self.follow = follow and lesson is not None
+        self.leader: int | None = None
+        """The client id of the tab the others follow (``follow``), None before any tab connects."""
+        self.leader_step = 0
+        """The leading tab's step (from 0)."""
+        self._followed = 0
+        """Leader changes and leader steps not yet passed on to the other tabs (the animation loop does)."""
         self.animation_hz = animation_hz or ANIMATION_HZ
         self.budget = budget or MessageBudget()
         self.floods = 0
@@ -230,13 +244,19 @@ class App:
         # on viser's thread pool: the tab may leave (``_disconnect``) while its session is built
         session: Session | None = None
         try:
-            session = Session(client, self.start)
+            with self._lock:
+                first = self.leader_step if self.follow else 0
+            session = Session(client, self.start, self.lesson, self.follow, self, first)
         finally:
             with self._lock:
                 gone = client.client_id in self._departed
                 self._departed.discard(client.client_id)
                 if session is not None and not gone:
                     self.sessions[client.client_id] = session
+                    if self.follow:
+                        if self.leader is None:
+                            self.leader, self.leader_step = client.client_id, session.step_index
+                        self._followed += 1
         assert session is not None  # Session() returned (else its exception went on up)
         if gone:
             session.closed = True
@@ -254,6 +274,40 @@ class App:
                 self._departed.add(client.client_id)
         if session is not None:
             session.closed = True
+            with self._lock:
+                if self.leader == client.client_id:
+                    self.leader = None  # the next tab to connect, or to press L, leads
+                    self._followed += 1
+
+    # ------------------------------------------------------------------ --follow
+    def step_changed(self, session: Session, index: int) -> None:
+        """A tab went to another step: if it leads, the others follow (on the animation loop's next
+        round, so that no tab's lock is taken while another's is held)."""
+        with self._lock:
+            if self.follow and self.leader == session.client.client_id:
+                self.leader_step = index
+                self._followed += 1
+
+    def lead(self, session: Session) -> None:
+        """Key L: this tab leads from now on, at its own step."""
+        with self._lock:
+            if self.follow:
+                self.leader, self.leader_step = session.client.client_id, session.step_index
+                self._followed += 1
+
+    def _pass_on_steps(self) -> None:
+        """Bring every other tab to the leading tab's step and tell each tab who leads."""
+        with self._lock:
+            if not self._followed:
+                return
+            self._followed = 0
+            leader, step = self.leader, self.leader_step
+            sessions = list(self.sessions.items())
+        for client_id, s in sessions:
+            if leader is not None and client_id != leader and s.step_index != step:
+                s.go_to_step(step, report=False)
+            s.show_leader(None if leader is None else client_id == leader)
+            s.client.flush()
 
     def _animate(self) -> None:
         """One loop ticks every session on an absolute schedule (no drift from the work done)."""
@@ -263,6 +317,11 @@ class App:
         while not self._stop.is_set():
             now = time.monotonic()
             dt, last = now - last, now
+            try:
+                self._pass_on_steps()
+            except Exception as exc:  # a broken tab must not stop the others
+                self.errors += 1
+                print(f"rigidrel: following the leading tab: {exc!r}", file=sys.stderr)
             with self._lock:
                 sessions = list(self.sessions.values())
             for s in sessions:
@@ -290,7 +349,13 @@ class App:
         self.stop()
 
 
-def serve(host: str = "127.0.0.1", port: int = 8080, start: Settings | None = None) -> int:
+def serve(
+    host: str = "127.0.0.1",
+    port: int = 8080,
+    start: Settings | None = None,
+    lesson: Lesson | None = None,
+    follow: bool = False,
+) -> int:
     """Run until Ctrl-C or SIGTERM; print the URL the server really got."""
     done = threading.Event()
 
@@ -301,7 +366,10 @@ def serve(host: str = "127.0.0.1", port: int = 8080, start: Settings | None = No
     # shell inherits SIGINT as *ignored*, and Python then raises no KeyboardInterrupt.
     signal.signal(signal.SIGINT, _terminate)
     signal.signal(signal.SIGTERM, _terminate)
-    with App(host, port, start=start) as app:
+    with App(host, port, start=start, lesson=lesson, follow=follow) as app:
+        if lesson is not None:
+            followed = ", every tab following the leading one (key L leads)" if app.follow else ""
+            print(f"rigidrel: lesson {lesson.title!r}, {len(lesson.steps)} steps{followed}", flush=True)
         print(f"rigidrel: serving on {app.url}  (Ctrl-C to stop)", flush=True)
         while not done.wait(0.5):
             pass

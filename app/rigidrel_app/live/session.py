@@ -9,7 +9,10 @@ from __future__ import annotations
 
 import threading
 import time
+import uuid
 from collections.abc import Callable
+from dataclasses import replace
+from typing import Protocol
 
 import numpy as np
 import viser
@@ -17,16 +20,29 @@ import viser
 import rigidrel_core as rr
 
 from ..backends.viser import PageRenderer
+from ..lessons import Lesson
+from ..lessons.tour import arrival, caption_html, clamp_step, lock_notice, lock_reason, locked_changes
 from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
 from ..view.lanes import LanePicture
+from ..view.layers import Layer
 from ..view.layout import LEGEND_ROWS, NORMAL, PRESENTER, CanvasLayout, CanvasSize, canvas_layout
+from ..view.scenario import ScenarioError, format_scenario, parse_scenario
 from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, build_drawing, nice_step
 from ..view.scene_view import readout_markdown as readout
-from ..view.state import Resolved, Settings, frame_choice, frame_choices, preset_step, scene_presets
+from ..view.state import (
+    CUSTOM_BETA,
+    CUSTOM_FRAME,
+    Resolved,
+    Settings,
+    frame_choice,
+    frame_choices,
+    preset_step,
+    scene_presets,
+)
 from ..view.state import resolve as resolve_settings
 from ..view.vocabulary import markdown_literal
 from .canvas_report import add_canvas_report, decode
-from .controls import Place, build_controls, notice_place, time_entry
+from .controls import Place, build_controls, caption_message, notice_place, time_entry
 from .keys import Action
 from .playback import Playback
 
@@ -34,11 +50,59 @@ from .playback import Playback
 NOTICE_COLOR = "#B00020"
 
 
+class LessonHooks(Protocol):
+    """What a tab giving a lesson tells the server (:class:`~rigidrel_app.live.server.App`)."""
+
+    def step_changed(self, session: Session, index: int) -> None:
+        """This tab went to step ``index`` (with ``--follow``, the leading tab's step is followed)."""
+        ...
+
+    def lead(self, session: Session) -> None:
+        """This tab asks to lead (key L)."""
+        ...
+
+
+#: What the scenario box also accepts in front of a scenario string (copied from a command line).
+SERVE_PREFIXES = ("rigidrel serve ", "serve ")
+
+
+def scenario_problem(exc: ScenarioError) -> str:
+    """A scenario string's mistake, led by the flag at fault (``--v1: v1 must be ... in (-1, 1); got 1.6``)."""
+    text, flag = str(exc), f"--{exc.parameter}"
+    return text if exc.parameter == "scene" or text.startswith(flag) else f"{flag}: {text}"
+
+
 class Session:
     """State and controls of one client; :meth:`tick` is called by the server's animation loop."""
 
-    def __init__(self, client: viser.ClientHandle, settings: Settings | None = None) -> None:
+    def __init__(
+        self,
+        client: viser.ClientHandle,
+        settings: Settings | None = None,
+        lesson: Lesson | None = None,
+        follow: bool = False,
+        hooks: LessonHooks | None = None,
+        first_step: int = 0,
+    ) -> None:
+        """``lesson``: the tab gives it, opening on ``first_step`` (from 0); ``follow``: ``--follow``
+        (the Lesson folder says who leads); ``hooks``: where step changes and key L are reported."""
         self.client = client
+        self.lesson = lesson
+        self.hooks = hooks
+        self.step_index = 0
+        """The lesson's step this tab shows (from 0)."""
+        self.locked: frozenset[str] = frozenset()
+        """The controls the current step fixes."""
+        self.step_window: tuple[str, tuple[float, float]] | None = None
+        """The current step's scene and time window: the playback window while that scene shows."""
+        self.caption_shown = True
+        """The caption band over the lanes (key C hides it)."""
+        self.caption_key = f"rigidrel_caption_{uuid.uuid4().hex}"
+        """This tab's localStorage key for the caption band (see :mod:`.controls`)."""
+        self.caption_off_step = False
+        """The caption band says the tab shows another scene than its step's."""
+        self.shown_settings: Settings | None = None
+        """The settings of what is on screen (the scenario box shows them)."""
         self.lock = threading.RLock()
         self.settings = settings or Settings()
         self.notice = ""
@@ -66,13 +130,16 @@ class Session:
             resolved = resolve_settings(self.settings)
             assert isinstance(resolved, Resolved)
         with client.atomic():
-            self.controls = build_controls(client.gui, self.settings)
+            self.controls = build_controls(client.gui, self.settings, lesson, follow, self.caption_key)
             self.canvas_report = add_canvas_report(client.gui)
             self.renderer = PageRenderer(client.scene)
             self.playback = Playback.start((-1.0, 1.0))
             self._wire()
-            self._apply(resolved, refit=True)
-            self._set_notice(self.notice, "scene")
+            if lesson is not None:
+                self._arrive(clamp_step(lesson, first_step))
+            else:
+                self._apply(resolved, refit=True)
+                self._set_notice(self.notice, "scene")
 
     # ------------------------------------------------------------------ wiring
     def _wire(self) -> None:
@@ -114,7 +181,19 @@ class Session:
     def change(self, new: Settings, refit: bool | None = None) -> None:
         """Try ``new``: draw it if it makes a scene, else keep the last valid one on screen and explain
         (the controls still show what was asked for, the paper-figure menu included). The camera
-        refits if ``refit``, or, when that is None, if "Auto-fit view" is on."""
+        refits if ``refit``, or, when that is None, if "Auto-fit view" is on. A change of a control
+        the lesson's step fixes is refused (the GUI disables those; a client may send anything)."""
+        with self.lock:
+            changed = locked_changes(self.locked, self.settings, new)
+            if changed and self.lesson is not None:
+                with self.client.atomic():
+                    text = lock_notice(self.lesson, self.step_index, self.settings, changed)
+                    self._set_notice(text, notice_place(self.settings, new))
+                    self.controls.show_settings(self.settings)
+                return
+            self._show(new, refit)
+
+    def _show(self, new: Settings, refit: bool | None) -> None:
         with self.lock:
             resolved = resolve_settings(new)
             old, self.settings = self.settings, new
@@ -142,6 +221,10 @@ class Session:
 
     def seek(self, now: float) -> None:
         with self.lock:
+            if "time" in self.locked and self.lesson is not None:
+                self._set_notice(lock_notice(self.lesson, self.step_index, self.settings, ("time",)), "playback")
+                self.controls.time.show(round(self.playback.now, 6))
+                return
             self.set_playback(self.playback.seek(now))
             self.draw_now(force_plots=True)
 
@@ -169,6 +252,17 @@ class Session:
                 self.fit_camera()
             elif action is Action.TOGGLE_PRESENTER:
                 self.set_presenter(not self.presenter)
+            elif action in (Action.PREVIOUS_STEP, Action.NEXT_STEP):
+                if self.lesson is not None:  # past either end nothing happens (the step is not reset)
+                    index = clamp_step(self.lesson, self.step_index + (-1 if action is Action.PREVIOUS_STEP else 1))
+                    if index != self.step_index:
+                        self.go_to_step(index)
+            elif action is Action.TOGGLE_CAPTION:
+                self.caption_shown = not self.caption_shown
+                self._send_caption()
+            elif action is Action.LEAD:
+                if self.hooks is not None:
+                    self.hooks.lead(self)
             else:  # a new Action must be handled here
                 raise AssertionError(action)
 
@@ -185,6 +279,113 @@ class Session:
                 panel.expand()
             if self.drawn is not None:
                 self._apply(self.drawn.resolved, refit=True)
+            self._send_caption()
+
+    # ------------------------------------------------------------------ a lesson
+    def go_to_step(self, index: int, report: bool = True) -> None:
+        """Show the lesson's step ``index`` (from 0; kept inside the lesson) as it asks; ``report``:
+        tell the server (a followed tab's own moves are reported, the server's are not)."""
+        if self.lesson is None:
+            return
+        with self.lock:
+            if self.closed:
+                return
+            index = clamp_step(self.lesson, index)
+            moved = index != self.step_index
+            with self.client.atomic():
+                self._arrive(index)
+        if moved and report and self.hooks is not None:
+            self.hooks.step_changed(self, index)
+
+    def _arrive(self, index: int) -> None:
+        """Arrive at step ``index``: its settings, window, start, autoplay, locks and caption."""
+        assert self.lesson is not None
+        step = self.lesson.steps[index]
+        a = arrival(step)
+        self.step_index, self.locked = index, a.locked
+        self.step_window = (a.settings.scene, a.window) if a.window is not None else None
+        self._show(a.settings, refit=True)
+        playback = self.playback
+        if a.start is not None:
+            playback = playback.seek(a.start)
+        else:
+            playback = replace(playback, now=Playback.start(playback.window).now)
+        self.set_playback(replace(playback, playing=a.autoplay))
+        self.draw_now(force_plots=True)
+        c = self.controls
+        c.lock(a.settings, a.locked)
+        reason = lock_reason(self.lesson, index, a.settings)
+        if c.locks is not None:
+            if c.locks.content != reason:
+                c.locks.content = reason
+            if c.locks.visible != bool(reason):
+                c.locks.visible = bool(reason)
+        if c.lesson is not None:
+            c.lesson.show_step(index)
+        self._send_caption()
+
+    def show_leader(self, leads: bool | None) -> None:
+        """The Lesson folder's line on who leads (``None``: no tab leads)."""
+        with self.lock:
+            if self.closed or self.controls.lesson is None:
+                return
+            if leads:
+                text = "**This tab leads**: the other tabs follow its step."
+            elif leads is None:
+                text = "No tab leads: press L (or the button) to lead."
+            else:
+                text = "Following the leading tab's step (L here to lead instead)."
+            if self.controls.lesson.status.content != text:
+                self.controls.lesson.status.content = text
+
+    def _send_caption(self) -> None:
+        """The caption band over the lanes, through the tab's localStorage (the panel may be folded away)."""
+        if self.lesson is None:
+            return
+        step = self.lesson.steps[self.step_index]
+        self.caption_off_step = self.settings.scene != step.scenario.settings.scene
+        band = caption_html(step, self.presenter, self.caption_off_step)
+        self.client.local_storage.set_item(self.caption_key, caption_message(band, self.caption_shown))
+
+    # ------------------------------------------------------------------ scenario box and layers
+    def load_scenario(self, text: str) -> None:
+        """Show the state a scenario string names (the same syntax as ``rigidrel serve SCENE ...``);
+        a string that names none is refused with a notice naming the flag and what it allows."""
+        with self.lock:
+            line = text.strip()
+            for prefix in SERVE_PREFIXES:
+                if line.startswith(prefix):
+                    line = line[len(prefix) :]
+            try:
+                scenario = parse_scenario(line)
+            except ScenarioError as exc:
+                self._set_notice(f"Scenario refused: {scenario_problem(exc)}", "scenario")
+                return
+            s = scenario.settings
+            lo, hi = CUSTOM_BETA
+            if s.frame == CUSTOM_FRAME and not lo <= s.beta <= hi:
+                self._set_notice(
+                    f"Scenario refused: --frame must be in [{lo:g}, {hi:g}] (the app's β slider) or one of the "
+                    f"scene's frames; got {s.beta!r}",
+                    "scenario",
+                )
+                return
+            changed = locked_changes(self.locked, self.settings, s)
+            if scenario.t is not None and "time" in self.locked:
+                changed += ("time",)
+            if changed and self.lesson is not None:
+                self._set_notice(lock_notice(self.lesson, self.step_index, self.settings, changed), "scenario")
+                return
+            self._show(s, refit=True)
+            if scenario.t is not None and not self.notice:
+                self.set_playback(self.playback.seek(scenario.t))
+                self.draw_now(force_plots=True)
+
+    def set_layer(self, layer: Layer, on: bool) -> None:
+        """A layer toggle: the settings' layers with ``layer`` added (``on``) or removed."""
+        with self.lock:
+            layers = self.settings.layers | {layer} if on else self.settings.layers - {layer}
+            self.change(self.settings.with_layers(frozenset(layers)), refit=False)
 
     def checked(self, respond: Callable[[], None]) -> None:
         """Respond to one value a client sent, under the lock, and count it whatever happened; then
@@ -240,8 +441,12 @@ class Session:
         chosen = frame_choice(resolved.scene, resolved.frame)
         if c.frame.value != chosen:  # each assignment is a message to the browser
             c.frame.value = chosen
-        self.set_playback(self.playback.with_window(d.window))
-        c.time.retarget(time_entry(d.window, nice_step(d.window[1] - d.window[0])))
+        window = d.window
+        if self.step_window is not None and self.step_window[0] == resolved.scene.kind:
+            window = self.step_window[1]  # the lesson's step shows its own window
+        self.shown_settings = self.settings
+        self.set_playback(self.playback.with_window(window))
+        c.time.retarget(time_entry(window, nice_step(window[1] - window[0])))
         legend = d.legend()
         rows = legend_rows(legend, layout.legend.width, layout.theme)
         if rows != LEGEND_ROWS:  # the plots give the legend the rows it needs (their curves still fit)
@@ -259,6 +464,10 @@ class Session:
             self.fit_camera()
         c.readout.content = readout(resolved)
         self.draw_now(force_plots=True)
+        if self.lesson is not None and self.caption_off_step != (
+            resolved.scene.kind != self.lesson.steps[self.step_index].scenario.settings.scene
+        ):
+            self._send_caption()
 
     def fit_camera(self) -> None:
         if self.layout is None:
@@ -292,6 +501,9 @@ class Session:
             if force_plots or not self.playback.playing or wall - self._last_plot >= 1.0 / PLOT_HZ:
                 self._last_plot = wall
                 self.controls.time.show(round(now, 6))
+                if self.shown_settings is not None:
+                    t = None if self.playback.playing else round(now, 6)
+                    self.controls.show_scenario(format_scenario(self.shown_settings, t))
 
     def tick(self, dt: float) -> None:
         """Advance playback by ``dt`` wall seconds and redraw (called by the animation loop)."""

@@ -1,0 +1,124 @@
+"""A lesson given live, as pure values: which step a tab shows, what arriving at it sets, what it locks.
+
+The live app (:mod:`rigidrel_app.live`) only assigns what these functions return; nothing here
+draws or talks to a browser.
+"""
+
+from __future__ import annotations
+
+import html
+from dataclasses import dataclass, replace
+
+from markdown_it import MarkdownIt
+
+from ..view.layers import DEFAULT_LAYERS, Layer
+from ..view.state import Settings
+from .lesson import Lesson, Step
+
+_MARKDOWN = MarkdownIt("commonmark", {"html": False, "typographer": False})
+
+#: The layer toggles' labels, in the panel's order.
+LAYER_LABELS: dict[Layer, str] = {
+    Layer.WORLD_TUBE: "World tube",
+    Layer.INTERIOR_LINES: "Interior worldlines",
+    Layer.LIGHT_CONE: "Light cone",
+    Layer.SIGNALS: "Light signals",
+    Layer.SIMULTANEITY: "Lines of simultaneity",
+    Layer.OTHER_AXES: "Other frame's axes",
+    Layer.LENGTH_PANEL: "Length panel",
+}
+
+
+@dataclass(frozen=True)
+class Arrival:
+    """What a tab sets when it arrives at a step."""
+
+    settings: Settings
+    """The step's scene, frame and layers."""
+    window: tuple[float, float] | None
+    """The step's time window (None: the scene's own)."""
+    start: float | None
+    """The time shown first (None: the playback clock's usual start)."""
+    autoplay: bool
+    locked: frozenset[str]
+    """Controls the step fixes: parameter names and any of ``scene``, ``frame``, ``time``."""
+
+
+def arrival(step: Step) -> Arrival:
+    """The state a step opens on. The step's ``layers`` key wins; without it, a ``--layers`` in its
+    scene line does. A riding step (``ride``) shows the scene's default frame: the live app does not
+    ride a point yet (:func:`ride_note`)."""
+    given = step.scenario.settings
+    layers = step.layers if step.layers != DEFAULT_LAYERS else given.layers
+    return Arrival(replace(given, layers=layers), step.window, step.start, step.autoplay, step.locked)
+
+
+def ride_note(step: Step) -> str:
+    """One sentence for a riding step (empty for any other)."""
+    if step.ride is None:
+        return ""
+    return "(Live, this step shows the scene's default frame: the app does not ride a point of the rod yet.)"
+
+
+def clamp_step(lesson: Lesson, index: int) -> int:
+    """A step index (from 0) kept inside the lesson: PageDown on the last step stays there."""
+    return min(max(index, 0), len(lesson.steps) - 1)
+
+
+def step_label(lesson: Lesson, index: int) -> str:
+    """The step list's entry: ``3/15 · The equal-time length (Fig. 2)``."""
+    return f"{index + 1}/{len(lesson.steps)} · {lesson.steps[index].title}"
+
+
+def step_labels(lesson: Lesson) -> tuple[str, ...]:
+    return tuple(step_label(lesson, k) for k in range(len(lesson.steps)))
+
+
+def control_names(settings: Settings) -> dict[str, str]:
+    """Lockable control -> its name in the panel: the scene's parameters by label, then scene, frame, time."""
+    names = {p.name: p.label for p in settings.description.parameters}
+    names |= {"scene": "Scene", "frame": "Frame", "time": "t, t'"}
+    return names
+
+
+def locked_changes(locked: frozenset[str], old: Settings, new: Settings) -> tuple[str, ...]:
+    """The locked controls that ``new`` would change from ``old`` (empty: ``new`` is allowed)."""
+    changed: list[str] = []
+    if "scene" in locked and (new.scene != old.scene or new.overlay != old.overlay):
+        changed.append("scene")
+    if new.scene == old.scene:
+        changed += [name for name, value in new.values if name in locked and old.value(name) != value]
+    if "frame" in locked and (new.frame, new.beta) != (old.frame, old.beta):
+        changed.append("frame")
+    return tuple(changed)
+
+
+def lock_reason(lesson: Lesson, index: int, settings: Settings) -> str:
+    """The line under the step list that says what this step fixes and why ("" if nothing)."""
+    step = lesson.steps[index]
+    if not step.locked:
+        return ""
+    names = control_names(settings)
+    shown = ", ".join(names.get(n, n) for n in sorted(step.locked, key=list(names).index))
+    return f"**Locked by step {index + 1}**: {shown} (the lesson shows them this way; another step frees them)."
+
+
+def lock_notice(lesson: Lesson, index: int, settings: Settings, changed: tuple[str, ...]) -> str:
+    """The notice for a refused change of locked controls."""
+    names = control_names(settings)
+    shown = ", ".join(names.get(n, n) for n in changed)
+    return f"{shown} is locked by step {index + 1} of the lesson; nothing changed. Go to another step to change it."
+
+
+#: Said under a caption while the tab shows another scene than its step's (loaded, or chosen).
+OFF_STEP_NOTE = "(This caption is the step's; the app now shows another scene. The step list goes back.)"
+
+
+def caption_html(step: Step, presenter: bool = False, off_step: bool = False) -> str:
+    """The caption band over the lanes: the step's title and its caption (Markdown, numbers from the
+    core) as HTML; larger in presenter mode, to be read from the back of a hall. ``off_step``: the
+    tab shows another scene than the step's, and the band says so."""
+    note = " ".join(n for n in (ride_note(step), OFF_STEP_NOTE if off_step else "") if n)
+    body = _MARKDOWN.render(step.caption + (f"\n\n*{note}*" if note else ""))
+    size = "presenter" if presenter else "normal"
+    return f'<div class="rr-caption-{size}"><h2>{html.escape(step.title)}</h2>{body}</div>'

@@ -1,0 +1,250 @@
+"""A lesson given live (``rigidrel serve --lesson``) in a real browser: the keyboard and a clicker's
+keys walk the steps, the caption band follows, ``--follow`` tabs follow the leading tab, a step's
+locks disable controls, and the scenario box round-trips a state and refuses a bad one."""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from rigidrel_app.lessons import builtin_lesson, parse_lesson
+from rigidrel_app.live.keys import Action
+from rigidrel_app.live.server import App
+from rigidrel_app.live.session import Session
+from rigidrel_app.view.layers import Layer
+from rigidrel_app.view.scenario import parse_scenario
+from tests.viser_client import wait_until
+
+pytestmark = pytest.mark.browser
+
+PAPER = builtin_lesson("paper")
+
+LOCKED = parse_lesson(
+    """title = "Locks"
+
+[[step]]
+title = "The crash, V fixed"
+scene = "wall-collision --v 0.6 --eps 0 --frame lab"
+caption = "The back end brakes at t = {event[T_1].t:.3g}."
+lock = ["v", "frame"]
+
+[[step]]
+title = "Free"
+scene = "wall-collision --v 0.8 --eps 1"
+caption = "Anything goes."
+""",
+    "locks.toml",
+)
+
+
+class LessonTab:
+    """One tab giving the lesson, with the session behind it."""
+
+    def __init__(self, browser: Any, app: App, width: int = 1280, height: int = 720) -> None:
+        before = set(app.sessions)
+        self.page = browser.new_page(viewport={"width": width, "height": height})
+        self.errors: list[str] = []
+        self.page.on("pageerror", lambda e: self.errors.append(str(e)))
+        self.page.goto(app.url)
+        self.page.wait_for_selector("label:text-is('Step')", timeout=120_000)  # a busy machine is slow
+        new = wait_until(lambda: set(app.sessions) - before, timeout=60)
+        self.session: Session = app.sessions[min(new)]
+        wait_until(lambda: self.session.drawn is not None, timeout=60)
+        for button in self.page.locator(".mantine-Notification-root button").all():
+            button.click()
+
+    def caption(self) -> str:
+        band = self.page.locator("#rigidrel-caption")
+        return band.inner_text() if band.count() and band.is_visible() else ""
+
+    def wait_caption(self, title: str) -> None:
+        wait_until(lambda: title in self.caption(), timeout=30)
+
+    def control(self, label: str) -> Any:
+        uid = self.page.locator(f'label:text-is("{label}")').first.get_attribute("for")
+        return self.page.locator(f"[id='{uid}']")
+
+    def text_box(self, label: str) -> Any:
+        """A text box by its label (viser's text box label names no id)."""
+        return self.page.locator(f'label:text-is("{label}")').first.locator("xpath=following::input[1]")
+
+    def canvas(self) -> np.ndarray:
+        png = self.page.locator("canvas[data-engine]").screenshot()
+        return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
+
+    def screenshot(self, path: Path) -> None:
+        """The page once paused and drawn (two canvases half a second apart the same), for a person to look at."""
+        if self.session.playback.playing:
+            self.session.perform(Action.TOGGLE_PLAY)
+        shots = [self.canvas()]
+
+        def still() -> bool:
+            shots.append(self.canvas())
+            a, b = shots[-2], shots[-1]
+            return a.shape == b.shape and float((np.abs(a - b).sum(axis=-1) > 30).mean()) < 1e-4
+
+        wait_until(still, timeout=60, interval=0.5)
+        self.page.screenshot(path=str(path))
+
+    def caption_px(self) -> float:
+        """The caption text's font size (CSS px)."""
+        return float(
+            self.page.evaluate(
+                "() => parseFloat(getComputedStyle(document.querySelector('#rigidrel-caption p')).fontSize)"
+            )
+        )
+
+    def press(self, key: str) -> None:
+        self.page.evaluate("() => document.activeElement && document.activeElement.blur()")  # no box has the focus
+        self.page.keyboard.press(key)
+
+
+@pytest.fixture
+def lesson_app() -> Iterator[App]:
+    app = App(host="127.0.0.1", port=0, lesson=PAPER)
+    try:
+        yield app
+    finally:
+        app.stop()
+
+
+def test_keyboard_walk_through_the_paper_lesson(browser: Any, lesson_app: App, shots: Path) -> None:
+    tab = LessonTab(browser, lesson_app)
+    s = tab.session
+    tab.wait_caption(PAPER.steps[0].title)
+    assert s.step_index == 0 and "a′_F = 0.5" in tab.caption()  # a number the core filled in
+    tab.screenshot(shots / "step-1-1280.png")
+    walk = [("PageDown", 1), ("PageDown", 2), ("ArrowRight", 3), ("PageUp", 2), ("ArrowLeft", 1), ("PageUp", 0)]
+    for key, step in walk:
+        tab.press(key)
+        tab.wait_caption(PAPER.steps[step].title)
+        assert s.step_index == step
+        expected = PAPER.steps[step].scenario.settings
+        wait_until(lambda expected=expected: s.settings.values == expected.values, timeout=30)
+    tab.press("PageUp")  # at the first step: stays
+    assert s.step_index == 0
+    # the step list in the panel
+    tab.control("Step").click()
+    tab.page.locator('[role=option]:has-text("4/15")').first.click()
+    tab.wait_caption(PAPER.steps[3].title)
+    assert s.settings.scene == "impulsive-start" and Layer.SIGNALS in s.settings.layers
+    assert tab.page.locator("label:text-is('Light signals')").count() == 1
+    # keys typed into a box stay in the box
+    field = tab.text_box("Load")
+    field.click()
+    field.press("PageDown")
+    field.press("ArrowRight")
+    field.type("abc")
+    assert field.input_value() == "abc" and s.step_index == 3
+    # presenter mode keeps the caption, larger
+    tab.press("f")
+    wait_until(lambda: tab.page.locator("#rigidrel-caption .rr-caption-presenter").count() == 1, timeout=30)
+    tab.press("PageDown")
+    tab.wait_caption(PAPER.steps[4].title)
+    assert tab.page.locator("#rigidrel-caption .rr-caption-presenter").count() == 1
+    assert tab.caption_px() >= 20  # read from the back of a hall, on a 1280x720 projector
+    tab.screenshot(shots / "presenter-step-5-1280.png")
+    tab.press("c")  # the caption band folds away, and back
+    wait_until(lambda: tab.caption() == "", timeout=30)
+    tab.press("c")
+    tab.wait_caption(PAPER.steps[4].title)
+    assert tab.errors == []
+
+
+def test_presenter_caption_at_1920(browser: Any, lesson_app: App, shots: Path) -> None:
+    tab = LessonTab(browser, lesson_app, 1920, 1080)
+    tab.wait_caption(PAPER.steps[0].title)
+    for _ in range(5):
+        tab.press("PageDown")
+    tab.wait_caption(PAPER.steps[5].title)
+    tab.press("f")
+    wait_until(lambda: tab.page.locator("#rigidrel-caption .rr-caption-presenter").count() == 1, timeout=30)
+    band = tab.page.locator("#rigidrel-caption").bounding_box()
+    canvas = tab.page.locator("canvas[data-engine]").bounding_box()
+    assert band is not None and canvas is not None
+    assert canvas["y"] >= band["y"] + band["height"] - 1  # the lanes start below the caption
+    wait_until(lambda: tab.session.canvas_size.height < 1080 - band["height"] + 2, timeout=30)
+    assert tab.caption_px() >= 28
+    tab.screenshot(shots / "presenter-step-6-1920.png")
+
+
+def test_follow_the_leading_tab(browser: Any, shots: Path) -> None:
+    app = App(host="127.0.0.1", port=0, lesson=PAPER, follow=True)
+    try:
+        lead = LessonTab(browser, app)
+        other = LessonTab(browser, app)
+        assert app.leader == lead.session.client.client_id
+        lead.press("PageDown")
+        lead.press("PageDown")
+        lead.wait_caption(PAPER.steps[2].title)
+        other.wait_caption(PAPER.steps[2].title)
+        assert other.session.step_index == 2
+        wait_until(lambda: "follow" in other.session.controls.lesson.status.content.lower(), timeout=30)  # type: ignore[union-attr]
+        # the other tab moves on its own; then it takes the lead with L
+        other.press("L")
+        wait_until(lambda: app.leader == other.session.client.client_id, timeout=30)
+        other.press("PageDown")
+        lead.wait_caption(PAPER.steps[3].title)
+        other.page.screenshot(path=str(shots / "follower-now-leads.png"))
+        assert lead.errors == [] and other.errors == []
+    finally:
+        app.stop()
+
+
+def test_a_locked_control_is_disabled_and_says_why(browser: Any, shots: Path) -> None:
+    app = App(host="127.0.0.1", port=0, lesson=LOCKED)
+    try:
+        tab = LessonTab(browser, app)
+        tab.wait_caption("The crash, V fixed")
+        v_thumb = tab.control("V").locator("[role=slider]")
+        wait_until(lambda: v_thumb.get_attribute("aria-disabled") == "true", timeout=30)
+        assert tab.control("Frame").is_disabled()
+        v_box = tab.control("V").locator("xpath=..").locator("input.mantine-NumberInput-input")
+        assert v_box.evaluate("e => getComputedStyle(e.closest('.mantine-NumberInput-root')).pointerEvents") == "none"
+        assert tab.control("ε (restitution)").locator("[role=slider]").get_attribute("aria-disabled") != "true"
+        assert tab.page.get_by_text("Locked by step 1: V, Frame").count() == 1
+        tab.page.screenshot(path=str(shots / "locked.png"))
+        # a value sent for the locked control anyway is refused on the server
+        with tab.session.lock:
+            tab.session.change(tab.session.settings.with_value("v", 0.9))
+        assert tab.session.settings.value("v") == 0.6 and "locked by step 1" in tab.session.notice
+        tab.press("PageDown")
+        tab.wait_caption("Free")
+        wait_until(lambda: v_thumb.get_attribute("aria-disabled") != "true", timeout=30)
+        assert not tab.control("Frame").is_disabled()
+    finally:
+        app.stop()
+
+
+def test_scenario_box_round_trip_and_a_bad_one(browser: Any, lesson_app: App, shots: Path) -> None:
+    tab = LessonTab(browser, lesson_app)
+    s = tab.session
+    tab.wait_caption(PAPER.steps[0].title)
+    line = "rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --frame barycentric --layers world-tube,signals --t 0.3"
+    box = tab.text_box("Load")
+    box.fill(line)
+    wait_until(lambda: s.controls.scenario_box.value == line, timeout=30)
+    tab.page.locator("button:has-text('Load scenario')").click()
+    wait_until(lambda: s.settings.scene == "rod-collision" and abs(s.playback.now - 0.3) < 1e-9, timeout=30)
+    assert s.settings.layers == {Layer.WORLD_TUBE, Layer.SIGNALS} and s.notice == ""
+    wait_until(lambda: "now shows another scene" in tab.caption(), timeout=30)  # the step's caption says so
+    shown = tab.page.locator("code.rigidrel-scenario")
+    wait_until(lambda: shown.inner_text() == line, timeout=30)  # the same line comes back
+    assert parse_scenario(shown.inner_text()).settings == s.settings
+    assert not s.controls.layers[Layer.LIGHT_CONE].value and s.controls.layers[Layer.SIGNALS].value
+    # a bad line: a notice naming the flag and its range, the state unchanged
+    box.fill("rod-collision --v1 1.6")
+    wait_until(lambda: s.controls.scenario_box.value == "rod-collision --v1 1.6", timeout=30)
+    tab.page.locator("button:has-text('Load scenario')").click()
+    notice = tab.page.locator("text=Scenario refused")
+    wait_until(lambda: notice.count() == 1 and notice.is_visible(), timeout=30)
+    assert "--v1" in notice.inner_text() and "(-1, 1)" in notice.inner_text()
+    assert s.settings.value("v1") == 0.6
+    tab.page.screenshot(path=str(shots / "scenario-refused.png"))
+    assert tab.errors == []
