@@ -29,6 +29,7 @@ from .vocabulary import (
     Label,
     Segments,
     Style,
+    signed,
 )
 
 #: Material points with ticks: every tenth of the rest length.
@@ -136,7 +137,9 @@ def lane_state(
     dials = np.stack([cx, cz], axis=-1)
     texts: tuple[Label, ...] = ()
     if labels:  # one two-line label per lane: each label update is a message
-        readings = "    ".join(f"{rod.name}: {tau[i, 0]:+.3f} | {tau[i, 1]:+.3f}" for i, rod in enumerate(scene.rods))
+        readings = "    ".join(
+            f"{rod.name}: {signed(tau[i, 0])} | {signed(tau[i, 1])}" for i, rod in enumerate(scene.rods)
+        )
         texts = (
             Label(
                 title_x,

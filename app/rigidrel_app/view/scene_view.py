@@ -43,7 +43,7 @@ from .layout import CanvasLayout
 from .sampling import ADAPTIVE, Sampler
 from .signals import Signals, signals_in, verdict_lines
 from .state import Resolved, format_value
-from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style
+from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style, signed
 
 #: Lane heights (z, in lane units): the lab on top, the chosen frame below.
 LAB_Z = 0.55
@@ -193,7 +193,7 @@ def _now_items(items: tuple[Item, ...], x: FloatArray, y: FloatArray, now_lines:
 
 def lane_titles(r: Resolved, now: float) -> tuple[str, str]:
     """The lanes' first lines: the frame and its time."""
-    return f"lab frame:   t = {now:+.3f}", f"{frame_title(r.frame)} frame:   t' = {now:+.3f}"
+    return f"lab frame:   t = {signed(now)}", f"{frame_title(r.frame)} frame:   t' = {signed(now)}"
 
 
 def _views(frame: rr.Frame) -> tuple[View, View]:
@@ -330,7 +330,7 @@ def readout_markdown(resolved: Resolved) -> str:
     scene, frame = resolved.scene, resolved.frame
     d = rr.describe(scene)
     params = [f"{d.parameter(k).symbol} = {format_value(v)}" for k, v in scene.parameters.items()]
-    v = ", ".join(f"{r.name}: {v:+.4f}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
+    v = ", ".join(f"{r.name}: {signed(v, 4)}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
     ev = " · ".join(f"{k} ({_fixed(t)}, {_fixed(x)})" for k, (t, x) in scene.events.items())
     notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame))  # a paradox's verdicts, in words
     return (

@@ -153,6 +153,12 @@ def plain_text(text: str) -> str:
 _MARKDOWN_PUNCTUATION = re.compile(r"([\\`*_{}\[\]()#+\-.!|~])")
 
 
+def signed(value: float, decimals: int = 3) -> str:
+    """``value`` with its sign to ``decimals`` places; one that rounds to zero is ``+0.000``, never
+    ``-0.000`` (a time a hair before an instant, or a negative zero, is shown as that instant)."""
+    return f"{round(float(value), decimals) + 0.0:+.{decimals}f}"  # -0.0 + 0.0 is +0.0
+
+
 def markdown_literal(text: str) -> str:
     """``text`` shown as it is in markdown (viser renders raw HTML in markdown, so a typed ``<b>``
     or ``**`` must not become markup): HTML characters as entities, markdown punctuation escaped."""
