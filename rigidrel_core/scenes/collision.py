@@ -507,7 +507,14 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             * (m1 * b1 * b1 / (sqrt(1.0 + b1 * b1) + g1) + m2 * b2 * b2 / (sqrt(1.0 + b2 * b2) + g2))
             / (m1 * g1 + m2 * g2)
         )
-    return CollisionSolution(bary, (after_1, after_2), gain, gain * mass_sum, (v1, v2))
+    sol = _NEW(CollisionSolution)  # as CollisionSolution.__init__ does, without its call
+    fields = sol.__dict__
+    fields["u"] = bary
+    fields["after"] = (after_1, after_2)
+    fields["mass_gain"] = gain
+    fields["heat"] = gain * mass_sum
+    fields["before"] = (v1, v2)
+    return sol
 
 
 #: The far ends' switches (Eqs. (22)-(25)); the same in every collision.
