@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 
 from .._build import EPS, IMPULSE, SIZE, checked_scene, rigid_motion
-from .._dd import DD, NOISE, SPLITTER, add, div, mul
+from .._dd import DD, NOISE, SPLITTER, div
 from .._description import (
     VELOCITY,
     EventDescription,
@@ -37,6 +37,10 @@ _NEAR_LIGHT = 1.0 - 2.0**-30
 #: ``tanh(1)``: composing rapidities ``U`` and ``theta'`` of opposite signs with ``|U| + |theta'| > 1``
 #: goes through light-cone components (see :func:`solve_collision`).
 _TANH_ONE = math.tanh(1.0)
+#: An ExactVelocity is made as ExactVelocity.__init__ would, without its call: a new instance
+#: and its slots' setters (three per solve; the call itself costs about as much as the setters).
+_NEW = object.__new__
+_SET_HI, _SET_LO, _SET_GAP = (ExactVelocity.__dict__[name].__set__ for name in ("hi", "lo", "gap"))
 
 
 @dataclass(frozen=True, init=False)
@@ -94,18 +98,67 @@ class CollisionSolution:
         return compose_velocities(self.after[0], back), compose_velocities(self.after[1], back)
 
 
-def _light_cone(x: DD, y: DD) -> tuple[DD, DD]:
+def _sum(ah: float, al: float, bh: float, bl: float) -> DD:
+    """:func:`rigidrel_core._dd.add` of ``ah + al`` and ``bh + bl``, written out (same operations)."""
+    s = ah + bh
+    t = s - ah
+    e = (ah - (s - t)) + (bh - t)
+    f = al + bl
+    t = f - al
+    g = (al - (f - t)) + (bl - t)
+    t = e + f
+    h = s + t
+    e = t - (h - s)
+    t = e + g
+    s = h + t
+    return s, t - (s - h)
+
+
+def _squares(xh: float, xl: float, yh: float, yl: float) -> tuple[float, float, float, float]:
+    """``X^2`` and ``Y^2`` as :func:`rigidrel_core._dd.mul` makes them, written out (same operations)."""
+    S = SPLITTER
+    p = xh * xh
+    t = S * xh
+    h = t - (t - xh)
+    lo = xh - h
+    f = (((h * h - p) + h * lo + lo * h) + lo * lo) + (xh * xl + xl * xh)
+    x2 = p + f
+    x2_lo = f - (x2 - p)
+    p = yh * yh
+    t = S * yh
+    h = t - (t - yh)
+    lo = yh - h
+    f = (((h * h - p) + h * lo + lo * h) + lo * lo) + (yh * yl + yl * yh)
+    y2 = p + f
+    return x2, x2_lo, y2, f - (y2 - p)
+
+
+def _light_cone(xh: float, xl: float, yh: float, yl: float) -> tuple[float, float, float, float]:
     """Numerator and denominator of ``V' = (X^2 - Y^2)/(X^2 + Y^2)``, ``X/Y = exp(theta')``, in
     double-double: the composition's form when ``u`` and ``w`` are near light in opposite directions."""
-    x2, y2 = mul(x, x), mul(y, y)
-    return add(x2, (-y2[0], -y2[1])), add(x2, y2)
+    x2, x2_lo, y2, y2_lo = _squares(xh, xl, yh, yl)
+    n, n_lo = _sum(x2, x2_lo, -y2, -y2_lo)
+    d, d_lo = _sum(x2, x2_lo, y2, y2_lo)
+    return n, n_lo, d, d_lo
 
 
-def _gap_near_light(v: float, x: DD, y: DD) -> float:
+def _gap_near_light(v: float, xh: float, xl: float, yh: float, yl: float) -> float:
     """``1 - |V'|`` within 2**-30 of light from ``X/Y = exp(theta')``: ``2 Y^2/(X^2 + Y^2)`` for
-    ``V' > 0``, ``2 X^2/(X^2 + Y^2)`` otherwise (positive terms), rounded once."""
-    x2, y2 = mul(x, x), mul(y, y)
-    return 2.0 * div(y2 if v > 0.0 else x2, add(x2, y2))[0]
+    ``V' > 0``, ``2 X^2/(X^2 + Y^2)`` otherwise (positive terms), rounded once (the operations of
+    :func:`rigidrel_core._dd.div`, written out)."""
+    x2, x2_lo, y2, y2_lo = _squares(xh, xl, yh, yl)
+    d, d_lo = _sum(x2, x2_lo, y2, y2_lo)
+    a, a_lo = (y2, y2_lo) if v > 0.0 else (x2, x2_lo)
+    q = a / d
+    p = q * d
+    t = SPLITTER * q
+    q_h = t - (t - q)
+    q_t = q - q_h
+    t = SPLITTER * d
+    d_h = t - (t - d)
+    d_t = d - d_h
+    e = ((q_h * d_h - p) + q_h * d_t + q_t * d_h) + q_t * d_t
+    return 2.0 * (q + (((a - p) - e) + a_lo - q * d_lo) / d)
 
 
 def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> CollisionSolution:
@@ -275,10 +328,18 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         bary = REST
     elif 0.0 <= u < _NEAR_LIGHT:  # 1 - |u| from u itself, rounded once
         g = 1.0 - u
-        bary = ExactVelocity(u, u_lo, g + (((1.0 - g) - u) - u_lo))
+        gap = g + (((1.0 - g) - u) - u_lo)
+        bary = _NEW(ExactVelocity)
+        _SET_HI(bary, u)
+        _SET_LO(bary, u_lo)
+        _SET_GAP(bary, gap)
     elif -_NEAR_LIGHT < u < 0.0:
         g = 1.0 + u
-        bary = ExactVelocity(u, u_lo, g + (((1.0 - g) + u) + u_lo))
+        gap = g + (((1.0 - g) + u) + u_lo)
+        bary = _NEW(ExactVelocity)
+        _SET_HI(bary, u)
+        _SET_LO(bary, u_lo)
+        _SET_GAP(bary, gap)
     else:  # 1 -+ u = P-+/E
         bary = ExactVelocity(u, u_lo, div((pm, pm_lo) if u > 0.0 else (pp, pp_lo), (en, en_lo))[0])
     s = v1 - v2
@@ -324,7 +385,8 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     p = r * r
     r_lo = (((r2 - p) - (((r_h * r_h - p) + 2.0 * r_h * r_t) + r_t * r_t)) + r2_lo) / (r + r)
     if u > 0.0 and u + (w := k / r) > _TANH_ONE * (1.0 + u * w):  # opposite signs, |U| + |theta'| > 1
-        (n, e), (dn, dn_lo) = _light_cone((pp, pp_lo), add((r, r_lo), (k, k_lo)))  # exp(theta'_1) = P+/(R + k)
+        y, y_lo = _sum(r, r_lo, k, k_lo)
+        n, e, dn, dn_lo = _light_cone(pp, pp_lo, y, y_lo)  # exp(theta'_1) = P+/(R + k)
         zero = -NOISE * dn <= n <= NOISE * dn
     else:  # V'_1 = (u R - k)/(R - u k)
         ur = uq * r
@@ -362,8 +424,12 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             g = 1.0 + v
             gap = g + (((1.0 - g) + v) + v_lo)
         else:
-            gap = _gap_near_light(v, (pp, pp_lo), add((r, r_lo), (k, k_lo)))
-        after_1 = ExactVelocity(v, v_lo, gap)
+            y, y_lo = _sum(r, r_lo, k, k_lo)
+            gap = _gap_near_light(v, pp, pp_lo, y, y_lo)
+        after_1 = _NEW(ExactVelocity)
+        _SET_HI(after_1, v)
+        _SET_LO(after_1, v_lo)
+        _SET_GAP(after_1, gap)
 
     # ---- rod 2 leaves the barycentre with w_2 = k_2/R_2: k_2 = m1 K, R_2 = sqrt(M^2 + k_2^2)
     k = m1 * kk
@@ -383,7 +449,8 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     p = r * r
     r_lo = (((r2 - p) - (((r_h * r_h - p) + 2.0 * r_h * r_t) + r_t * r_t)) + r2_lo) / (r + r)
     if u < 0.0 and (w := k / r) - u > _TANH_ONE * (1.0 - u * w):  # opposite signs, |U| + |theta'| > 1
-        (n, e), (dn, dn_lo) = _light_cone(add((r, r_lo), (k, k_lo)), (pm, pm_lo))  # exp(theta'_2) = (R + k)/P-
+        y, y_lo = _sum(r, r_lo, k, k_lo)
+        n, e, dn, dn_lo = _light_cone(y, y_lo, pm, pm_lo)  # exp(theta'_2) = (R + k)/P-
         zero = -NOISE * dn <= n <= NOISE * dn
     else:  # V'_2 = (u R + k)/(R + u k)
         ur = uq * r
@@ -421,8 +488,12 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             g = 1.0 + v
             gap = g + (((1.0 - g) + v) + v_lo)
         else:
-            gap = _gap_near_light(v, add((r, r_lo), (k, k_lo)), (pm, pm_lo))
-        after_2 = ExactVelocity(v, v_lo, gap)
+            y, y_lo = _sum(r, r_lo, k, k_lo)
+            gap = _gap_near_light(v, y, y_lo, pm, pm_lo)
+        after_2 = _NEW(ExactVelocity)
+        _SET_HI(after_2, v)
+        _SET_LO(after_2, v_lo)
+        _SET_GAP(after_2, gap)
 
     if eps == 1.0:
         gain = 0.0
@@ -436,7 +507,14 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
             * (m1 * b1 * b1 / (sqrt(1.0 + b1 * b1) + g1) + m2 * b2 * b2 / (sqrt(1.0 + b2 * b2) + g2))
             / (m1 * g1 + m2 * g2)
         )
-    return CollisionSolution(bary, (after_1, after_2), gain, gain * mass_sum, (v1, v2))
+    sol = _NEW(CollisionSolution)  # as CollisionSolution.__init__ does, without its call
+    fields = sol.__dict__
+    fields["u"] = bary
+    fields["after"] = (after_1, after_2)
+    fields["mass_gain"] = gain
+    fields["heat"] = gain * mass_sum
+    fields["before"] = (v1, v2)
+    return sol
 
 
 #: The far ends' switches (Eqs. (22)-(25)); the same in every collision.

@@ -12,7 +12,8 @@ clock is this thread's CPU time (``--clock wall`` for wall time): on a shared ma
 to other processes is not counted, though their use of the caches still is.
 
 * solve: a scene's scalar solution without the Scene object, its frame presets and checks:
-  ``solve_collision`` for the collision (the target: under 10 us); the bounce's velocity and heat
+  ``solve_collision`` for the collision (the target: under 10 us; the paper's defaults, the benchmark
+  collision and :data:`EXTRA_COLLISIONS`); the bounce's velocity and heat
   plus ``rigid_motion`` for the wall; ``near_radius`` plus ``rigid_motion`` for the accelerations;
   ``rigid_motion`` for the impulse;
 * build: ``rr.build_scene(kind)`` with the paper's defaults, and ``rr.rod_collision(0.6, -0.3,
@@ -49,6 +50,16 @@ DECIMAL_REVISION = "e1aa9d5"
 BASELINE_NAME = "rigidrel_core_baseline"
 #: The benchmark collision of bench_core: v1, v2, m1, m2, l1, l2, eps.
 COLLISION = (0.6, -0.3, 1.0, 2.0, 1.0, 1.5, 0.8)
+
+#: The other collisions of the speed-accuracy bench and its stability map (v1, v2, m1, m2, eps):
+#: near light, lopsided sizes, and the light-cone branches of the solution.
+EXTRA_COLLISIONS = {
+    "V1 = 1 - 1e-12, equal masses": (1.0 - 1e-12, 0.0, 1.0, 1.0, 1.0),
+    "0.5, -0.5, M1 = 1e6 M2, eps 0.2": (0.5, -0.5, 1e6, 1.0, 0.2),
+    "V1 = 0.99, M2 = 2 M1": (0.99, 0.0, 1.0, 2.0, 1.0),
+    "V1 = 1 - 1e-9, M2 = 2 M1": (1.0 - 1e-9, 0.0, 1.0, 2.0, 1.0),
+    "1 - 1e-9, -(1 - 1e-7), M2 = 100 M1, eps 0.7": (0.999999999, -0.9999999, 1.0, 100.0, 0.7),
+}
 
 Case = Callable[[], object]
 
@@ -147,6 +158,8 @@ def cases(core: ModuleType) -> dict[str, Case]:
         "rod-collision solve (defaults)": solve_default_collision,
         "rod-collision solve (0.6, -0.3, eps 0.8)": lambda: collision.solve_collision(v1, v2, m1, m2, eps),
     }
+    for label, args in EXTRA_COLLISIONS.items():
+        out[f"rod-collision solve ({label})"] = lambda args=args: collision.solve_collision(*args)
     for kind in descriptions:
         out[f"{kind} build"] = lambda kind=kind: core.build_scene(kind)
     out["rod-collision build (0.6, -0.3, eps 0.8)"] = lambda: core.rod_collision(*COLLISION)
