@@ -167,7 +167,7 @@ def test_sliders_are_the_registry_parameters(kind: str) -> None:
         else:
             assert (slider.min, slider.max, slider.step) == (p.slider.lo, p.slider.hi, p.slider.step)
         assert entry.label == p.label
-    assert (view.time.min, view.time.max) == view.state.drawn.window
+    assert (view.time.min, view.time.max) == pytest.approx(view.state.drawn.window, rel=1e-12)
 
 
 @pytest.mark.parametrize(
@@ -189,3 +189,11 @@ def test_explore_says_which_extra_it_needs(monkeypatch: pytest.MonkeyPatch) -> N
     monkeypatch.delitem(sys.modules, "rigidrel_app.notebook.widget")
     with pytest.raises(ImportError, match=r"pip install 'rigidrel\[notebook\]'"):
         explore("rod-collision")
+
+
+def test_a_time_that_comes_back_with_float_noise_is_the_same_time() -> None:
+    """A browser slider computes ``min + k * step`` in floating point: 0.3 may come back as
+    0.29999999999999977, and must not redraw a different picture."""
+    s = at_time(start("rod-collision", v1=0.6), 0.3)
+    noisy = at_time(s, 0.29999999999999977)
+    assert noisy.now == s.now == 0.3 and same_arrays(figure_arrays(live_figure(noisy)), figure_arrays(live_figure(s)))

@@ -27,19 +27,22 @@ from ..view.scene_view import Drawn, build_drawing, nice_step, readout_markdown
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, build, frame_choice, frame_choices, resolve
 from ..view.vocabulary import Chart, Item, Label
 
-#: The live figure (CSS pixels): three panels side by side, legends below them; fits a notebook
-#: cell of a 1280-px-wide browser window.
-FIGURE_PX = (1200, 560)
-#: Margins around the panels (left, right, top, bottom): panel titles above, legends below.
-MARGIN_PX = (60, 20, 40, 150)
-#: Horizontal domains (fractions of the plot width): the lab diagram, the chosen frame's, the lengths.
-PANEL_DOMAINS = ((0.0, 0.29), (0.355, 0.645), (0.72, 1.0))
+#: The live figure (CSS pixels): the two Minkowski diagrams side by side, the equal-time lengths
+#: under the lab's, the legends beside it. Fits the output area of JupyterLab or VS Code in a
+#: 1280-px-wide window (about 850 px).
+FIGURE_PX = (840, 940)
+#: Margins around the panels (left, right, top, bottom): two-line panel titles above.
+MARGIN_PX = (60, 10, 60, 60)
+#: Each panel's domain (x, y: fractions of the plot area): the lab diagram, the chosen frame's, the lengths.
+PANEL_DOMAINS = (((0.0, 0.45), (0.5, 1.0)), ((0.55, 1.0), (0.5, 1.0)), ((0.0, 0.45), (0.0, 0.3)))
+#: Where the one legend starts (paper fractions, its top left corner): beside the lengths.
+LEGEND_AT = (0.55, 0.41)
 #: The β slider of a custom frame: the app's range and step.
 BETA_ENTRY = NumberEntry("β (custom frame)", *CUSTOM_BETA, 0.01)
 _PLOT_W = FIGURE_PX[0] - MARGIN_PX[0] - MARGIN_PX[1]
 _PLOT_H = FIGURE_PX[1] - MARGIN_PX[2] - MARGIN_PX[3]
 #: Each panel's plot area (px): the diagrams' curves are sampled and their labels placed for it.
-PANEL_PX = tuple(((d1 - d0) * _PLOT_W, float(_PLOT_H)) for d0, d1 in PANEL_DOMAINS)
+PANEL_PX = tuple(((x1 - x0) * _PLOT_W, (y1 - y0) * _PLOT_H) for (x0, x1), (y0, y1) in PANEL_DOMAINS)
 _MARKDOWN = MarkdownIt("commonmark", {"html": False})
 #: The material points whose places the time slider marks: each rod's two ends.
 _ENDS = np.array([0.0, 1.0])
@@ -65,8 +68,15 @@ def slider_value(parameter: rr.Parameter, value: float | None) -> float:
 def time_entry(drawn: Drawn) -> NumberEntry:
     """The time slider: over the scene's window (lab t and the chosen frame's t′ together), in steps
     of about 1/1000 of it."""
-    t0, t1 = drawn.window
+    t0, t1 = (slider_time(t) for t in drawn.window)
     return NumberEntry("t, t′", t0, t1, nice_step(t1 - t0), noun="a time")
+
+
+def slider_time(t: float) -> float:
+    """A time as the time slider holds it: to 12 significant digits. A browser's slider computes its
+    value as ``min + k * step`` in floating point, which leaves noise in the last digits (0.3 comes
+    back as 0.29999999999999977); the same time must give the same picture, not a redraw."""
+    return float(f"{t:.12g}")
 
 
 @dataclass(frozen=True)
@@ -126,7 +136,7 @@ def start(kind: str, frame: str | float | None = None, t: float | None = None, *
         settings = replace(Settings.of(kind, **values), frame=CUSTOM_FRAME, beta=float(frame))
     drawn = build_drawing(build(settings), areas=(PANEL_PX[0], PANEL_PX[2]))  # a refusal raises, naming it
     now = drawn.window[0] if t is None else t
-    state = LiveState(settings, drawn, drawn.window[0])
+    state = LiveState(settings, drawn, slider_time(drawn.window[0]))
     moved = at_time(state, now)
     if moved.notice:
         raise rr.ParameterError("t", state.time.allowed(), t)
@@ -139,7 +149,7 @@ def change(state: LiveState, settings: Settings) -> LiveState:
     drawn = _draw(settings)
     if isinstance(drawn, str):
         return replace(state, notice=drawn)
-    t0, t1 = drawn.window
+    t0, t1 = (slider_time(t) for t in drawn.window)
     return LiveState(settings, drawn, min(max(state.now, t0), t1))
 
 
@@ -173,9 +183,10 @@ def at_time(state: LiveState, now: float) -> LiveState:
     """The state at playback time ``now`` (lab t on the lab diagram, t′ on the chosen frame's); a
     time outside the scene's window is refused, naming the window."""
     entry = state.time
-    if not entry.lo <= now <= entry.hi:
+    t = slider_time(now)
+    if not entry.lo <= t <= entry.hi:
         return replace(state, notice=entry.refuse(f"{now:.6g}").notice)
-    return replace(state, now=float(now), notice="")
+    return replace(state, now=t, notice="")
 
 
 # ---------------------------------------------------------------------------------- the figure
@@ -185,9 +196,28 @@ def _axis_names(k: int) -> tuple[str, str]:
 
 
 def _panel_traces(items: tuple[Item, ...], k: int) -> list[dict[str, Any]]:
+    """Panel ``k``'s traces. The panels share one legend: an entry of the chosen frame's
+    diagram named as one of the lab's (rod 1, light cone, events...) is grouped with it under that
+    name (a click on it shows or hides both), and listed once."""
     xa, ya = _axis_names(k)
-    legend = "legend" if k == 0 else f"legend{k + 1}"
-    return [{**t, "xaxis": xa, "yaxis": ya, "legend": legend} for i in items for t in item_to_traces(i)]
+    out = []
+    for t in (t for i in items for t in item_to_traces(i)):
+        shared = {"legendgroup": t.get("legendgroup", f"name: {t['name']}")} if k < 2 and t["showlegend"] else {}
+        out.append({**t, **shared, "xaxis": xa, "yaxis": ya})
+    return out
+
+
+def _list_once(data: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """``data`` with each legend entry listed once (the first trace of its name)."""
+    seen: set[str] = set()
+    out = []
+    for t in data:
+        if t["showlegend"] and t["name"] in seen:
+            t = {**t, "showlegend": False}
+        if t["showlegend"]:
+            seen.add(t["name"])
+        out.append(t)
+    return out
 
 
 def _moving_items(state: LiveState) -> tuple[tuple[Item, ...], ...]:
@@ -214,29 +244,29 @@ def _panel_layout(chart: Chart, k: int) -> dict[str, Any]:
     own = chart_layout(chart)
     xa, ya = _axis_names(k)
     x_name, y_name = ("xaxis", "yaxis") if k == 0 else (f"xaxis{k + 1}", f"yaxis{k + 1}")
-    d0, d1 = PANEL_DOMAINS[k]
-    xaxis = {**own["xaxis"], "domain": [d0, d1], "anchor": ya}
-    yaxis = {**own["yaxis"], "anchor": xa}
+    (x0, x1), (y0, y1) = PANEL_DOMAINS[k]
+    xaxis = {**own["xaxis"], "domain": [x0, x1], "anchor": ya}
+    yaxis = {**own["yaxis"], "domain": [y0, y1], "anchor": xa}
     if chart.equal_aspect:
         yaxis["scaleanchor"] = xa
     annotations = [{**label_to_annotation(i), "xref": xa, "yref": ya} for i in chart.items if isinstance(i, Label)]
     annotations.append(
         {
-            "text": chart.title,
-            "x": d0,
-            "y": 1.0,
+            "text": chart.title.replace(", ", ",<br>", 1),  # two lines: a frame's name with its β is long
+            "x": x0,
+            "y": y1,
             "xref": "paper",
             "yref": "paper",
             "xanchor": "left",
+            "align": "left",
             "yanchor": "bottom",
             "yshift": 6,
             "showarrow": False,
             "font": {"size": TITLE_PX},
         }
     )
-    legend_name = "legend" if k == 0 else f"legend{k + 1}"
-    legend = {**own["legend"], "x": d0, "y": -70.0 / _PLOT_H, "xanchor": "left", "yanchor": "top"}
-    return {x_name: xaxis, y_name: yaxis, legend_name: legend, "annotations": annotations}
+    panel = {x_name: xaxis, y_name: yaxis, "annotations": annotations}
+    return panel
 
 
 def live_figure(state: LiveState) -> dict[str, Any]:
@@ -244,7 +274,7 @@ def live_figure(state: LiveState) -> dict[str, Any]:
     each chart first (:func:`static_trace_count`), then :func:`moving_traces`."""
     d = state.drawn
     data = [t for k, chart in enumerate(d.charts) for t in _panel_traces(chart.items, k)]
-    data += moving_traces(state)
+    data = _list_once(data + moving_traces(state))
     left, right, top, bottom = MARGIN_PX
     layout: dict[str, Any] = {
         "width": FIGURE_PX[0],
@@ -254,6 +284,15 @@ def live_figure(state: LiveState) -> dict[str, Any]:
         "paper_bgcolor": "white",
         "font": chart_layout(d.length_chart)["font"],
         "showlegend": True,
+        "legend": {
+            **chart_layout(d.length_chart)["legend"],
+            "orientation": "v",
+            "x": LEGEND_AT[0],
+            "y": LEGEND_AT[1],
+            "xanchor": "left",
+            "yanchor": "top",
+            "tracegroupgap": 0,
+        },
         "annotations": [],
     }
     for k, chart in enumerate(d.charts):
