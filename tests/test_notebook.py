@@ -15,7 +15,7 @@ import pytest
 import rigidrel_core as rr
 from rigidrel_app.backends.plotly import dumps
 from rigidrel_app.notebook import explore
-from rigidrel_app.notebook.explore import (
+from rigidrel_app.notebook.live_state import (
     at_time,
     figure_arrays,
     live_figure,

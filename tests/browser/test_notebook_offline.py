@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from nbclient import NotebookClient
 
-from rigidrel_app.notebook.explore import figure_arrays, live_figure, start
+from rigidrel_app.notebook.live_state import figure_arrays, live_figure, start
 from tests.viser_client import wait_until
 
 CELLS = [
@@ -28,7 +28,7 @@ CELLS = [
     'lesson("paper")',
     # the live view: built in the kernel, then one slider moved there (as a person's drag arrives)
     'from rigidrel_app.notebook import explore\nview = explore("rod-collision", v1=0.6, frame="barycentric")\nview',
-    "from rigidrel_app.notebook.explore import figure_arrays, live_figure, start\n"
+    "from rigidrel_app.notebook.live_state import figure_arrays, live_figure, start\n"
     "import numpy as np\n"
     "before = [np.asarray(t.x, dtype=float) for t in view.figure.data]\n"
     'view.sliders["v1"].value = 0.8\n'

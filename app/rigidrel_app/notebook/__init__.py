@@ -13,7 +13,7 @@ the installed plotly package, never from a CDN. ``explore`` (:mod:`.widget`, nee
 ``notebook`` extra: ``pip install 'rigidrel[notebook]'``) is a live widget: its sliders are the
 scene registry's parameters, each change is computed by the core in the kernel and redraws a
 plotly ``FigureWidget`` (its script also ships with plotly). Its logic, without widgets, is
-:mod:`.explore`. Outside a notebook they return ordinary objects (a plotly ``Figure``; a
+:mod:`.live_state`. Outside a notebook they return ordinary objects (a plotly ``Figure``; a
 :class:`Recording` with ``html`` and ``save``; a :class:`LessonView` with ``html``; an ipywidgets box).
 """
 

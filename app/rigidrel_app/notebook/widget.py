@@ -2,7 +2,7 @@
 
 Needs the ``notebook`` extra (``pip install 'rigidrel[notebook]'``: ipywidgets, and anywidget, through
 which plotly >= 6 draws a ``FigureWidget``; its script ships inside the installed plotly, so the
-view works with no network). Every callback asks :mod:`.explore` for the new state and only
+view works with no network). Every callback asks :mod:`.live_state` for the new state and only
 assigns what it built; the kernel computes, the browser draws.
 """
 
@@ -16,7 +16,7 @@ import ipywidgets as w
 import plotly.graph_objects as go
 
 from ..view.entry import NumberEntry
-from .explore import (
+from .live_state import (
     BETA_ENTRY,
     LiveState,
     at_time,
@@ -87,7 +87,7 @@ class LiveView(w.VBox):
     parameter, the frame menu, a β slider (the custom frame) and a time slider; every change is
     computed by the core in the kernel.
 
-    ``state`` is the current :class:`~.explore.LiveState`; :attr:`figure` the ``FigureWidget``;
+    ``state`` is the current :class:`~.live_state.LiveState`; :attr:`figure` the ``FigureWidget``;
     :attr:`sliders` the parameter sliders by parameter name; :meth:`set` sets any parameter (also
     beyond its slider's range, which the core may accept or refuse)."""
 
