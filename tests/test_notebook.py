@@ -1,11 +1,32 @@
-"""The README's notebook example, run outside a notebook."""
+"""The README's notebook example, run outside a notebook; the live view's callbacks, run without a browser."""
 
 from __future__ import annotations
 
+import math
 import re
+import sys
 from pathlib import Path
+from typing import Any
 
+import numpy as np
 import plotly.graph_objects as go
+import pytest
+
+import rigidrel_core as rr
+from rigidrel_app.backends.plotly import dumps
+from rigidrel_app.notebook import explore
+from rigidrel_app.notebook.live_state import (
+    at_time,
+    figure_arrays,
+    live_figure,
+    slider_parameters,
+    start,
+    static_trace_count,
+    with_beta,
+    with_parameter,
+)
+from rigidrel_app.notebook.widget import LiveView
+from rigidrel_app.view.state import CUSTOM_FRAME
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 
@@ -28,3 +49,151 @@ def test_readme_notebook_example_runs() -> None:
     html = rec._repr_html_()  # type: ignore[attr-defined]
     assert html.startswith("<iframe srcdoc=") and "__VISER_EMBED_DATA__" in html
     assert len(html) > 100_000
+
+
+# ---------------------------------------------------------------------------------- the live view
+# The callbacks run in this process as they would in a kernel: a slider's value is set, ipywidgets
+# calls the view's observer, and the FigureWidget's traces are compared with the core's numbers.
+
+
+def traces(view: LiveView) -> list[Any]:
+    """The FigureWidget's traces (plotly's generated trace classes, untyped here)."""
+    return list(view.figure.data)
+
+
+def widget_arrays(view: LiveView) -> list[tuple[np.ndarray, np.ndarray]]:
+    return [(np.asarray(t.x, dtype=float), np.asarray(t.y, dtype=float)) for t in traces(view)]
+
+
+def same_arrays(a: list[tuple[np.ndarray, np.ndarray]], b: list[tuple[np.ndarray, np.ndarray]]) -> bool:
+    return len(a) == len(b) and all(
+        np.array_equal(xa, xb, equal_nan=True) and np.array_equal(ya, yb, equal_nan=True)
+        for (xa, ya), (xb, yb) in zip(a, b)
+    )
+
+
+def test_a_parameter_slider_redraws_the_figure_as_the_core_says() -> None:
+    view = explore("rod-collision", v1=0.6, frame="barycentric", t=0.5)
+    before = widget_arrays(view)
+    view.sliders["v1"].value = 0.8  # as a person dragging it: ipywidgets calls the observer
+    after = widget_arrays(view)
+    assert not same_arrays(before, after)
+    assert view.state.settings.value("v1") == 0.8 and view.state.notice == "" and view.notice.value == ""
+    # the very figure the app's builders make of the core's scene with v1 = 0.8, in the same frame at the same time
+    assert same_arrays(after, figure_arrays(live_figure(start("rod-collision", "barycentric", 0.5, v1=0.8))))
+    # and, straight from the core: the rods' ends now (diamonds on the lab diagram) and the lengths now
+    scene = rr.build_scene("rod-collision", v1=0.8)
+    frame = scene.frame("barycentric")
+    lab_ends = scene.snapshot(0.5, rr.LAB, fractions=[0.0, 1.0])[0]
+    drawn_ends = sorted(x for t in traces(view) if t.xaxis == "x" and t.legendgroup == "rods now" for x in t.x)
+    assert np.array_equal(np.sort(lab_ends.ravel()), np.array(drawn_ends))
+    length_markers = [t for t in traces(view) if t.xaxis == "x3" and t.legendgroup == "rods now"]
+    drawn_lengths = sorted(y for t in length_markers for y in t.y)
+    core_lengths = np.concatenate([scene.lengths(0.5, rr.LAB), scene.lengths(0.5, frame)])
+    assert np.array_equal(np.sort(core_lengths), np.array(drawn_lengths))
+    assert f"{scene.final_velocities[0]:+.4f}" in view.readout.value
+
+
+def test_the_time_slider_moves_only_the_moving_parts() -> None:
+    view = explore("wall-collision", v=0.6)
+    n_static = static_trace_count(view.state.drawn)
+    before = widget_arrays(view)
+    t0, t1 = view.state.drawn.window
+    view.time.value = round(0.5 * (t0 + t1), 3)
+    after = widget_arrays(view)
+    assert same_arrays(before[:n_static], after[:n_static])  # the curves stay
+    assert not same_arrays(before[n_static:], after[n_static:])  # the now-lines and diamonds move
+    assert same_arrays(after, figure_arrays(live_figure(view.state)))
+    scene = rr.build_scene("wall-collision", v=0.6)
+    frame = view.state.drawn.resolved.frame
+    now = view.time.value
+    length_markers = [t for t in traces(view) if t.xaxis == "x3" and t.legendgroup == "rods now"]
+    drawn = sorted(y for t in length_markers for y in t.y)
+    assert np.array_equal(np.sort(np.concatenate([scene.lengths(now, rr.LAB), scene.lengths(now, frame)])), drawn)
+
+
+def test_a_refused_value_shows_a_notice_and_keeps_the_picture() -> None:
+    view = explore("rod-collision", v1=0.6, frame="barycentric")
+    before = widget_arrays(view)
+    view.sliders["v1"].value = 0.0  # within the slider, but the rods (v2 = 0) would never meet
+    assert "v2 must be less than v1" in view.state.notice and "V2 = 0 refused" in view.notice.value
+    assert same_arrays(before, widget_arrays(view))
+    assert view.sliders["v1"].value == 0.6  # the slider goes back to the scene on screen
+    view.set("m2", -1.0)  # beyond the core's range: its range is named
+    assert view.state.notice.startswith("M2/M1 = -1 refused: m2 must be a finite number in (0, ")
+    assert same_arrays(before, widget_arrays(view)) and view.sliders["m2"].value == 2.0
+    view.set("m2", 1000.0)  # beyond the log slider but a scene: the slider widens to show it, never clamps
+    assert view.state.notice == "" and view.sliders["m2"].value == 1000.0 and view.sliders["m2"].max == 3.0
+    # the next valid change clears the notice
+    view.sliders["m2"].value = 10.0
+    assert view.state.notice == "" and view.notice.value == "" and not same_arrays(before, widget_arrays(view))
+
+
+def test_refusals_name_the_control_and_its_range() -> None:
+    s = start("rod-collision", v1=0.6, frame="barycentric")
+    assert with_parameter(s, "v1", 1.2).notice.startswith("V1 = 1.2 refused: v1 must be a finite number in (-1, 1)")
+    assert with_parameter(s, "v1", 1.2).drawn is s.drawn
+    t0, t1 = s.drawn.window
+    assert f"it must be a time in [{t0:g}, {t1:g}]" in at_time(s, t1 + 1.0).notice
+    assert "it must be a number in [-0.99, 0.99]" in with_beta(s, 0.995).notice
+    assert "not a parameter of rod-collision" in with_parameter(s, "mass", 1.0).notice
+    with pytest.raises(rr.ParameterError, match="v1"):
+        explore("rod-collision", v1=1.5)  # the opening values are the caller's: the core's error, naming v1
+
+
+def test_the_frame_menu_and_the_beta_slider() -> None:
+    view = explore("rod-collision", v1=0.6)
+    assert tuple(view.frame.options) == (*rr.build_scene("rod-collision", v1=0.6).frames, CUSTOM_FRAME)
+    view.frame.value = "rod 2 after"
+    beta = rr.build_scene("rod-collision", v1=0.6).frame("rod 2 after").beta
+    assert view.state.drawn.resolved.frame.beta == beta and view.beta.value == pytest.approx(beta)
+    view.beta.value = -0.5  # the custom frame
+    assert view.frame.value == CUSTOM_FRAME and view.state.drawn.resolved.frame.beta == -0.5
+    assert same_arrays(widget_arrays(view), figure_arrays(live_figure(view.state)))
+
+
+@pytest.mark.parametrize("kind", sorted(rr.scene_descriptions()))
+def test_sliders_are_the_registry_parameters(kind: str) -> None:
+    view = explore(kind)
+    d = rr.describe(kind)
+    assert list(view.sliders) == [p.name for p in d.parameters if p.slider is not None]
+    for p, entry in slider_parameters(kind):
+        slider = view.sliders[p.name]
+        assert slider.description == p.label
+        assert p.slider is not None
+        if p.slider.scale == "log":
+            assert type(slider).__name__ == "FloatLogSlider"
+            assert (slider.min, slider.max) == (math.log10(p.slider.lo), math.log10(p.slider.hi))
+        else:
+            assert (slider.min, slider.max, slider.step) == (p.slider.lo, p.slider.hi, p.slider.step)
+        assert entry.label == p.label
+    assert (view.time.min, view.time.max) == pytest.approx(view.state.drawn.window, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("values", "frame"),
+    [({"v1": 0.99}, 0.99), ({"v1": 0.99, "v2": -0.99}, -0.99), ({"m2": 0.01}, "barycentric"), ({"m2": 100.0}, None)],
+)
+def test_extremes_draw_finite_figures(values: dict[str, float], frame: float | str | None) -> None:
+    s = start("rod-collision", frame, **values)
+    fig = live_figure(s)
+    dumps(fig["layout"])  # allow_nan=False: no NaN or infinity in any range, label place or title
+    for ax in ("xaxis", "yaxis", "xaxis2", "yaxis2", "xaxis3", "yaxis3"):
+        assert all(math.isfinite(v) for v in fig["layout"][ax]["range"])
+    for x, y in figure_arrays(fig):
+        assert np.isfinite(x[~np.isnan(x)]).all() and np.isfinite(y[~np.isnan(y)]).all()
+
+
+def test_explore_says_which_extra_it_needs(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(sys.modules, "ipywidgets", None)  # as if not installed
+    monkeypatch.delitem(sys.modules, "rigidrel_app.notebook.widget")
+    with pytest.raises(ImportError, match=r"pip install 'rigidrel\[notebook\]'"):
+        explore("rod-collision")
+
+
+def test_a_time_that_comes_back_with_float_noise_is_the_same_time() -> None:
+    """A browser slider computes ``min + k * step`` in floating point: 0.3 may come back as
+    0.29999999999999977, and must not redraw a different picture."""
+    s = at_time(start("rod-collision", v1=0.6), 0.3)
+    noisy = at_time(s, 0.29999999999999977)
+    assert noisy.now == s.now == 0.3 and same_arrays(figure_arrays(live_figure(noisy)), figure_arrays(live_figure(s)))

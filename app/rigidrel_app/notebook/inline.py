@@ -1,4 +1,4 @@
-"""Scenes in a Jupyter notebook: the diagram as a plotly figure, the 3-D lanes as a playing recording,
+"""Static notebook output: the diagram as a plotly figure, the 3-D lanes as a playing recording,
 a lesson's steps inline. All of it works with no network: plotly.js comes from the installed
 plotly package, never from a CDN.
 
@@ -26,11 +26,11 @@ from markdown_it import MarkdownIt
 
 import rigidrel_core as rr
 
-from .export.diagram import diagram_figure
-from .export.recording import record_lanes_html
-from .lessons import Lesson, lesson_from
-from .view.scene_view import build_drawing
-from .view.state import Resolved
+from ..export.diagram import diagram_figure
+from ..export.recording import record_lanes_html
+from ..lessons import Lesson, lesson_from
+from ..view.scene_view import build_drawing
+from ..view.state import Resolved
 
 
 class _PlotlyInPage:
