@@ -187,8 +187,11 @@ class Obstacles:
 
 def _leader_end(ax: float, ay: float, box: Box) -> tuple[float, float]:
     """Where a leader line from ``(ax, ay)`` towards the centre of ``box`` meets its edge."""
-    ex, ey = _leader_ends(ax, ay, *(np.array([v]) for v in (box.left, box.top, box.right, box.bottom)))
-    return float(ex[0]), float(ey[0])
+    cx, cy = 0.5 * (box.left + box.right), 0.5 * (box.top + box.bottom)
+    dx, dy = cx - ax, cy - ay
+    hw, hh = 0.5 * (box.right - box.left), 0.5 * (box.bottom - box.top)
+    scale = max(abs(dx) / hw if hw > 0 else 0.0, abs(dy) / hh if hh > 0 else 0.0, 1e-12)
+    return cx - dx / scale, cy - dy / scale
 
 
 def _leader_ends(
@@ -388,11 +391,25 @@ class _Field:
         return self.curves.near(region), m.take(meets)
 
 
+@dataclass(frozen=True)
+class _Spots:
+    """A label's candidate spots (:func:`candidate_offsets`) as arrays, made once per text size."""
+
+    offsets: tuple[tuple[float, float, bool], ...]
+    dx: FloatArray
+    dy: FloatArray
+    needs_leader: np.ndarray
+    reach: float
+    """The farthest a spot's centre lies from the point along x or y, CSS pixels."""
+
+
 @lru_cache(maxsize=256)
-def _candidates(
-    width: float, height: float, size: float, first: str, rings: int
-) -> tuple[tuple[float, float, bool], ...]:
-    return tuple(candidate_offsets(width, height, size, first, rings))
+def _spots(width: float, height: float, size: float, first: str, rings: int) -> _Spots:
+    offsets = tuple(candidate_offsets(width, height, size, first, rings))
+    reach = max(max(abs(dx), abs(dy)) for dx, dy, _ in offsets)
+    dx = np.array([o[0] for o in offsets], float)
+    dy = np.array([o[1] for o in offsets], float)
+    return _Spots(offsets, dx, dy, np.array([o[2] for o in offsets], bool), reach)
 
 
 def _best_spot(
@@ -412,18 +429,19 @@ def _best_spot(
     ``(crossings, order, dx, dy, leader)``, or ``None`` if no spot is clear of labels and markers.
     Every candidate is tested at once (arrays over candidates x obstacles); the choice is the one a
     loop over the candidates in order would make."""
-    candidates = _candidates(w, h, label.size, label.anchor, rings)
-    offsets = np.array([(dx, dy) for dx, dy, _ in candidates], float)
-    dxs, dys = offsets[:, 0], offsets[:, 1]
-    needs_leader = np.array([leader for _, _, leader in candidates], bool)
-    reach = float(np.max(np.maximum(np.abs(dxs), np.abs(dys)))) + w + h
+    spots = _spots(w, h, label.size, label.anchor, rings)
+    dxs, dys, needs_leader = spots.dx, spots.dy, spots.needs_leader
+    reach = spots.reach + w + h
     curves, markers = field.near(Box(ax - reach, ay - reach, ax + reach, ay + reach))
     boxes = _Boxes(ax + dxs - 0.5 * w, ay - dys - 0.5 * h, ax + dxs + 0.5 * w, ay - dys + 0.5 * h)
     ok = (boxes.left >= 0.0) & (boxes.top >= 0.0) & (boxes.right <= area[0]) & (boxes.bottom <= area[1])
     grown = boxes.grown(MARGIN_PX)
     ok &= ~grown.meet_any(taken) & ~boxes.meet_any(markers)
-    if use_leaders and ok.any():
+    if not ok.any():
+        return None
+    if use_leaders and field.leaders.x0.size:
         ok &= field.leaders.crossings(grown) == 0
+    if use_leaders and (field.leaders.x0.size or taken.left.size):
         lead = np.flatnonzero(ok & needs_leader)
         if lead.size:
             b = boxes.take(lead)
@@ -433,12 +451,12 @@ def _best_spot(
     bare = np.flatnonzero(ok & ~needs_leader)
     if bare.size and markers.left.size:  # the text would seem to name another point
         ok[bare[_nearer_marker_any(ax, ay, boxes.take(bare), markers)]] = False
-    spots = np.flatnonzero(ok)
-    if spots.size == 0:
+    clear = np.flatnonzero(ok)
+    if clear.size == 0:
         return None
-    counts = curves.crossings(grown.take(spots))
-    order = int(spots[int(np.argmin(counts))])  # the first of the fewest (a first clear spot has 0)
-    dx, dy, leader = candidates[order]
+    counts = curves.crossings(grown.take(clear))
+    order = int(clear[int(np.argmin(counts))])  # the first of the fewest (a first clear spot has 0)
+    dx, dy, leader = spots.offsets[order]
     return (int(counts.min()), order, dx, dy, leader)
 
 
