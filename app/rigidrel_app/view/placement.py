@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -193,36 +194,137 @@ def _leader_end(ax: float, ay: float, box: Box) -> tuple[float, float]:
     return cx - dx / scale, cy - dy / scale
 
 
-def _nearer_marker(ax: float, ay: float, box: Box, markers: tuple[Box, ...]) -> bool:
-    """Whether some other marker lies nearer ``box`` than the label's own point ``(ax, ay)``: a text
-    without a leader line names the point nearest to it."""
-    own = _box_distance(box, ax, ay)
-    for m in markers:
-        mx, my = 0.5 * (m.left + m.right), 0.5 * (m.top + m.bottom)
-        if abs(mx - ax) + abs(my - ay) > 1.0 and _box_distance(box, mx, my) < own:
-            return True
-    return False
+def _leader_ends(
+    ax: float, ay: float, left: FloatArray, top: FloatArray, right: FloatArray, bottom: FloatArray
+) -> tuple[FloatArray, FloatArray]:
+    """Where leader lines from ``(ax, ay)`` towards the centres of boxes meet their edges (all boxes at
+    once): the centre less ``(dx, dy) / max(|dx| / half width, |dy| / half height)``."""
+    cx, cy = 0.5 * (left + right), 0.5 * (top + bottom)
+    dx, dy = cx - ax, cy - ay
+    hw, hh = 0.5 * (right - left), 0.5 * (bottom - top)
+    zero = np.zeros_like(dx)
+    by_w = np.divide(np.abs(dx), hw, out=zero.copy(), where=hw > 0)
+    by_h = np.divide(np.abs(dy), hh, out=zero.copy(), where=hh > 0)
+    scale = np.maximum(np.maximum(by_w, by_h), 1e-12)
+    return cx - dx / scale, cy - dy / scale
 
 
-def _box_distance(box: Box, x: float, y: float) -> float:
-    dx = max(box.left - x, 0.0, x - box.right)
-    dy = max(box.top - y, 0.0, y - box.bottom)
-    return float(np.hypot(dx, dy))
+@dataclass(frozen=True)
+class _Boxes:
+    """Axis-aligned boxes as arrays (plot-area pixels, y down), tested against many at once."""
+
+    left: FloatArray
+    top: FloatArray
+    right: FloatArray
+    bottom: FloatArray
+
+    @staticmethod
+    def of(boxes: list[Box] | tuple[Box, ...]) -> _Boxes:
+        a = np.array([(b.left, b.top, b.right, b.bottom) for b in boxes], float).reshape(-1, 4)
+        return _Boxes(a[:, 0], a[:, 1], a[:, 2], a[:, 3])
+
+    def take(self, keep: np.ndarray) -> _Boxes:
+        return _Boxes(self.left[keep], self.top[keep], self.right[keep], self.bottom[keep])
+
+    def grown(self, by: float) -> _Boxes:
+        return _Boxes(self.left - by, self.top - by, self.right + by, self.bottom + by)
+
+    def meet_any(self, other: _Boxes) -> np.ndarray:
+        """For each of these boxes, whether it meets any of ``other`` (:meth:`Box.meets`)."""
+        if other.left.size == 0:
+            return np.zeros(self.left.shape, bool)
+        return np.any(
+            (self.left[:, None] < other.right)
+            & (other.left < self.right[:, None])
+            & (self.top[:, None] < other.bottom)
+            & (other.top < self.bottom[:, None]),
+            axis=1,
+        )
 
 
-def _leader_meets(ax: float, ay: float, box: Box, taken: list[Box]) -> bool:
-    """Whether the leader line to ``box`` would cross a label already placed."""
-    ex, ey = _leader_end(ax, ay, box)
-    return any(_segment_meets(ax, ay, ex, ey, b.grown(MARGIN_PX)) for b in taken)
+@dataclass(frozen=True)
+class _Curves:
+    """Curve segments as arrays, with their bounding boxes, for the tests of many boxes at once."""
+
+    x0: FloatArray
+    y0: FloatArray
+    x1: FloatArray
+    y1: FloatArray
+    lo_x: FloatArray
+    hi_x: FloatArray
+    lo_y: FloatArray
+    hi_y: FloatArray
+
+    @staticmethod
+    def of(obs: Obstacles) -> _Curves:
+        x0, y0, x1, y1 = obs.sx0, obs.sy0, obs.sx1, obs.sy1
+        return _Curves(x0, y0, x1, y1, np.minimum(x0, x1), np.maximum(x0, x1), np.minimum(y0, y1), np.maximum(y0, y1))
+
+    def near(self, region: Box) -> _Curves:
+        """Only the segments whose bounding boxes meet ``region`` (:meth:`Obstacles.near`)."""
+        keep = (
+            (self.hi_x >= region.left)
+            & (self.lo_x <= region.right)
+            & (self.hi_y >= region.top)
+            & (self.lo_y <= region.bottom)
+        )
+        return _Curves(
+            *(a[keep] for a in (self.x0, self.y0, self.x1, self.y1, self.lo_x, self.hi_x, self.lo_y, self.hi_y))
+        )
+
+    def crossings(self, boxes: _Boxes) -> np.ndarray:
+        """For each box, how many segments enter it (:meth:`Obstacles.crossings`, all boxes at once):
+        the pairs whose bounding boxes meet, then the corner-side test on those pairs only."""
+        n = boxes.left.size
+        if self.x0.size == 0 or n == 0:
+            return np.zeros(n, np.int64)
+        i, j = np.nonzero(
+            (self.hi_x >= boxes.left[:, None])
+            & (self.lo_x <= boxes.right[:, None])
+            & (self.hi_y >= boxes.top[:, None])
+            & (self.lo_y <= boxes.bottom[:, None])
+        )
+        if i.size == 0:
+            return np.zeros(n, np.int64)
+        x0, y0 = self.x0[j], self.y0[j]
+        dx, dy = self.x1[j] - x0, self.y1[j] - y0
+        sides = [
+            dx * (cy[i] - y0) - dy * (cx[i] - x0)
+            for cx in (boxes.left, boxes.right)
+            for cy in (boxes.top, boxes.bottom)
+        ]
+        lo = np.minimum(np.minimum(sides[0], sides[1]), np.minimum(sides[2], sides[3]))
+        hi = np.maximum(np.maximum(sides[0], sides[1]), np.maximum(sides[2], sides[3]))
+        return np.bincount(i[(lo <= 0.0) & (hi >= 0.0)], minlength=n)
+
+    def cut_any(self, ax: float, ay: float, ex: FloatArray, ey: FloatArray) -> np.ndarray:
+        """For each segment ``(ax, ay) -> (ex, ey)``, whether it crosses any of these segments
+        (:meth:`Obstacles.cut_by`, all at once)."""
+        if self.x0.size == 0:
+            return np.zeros(ex.shape, bool)
+        sx0, sy0, sx1, sy1 = self.x0, self.y0, self.x1, self.y1
+        ex2, ey2 = ex[:, None], ey[:, None]
+        d1 = np.sign((sx1 - sx0) * (ay - sy0) - (sy1 - sy0) * (ax - sx0))
+        d2 = np.sign((sx1 - sx0) * (ey2 - sy0) - (sy1 - sy0) * (ex2 - sx0))
+        d3 = np.sign((ex2 - ax) * (sy0 - ay) - (ey2 - ay) * (sx0 - ax))
+        d4 = np.sign((ex2 - ax) * (sy1 - ay) - (ey2 - ay) * (sx1 - ax))
+        return np.any((d1 * d2 <= 0) & (d3 * d4 <= 0), axis=1)
 
 
-def _segment_meets(x0: float, y0: float, x1: float, y1: float, box: Box) -> bool:
-    """Whether the segment ``(x0, y0) -> (x1, y1)`` enters ``box`` (one segment: plain floats)."""
-    if max(x0, x1) < box.left or min(x0, x1) > box.right or max(y0, y1) < box.top or min(y0, y1) > box.bottom:
-        return False
-    dx, dy = x1 - x0, y1 - y0
-    sides = [dx * (cy - y0) - dy * (cx - x0) for cx in (box.left, box.right) for cy in (box.top, box.bottom)]
-    return min(sides) <= 0.0 <= max(sides)
+def _segments_meet_any(ax: float, ay: float, ex: FloatArray, ey: FloatArray, boxes: _Boxes) -> np.ndarray:
+    """For each segment ``(ax, ay) -> (ex, ey)``, whether it enters any of ``boxes`` (the bounding-box
+    test, then no box corner-side test leaving all four corners on one side)."""
+    if boxes.left.size == 0:
+        return np.zeros(ex.shape, bool)
+    ex2, ey2 = ex[:, None], ey[:, None]
+    lo_x, hi_x = np.minimum(ax, ex2), np.maximum(ax, ex2)
+    lo_y, hi_y = np.minimum(ay, ey2), np.maximum(ay, ey2)
+    apart = (hi_x < boxes.left) | (lo_x > boxes.right) | (hi_y < boxes.top) | (lo_y > boxes.bottom)
+    dx, dy = ex2 - ax, ey2 - ay
+    sides = [dx * (cy - ay) - dy * (cx - ax) for cx in (boxes.left, boxes.right) for cy in (boxes.top, boxes.bottom)]
+    lo = np.minimum(np.minimum(sides[0], sides[1]), np.minimum(sides[2], sides[3]))
+    hi = np.maximum(np.maximum(sides[0], sides[1]), np.maximum(sides[2], sides[3]))
+    return np.any(~apart & (lo <= 0.0) & (hi >= 0.0), axis=1)
 
 
 def obstacles(chart: Chart, area: tuple[float, float]) -> Obstacles:
@@ -273,6 +375,43 @@ def label_box(chart: Chart, area: tuple[float, float], label: Label) -> Box:
     return Box(cx - 0.5 * w, cy - 0.5 * h, cx + 0.5 * w, cy + 0.5 * h)
 
 
+@dataclass(frozen=True)
+class _Field:
+    """A chart's obstacles as arrays, made once per :func:`place_labels` call: curve segments, marker
+    boxes (and their centres), and the leader lines drawn so far."""
+
+    curves: _Curves
+    markers: _Boxes
+    leaders: _Curves
+
+    def near(self, region: Box) -> tuple[_Curves, _Boxes]:
+        """The curves and markers that can matter inside ``region`` (:meth:`Obstacles.near`)."""
+        m = self.markers
+        meets = (m.left < region.right) & (region.left < m.right) & (m.top < region.bottom) & (region.top < m.bottom)
+        return self.curves.near(region), m.take(meets)
+
+
+@dataclass(frozen=True)
+class _Spots:
+    """A label's candidate spots (:func:`candidate_offsets`) as arrays, made once per text size."""
+
+    offsets: tuple[tuple[float, float, bool], ...]
+    dx: FloatArray
+    dy: FloatArray
+    needs_leader: np.ndarray
+    reach: float
+    """The farthest a spot's centre lies from the point along x or y, CSS pixels."""
+
+
+@lru_cache(maxsize=256)
+def _spots(width: float, height: float, size: float, first: str, rings: int) -> _Spots:
+    offsets = tuple(candidate_offsets(width, height, size, first, rings))
+    reach = max(max(abs(dx), abs(dy)) for dx, dy, _ in offsets)
+    dx = np.array([o[0] for o in offsets], float)
+    dy = np.array([o[1] for o in offsets], float)
+    return _Spots(offsets, dx, dy, np.array([o[2] for o in offsets], bool), reach)
+
+
 def _best_spot(
     ax: float,
     ay: float,
@@ -280,38 +419,65 @@ def _best_spot(
     h: float,
     label: Label,
     area: tuple[float, float],
-    taken: list[Box],
-    obs: Obstacles,
-    leaders: Obstacles | None,
+    taken: _Boxes,
+    field: _Field,
+    use_leaders: bool,
     rings: int,
 ) -> tuple[int, int, float, float, bool] | None:
     """The first candidate spot clear of everything, else the one crossing the fewest curves among
-    those clear of labels, markers and (unless ``leaders`` is ``None``) leader lines:
-    ``(crossings, order, dx, dy, leader)``, or ``None`` if no spot is clear of labels and markers."""
-    best: tuple[int, int, float, float, bool] | None = None
-    candidates = candidate_offsets(w, h, label.size, label.anchor, rings)
-    reach = max(max(abs(dx), abs(dy)) for dx, dy, _ in candidates) + w + h
-    obs = obs.near(Box(ax - reach, ay - reach, ax + reach, ay + reach))
-    for order, (dx, dy, leader) in enumerate(candidates):
-        box = Box(ax + dx - 0.5 * w, ay - dy - 0.5 * h, ax + dx + 0.5 * w, ay - dy + 0.5 * h)
-        if not box.inside(*area):
-            continue
-        grown = box.grown(MARGIN_PX)
-        if any(grown.meets(b) for b in taken) or any(box.meets(m) for m in obs.markers):
-            continue
-        if leaders is not None and (
-            leaders.crossings(grown)
-            or (leader and (_leader_meets(ax, ay, box, taken) or leaders.cut_by(ax, ay, *_leader_end(ax, ay, box))))
-        ):
-            continue
-        if not leader and _nearer_marker(ax, ay, box, obs.markers):
-            continue  # the text would seem to name another point
-        crossings = obs.crossings(grown)
-        if crossings == 0:
-            return (0, order, dx, dy, leader)
-        if best is None or crossings < best[0]:
-            best = (crossings, order, dx, dy, leader)
-    return best
+    those clear of labels, markers and (if ``use_leaders``) leader lines:
+    ``(crossings, order, dx, dy, leader)``, or ``None`` if no spot is clear of labels and markers.
+    Every candidate is tested at once (arrays over candidates x obstacles); the choice is the one a
+    loop over the candidates in order would make."""
+    spots = _spots(w, h, label.size, label.anchor, rings)
+    dxs, dys, needs_leader = spots.dx, spots.dy, spots.needs_leader
+    reach = spots.reach + w + h
+    curves, markers = field.near(Box(ax - reach, ay - reach, ax + reach, ay + reach))
+    boxes = _Boxes(ax + dxs - 0.5 * w, ay - dys - 0.5 * h, ax + dxs + 0.5 * w, ay - dys + 0.5 * h)
+    ok = (boxes.left >= 0.0) & (boxes.top >= 0.0) & (boxes.right <= area[0]) & (boxes.bottom <= area[1])
+    grown = boxes.grown(MARGIN_PX)
+    ok &= ~grown.meet_any(taken) & ~boxes.meet_any(markers)
+    if not ok.any():
+        return None
+    if use_leaders and field.leaders.x0.size:
+        ok &= field.leaders.crossings(grown) == 0
+    if use_leaders and (field.leaders.x0.size or taken.left.size):
+        lead = np.flatnonzero(ok & needs_leader)
+        if lead.size:
+            b = boxes.take(lead)
+            ex, ey = _leader_ends(ax, ay, b.left, b.top, b.right, b.bottom)
+            blocked = _segments_meet_any(ax, ay, ex, ey, taken.grown(MARGIN_PX)) | field.leaders.cut_any(ax, ay, ex, ey)
+            ok[lead[blocked]] = False
+    bare = np.flatnonzero(ok & ~needs_leader)
+    if bare.size and markers.left.size:  # the text would seem to name another point
+        ok[bare[_nearer_marker_any(ax, ay, boxes.take(bare), markers)]] = False
+    clear = np.flatnonzero(ok)
+    if clear.size == 0:
+        return None
+    counts = curves.crossings(grown.take(clear))
+    order = int(clear[int(np.argmin(counts))])  # the first of the fewest (a first clear spot has 0)
+    dx, dy, leader = spots.offsets[order]
+    return (int(counts.min()), order, dx, dy, leader)
+
+
+def _nearer_marker_any(ax: float, ay: float, boxes: _Boxes, markers: _Boxes) -> np.ndarray:
+    """For each box, whether some other marker (centre more than 1 px, taxicab, from ``(ax, ay)``)
+    lies nearer the box than the label's own point ``(ax, ay)``: a text without a leader line names
+    the point nearest to it."""
+    own = np.hypot(
+        np.maximum(np.maximum(boxes.left - ax, 0.0), ax - boxes.right),
+        np.maximum(np.maximum(boxes.top - ay, 0.0), ay - boxes.bottom),
+    )
+    mx, my = 0.5 * (markers.left + markers.right), 0.5 * (markers.top + markers.bottom)
+    other = np.abs(mx - ax) + np.abs(my - ay) > 1.0
+    if not other.any():
+        return np.zeros(own.shape, bool)
+    mx, my = mx[other], my[other]
+    dist = np.hypot(
+        np.maximum(np.maximum(boxes.left[:, None] - mx, 0.0), mx - boxes.right[:, None]),
+        np.maximum(np.maximum(boxes.top[:, None] - my, 0.0), my - boxes.bottom[:, None]),
+    )
+    return np.any(dist < own[:, None], axis=1)
 
 
 def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
@@ -322,8 +488,10 @@ def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
     if not (area[0] > 0 and area[1] > 0):
         raise ValueError(f"area_px must be two positive pixel sizes, got {area_px!r}")
     obs = obstacles(chart, area)
+    no_curves = _Curves.of(Obstacles(np.empty(0), np.empty(0), np.empty(0), np.empty(0), ()))
+    field = _Field(_Curves.of(obs), _Boxes.of(obs.markers), no_curves)
     taken: list[Box] = [label_box(chart, area, i) for i in chart.items if isinstance(i, Label) and not i.movable]
-    leaders = Obstacles(np.empty(0), np.empty(0), np.empty(0), np.empty(0), ())
+    leaders: list[tuple[float, float, float, float]] = []
     out: list[Item] = []
     for item in chart.items:
         if not (isinstance(item, Label) and item.movable):
@@ -335,11 +503,12 @@ def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
             out.append(item)
             continue
         w, h = text_box_px(item.text, item.size)
-        best = _best_spot(ax, ay, w, h, item, area, taken, obs, leaders, RINGS)
+        boxes = _Boxes.of(taken)
+        best = _best_spot(ax, ay, w, h, item, area, boxes, field, True, RINGS)
         if best is None:  # crowded: farther out, and at last across other leader lines
-            best = _best_spot(ax, ay, w, h, item, area, taken, obs, leaders, FAR_RINGS)
+            best = _best_spot(ax, ay, w, h, item, area, boxes, field, True, FAR_RINGS)
         if best is None:
-            best = _best_spot(ax, ay, w, h, item, area, taken, obs, None, FAR_RINGS)
+            best = _best_spot(ax, ay, w, h, item, area, boxes, field, False, FAR_RINGS)
         if best is None:  # nowhere free of labels and markers: keep the old spot, with a leader line
             out.append(replace(item, leader=True))
             continue
@@ -348,7 +517,9 @@ def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
         box = label_box(chart, area, placed)
         taken.append(box)
         if leader:
-            leaders = leaders.with_segment(ax, ay, *_leader_end(ax, ay, box))
+            leaders.append((ax, ay, *_leader_end(ax, ay, box)))
+            a = np.array(leaders, float)
+            field = replace(field, leaders=_Curves.of(Obstacles(a[:, 0], a[:, 1], a[:, 2], a[:, 3], ())))
         out.append(placed)
     return replace(chart, items=tuple(out), area_px=area)
 
