@@ -470,9 +470,10 @@ def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme)
 def chart_picture(chart: Chart, layout: ChartLayout, theme: Theme) -> tuple[ChartFrame, PagePicture]:
     """Everything of a chart that does not move with playback, and its data -> px frame."""
     f = chart_frame(chart, layout.plot)
-    if any(isinstance(i, Label) and i.movable for i in chart.items):
-        # the event labels placed again for this plot area: the canvas' size is the browser's
-        chart = place_labels(chart, (f.plot.width, f.plot.height))
+    area = (f.plot.width, f.plot.height)
+    if chart.area_px != area and any(isinstance(i, Label) and i.movable for i in chart.items):
+        # the event labels placed again for this plot area (unless they were placed for it already)
+        chart = place_labels(chart, area)
     return f, axes_picture(chart, f, layout, theme) + items_picture(chart.items, f, theme)
 
 
