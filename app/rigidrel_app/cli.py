@@ -270,7 +270,9 @@ def build_parser() -> OneLineParser:
     add_scene_subparsers(ex, [ex_common], frame_help + " (default: the scene's default frame)", required=False)
     ex.set_defaults(func=cmd_export)
 
-    fg = sub.add_parser("figures", help="regenerate the paper's Figs. 1-4 as SVG and PNG")
+    fg = sub.add_parser(
+        "figures", help="regenerate the paper's Figs. 1-4 and the two paradoxes' figures as SVG and PNG"
+    )
     fg.add_argument("--out", required=True, help="folder to write into (created if missing)")
     fg.set_defaults(func=cmd_figures)
     bn = sub.add_parser("bench", help="speed against accuracy of every method, charted (needs rigidrel[bench])")
@@ -323,11 +325,12 @@ def export_lesson_folder(prog: str, lesson_name: str, out_text: str | None) -> i
 
 def cmd_figures(args: argparse.Namespace) -> int:
     from .export.figures import write_figures
+    from .export.paradox_figures import write_paradox_figures
 
     prog = "rigidrel figures"
     out = out_dir(prog, args.out)
     try:
-        for path in write_figures(out):
+        for path in [*write_figures(out), *write_paradox_figures(out)]:
             print(path)
     except RuntimeError as exc:
         fail(prog, str(exc))
