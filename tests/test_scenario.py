@@ -37,11 +37,16 @@ def test_frames_with_spaces_and_velocities() -> None:
 def test_layers_are_written_only_when_not_the_default() -> None:
     plain = parse_scenario("wall-collision --v 0.6").settings
     assert plain.layers == DEFAULT_LAYERS and "--layers" not in format_scenario(plain)
-    with_signals = plain.with_layers(DEFAULT_LAYERS | {Layer.SIGNALS})
+    with_signals = plain.with_layers((DEFAULT_LAYERS | {Layer.SIGNALS}) - {Layer.OTHER_AXES})
     line = format_scenario(with_signals)
-    assert "--layers world-tube,interior-lines,light-cone,signals," in line
+    assert "--layers world-tube,interior-lines,light-cone,signals,simultaneity,length-panel" in line
     assert parse_scenario(line).settings == with_signals
     assert build(with_signals).layers == with_signals.layers  # the drawing is told what to show
+    every = plain.with_layers(frozenset(Layer))
+    assert (
+        format_scenario(every).endswith("--layers all")
+        and parse_scenario("wall-collision --layers all").settings == every
+    )
     bare = plain.with_layers(frozenset())
     assert "--layers none" in format_scenario(bare) and parse_scenario(format_scenario(bare)).settings == bare
     assert plain.with_scene("rod-collision").layers == plain.layers  # a new scene keeps the layers

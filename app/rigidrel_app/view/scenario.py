@@ -6,7 +6,7 @@ The scene's name, then one ``--flag value`` per parameter (the flag is the param
 ``-`` for ``_``; ``none`` omits an optional one), then ``--frame`` (a preset name, quoted if it has
 spaces, or a velocity in (-1, 1)), ``--t`` (the time shown, in that frame), ``--overlay``
 (the description's comparison curve) and ``--layers`` (the layers drawn, comma-separated, written
-only when they are not the default: ``--layers world-tube,light-cone,signals``). ``rigidrel
+only when they are not the default: ``--layers world-tube,light-cone,signals``, or ``all``). ``rigidrel
 serve``, lesson files and the app's scenario box all read this syntax, and the app shows the
 current state in it, so a state can be copied from a student's screen into a lesson. Everything
 is generated from the scene registry.
@@ -65,7 +65,8 @@ def format_scenario(settings: Settings, t: float | None = None) -> str:
     if settings.overlay:
         parts.append("--overlay")
     if settings.layers != DEFAULT_LAYERS:
-        parts += ["--layers", ",".join(layer.value for layer in Layer if layer in settings.layers) or "none"]
+        shown = ",".join(layer.value for layer in Layer if layer in settings.layers)
+        parts += ["--layers", "all" if settings.layers == frozenset(Layer) else shown or "none"]
     if t is not None:
         parts += ["--t", format_value(t)]
     return " ".join(parts)
@@ -82,9 +83,11 @@ def _number(name: str, text: str, allowed: str) -> float:
 
 
 def _layers(text: str) -> frozenset[Layer]:
-    """``world-tube,signals`` -> those layers; ``none`` -> no layer."""
+    """``world-tube,signals`` -> those layers; ``all`` -> every layer; ``none`` -> no layer."""
     if text.strip().lower() == "none":
         return frozenset()
+    if text.strip().lower() == "all":
+        return frozenset(Layer)
     names = [n.strip() for n in text.split(",")]
     known = {layer.value: layer for layer in Layer}
     for n in names:
