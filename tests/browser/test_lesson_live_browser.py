@@ -5,7 +5,7 @@ locks disable controls, and the scenario box round-trips a state and refuses a b
 from __future__ import annotations
 
 import io
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -46,9 +46,9 @@ caption = "Anything goes."
 class LessonTab:
     """One tab giving the lesson, with the session behind it."""
 
-    def __init__(self, browser: Any, app: App, width: int = 1280, height: int = 720) -> None:
+    def __init__(self, page: Any, app: App) -> None:
         before = set(app.sessions)
-        self.page = browser.new_page(viewport={"width": width, "height": height})
+        self.page = page
         self.errors: list[str] = []
         self.page.on("pageerror", lambda e: self.errors.append(str(e)))
         self.page.goto(app.url)
@@ -105,6 +105,27 @@ class LessonTab:
         self.page.keyboard.press(key)
 
 
+#: The ``open_tab`` fixture: ``open_tab(app, width=1280, height=720)`` -> a tab on ``app``.
+OpenTab = Callable[..., LessonTab]
+
+
+@pytest.fixture
+def open_tab(browser: Any) -> Iterator[OpenTab]:
+    """Opens tabs on an app; every one is closed after the test, passed or failed (an open tab keeps
+    drawing, and the software renderer's time is the whole suite's)."""
+    pages: list[Any] = []
+
+    def open_one(app: App, width: int = 1280, height: int = 720) -> LessonTab:
+        pages.append(browser.new_page(viewport={"width": width, "height": height}))
+        return LessonTab(pages[-1], app)
+
+    try:
+        yield open_one
+    finally:
+        for page in pages:
+            page.close()
+
+
 @pytest.fixture
 def lesson_app() -> Iterator[App]:
     app = App(host="127.0.0.1", port=0, lesson=PAPER)
@@ -114,8 +135,8 @@ def lesson_app() -> Iterator[App]:
         app.stop()
 
 
-def test_keyboard_walk_through_the_paper_lesson(browser: Any, lesson_app: App, shots: Path) -> None:
-    tab = LessonTab(browser, lesson_app)
+def test_keyboard_walk_through_the_paper_lesson(open_tab: OpenTab, lesson_app: App, shots: Path) -> None:
+    tab = open_tab(lesson_app)
     s = tab.session
     tab.wait_caption(PAPER.steps[0].title)
     assert s.step_index == 0 and "a′_F = 0.5" in tab.caption()  # a number the core filled in
@@ -157,8 +178,8 @@ def test_keyboard_walk_through_the_paper_lesson(browser: Any, lesson_app: App, s
     assert tab.errors == []
 
 
-def test_presenter_caption_at_1920(browser: Any, lesson_app: App, shots: Path) -> None:
-    tab = LessonTab(browser, lesson_app, 1920, 1080)
+def test_presenter_caption_at_1920(open_tab: OpenTab, lesson_app: App, shots: Path) -> None:
+    tab = open_tab(lesson_app, 1920, 1080)
     tab.wait_caption(PAPER.steps[0].title)
     for _ in range(5):
         tab.press("PageDown")
@@ -174,11 +195,11 @@ def test_presenter_caption_at_1920(browser: Any, lesson_app: App, shots: Path) -
     tab.screenshot(shots / "presenter-step-6-1920.png")
 
 
-def test_follow_the_leading_tab(browser: Any, shots: Path) -> None:
+def test_follow_the_leading_tab(open_tab: OpenTab, shots: Path) -> None:
     app = App(host="127.0.0.1", port=0, lesson=PAPER, follow=True)
     try:
-        lead = LessonTab(browser, app)
-        other = LessonTab(browser, app)
+        lead = open_tab(app)
+        other = open_tab(app)
         assert app.leader == lead.session.client.client_id
         lead.press("PageDown")
         lead.press("PageDown")
@@ -197,10 +218,10 @@ def test_follow_the_leading_tab(browser: Any, shots: Path) -> None:
         app.stop()
 
 
-def test_a_locked_control_is_disabled_and_says_why(browser: Any, shots: Path) -> None:
+def test_a_locked_control_is_disabled_and_says_why(open_tab: OpenTab, shots: Path) -> None:
     app = App(host="127.0.0.1", port=0, lesson=LOCKED)
     try:
-        tab = LessonTab(browser, app)
+        tab = open_tab(app)
         tab.wait_caption("The crash, V fixed")
         v_thumb = tab.control("V").locator("[role=slider]")
         wait_until(lambda: v_thumb.get_attribute("aria-disabled") == "true", timeout=30)
@@ -222,8 +243,8 @@ def test_a_locked_control_is_disabled_and_says_why(browser: Any, shots: Path) ->
         app.stop()
 
 
-def test_scenario_box_round_trip_and_a_bad_one(browser: Any, lesson_app: App, shots: Path) -> None:
-    tab = LessonTab(browser, lesson_app)
+def test_scenario_box_round_trip_and_a_bad_one(open_tab: OpenTab, lesson_app: App, shots: Path) -> None:
+    tab = open_tab(lesson_app)
     s = tab.session
     tab.wait_caption(PAPER.steps[0].title)
     line = "rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --frame barycentric --layers world-tube,signals --t 0.3"
