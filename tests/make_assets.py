@@ -5,10 +5,11 @@
 Writes assets/app.png and assets/app-presenter.png (the app in headless Chromium at 1280x720,
 with its control panel and in presenter mode: Fig. 3's collision seen from the barycentric
 frame, paused mid-collision), assets/scenes/<scene>{,-presenter}.png (every registered scene at
-its defaults, halfway through its events, in both modes), assets/figures/fig1-4.{svg,png} (the paper's figures),
-assets/figures/{bell-spaceships,pole-barn}.{svg,png,txt} (the paradoxes) and
-assets/rod-collision-lanes.gif (the lanes of that collision) and assets/wall-crash-signals.png
-(Sec. 5's crash into a wall with the light-signal layer, in the lab and the rod's frame before).
+its defaults, halfway through its events, in both modes), assets/figures/fig1-4.{svg,png} (the
+paper's figures), assets/figures/{bell-spaceships,pole-barn}.{svg,png,txt} (the paradoxes),
+assets/rod-collision-lanes.gif (the lanes of that collision), assets/wall-crash-signals.png
+(Sec. 5's crash into a wall with the light-signal layer, in the lab and the rod's frame before)
+and assets/lesson-step.png (a step of the built-in lesson given live, in presenter mode).
 """
 
 from __future__ import annotations
@@ -22,6 +23,8 @@ from rigidrel_app.backends.raster import write_gif
 from rigidrel_app.export.figures import write_figures
 from rigidrel_app.export.paradox_figures import write_paradox_figures
 from rigidrel_app.export.recording import playback_times
+from rigidrel_app.lessons import builtin_lesson
+from rigidrel_app.live.keys import Action
 from rigidrel_app.live.server import App
 from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.scene_view import build_drawing
@@ -136,6 +139,29 @@ def signals_screenshot(
         browser.close()
 
 
+#: The lesson step the README shows: the wall crash in the rod's frame, with its light signals.
+LESSON_STEP = 6
+LESSON_NOW = 0.5
+
+
+def lesson_screenshot(path: Path, step: int = LESSON_STEP, now: float = LESSON_NOW) -> None:
+    """``rigidrel serve --lesson paper`` at step ``step`` (from 0) in presenter mode, paused at ``now``:
+    the caption band over the lanes, as a hall sees it at 1280x720."""
+    from playwright.sync_api import sync_playwright
+
+    with App(port=0, lesson=builtin_lesson("paper")) as app, sync_playwright() as p:
+        browser = launch_chromium(p)
+        tab = _Tab(app, browser)
+        tab.session.go_to_step(step)
+        tab.presenter(True)
+        with tab.session.lock:
+            if tab.session.playback.playing:
+                tab.session.perform(Action.TOGGLE_PLAY)
+            tab.session.seek(now)
+        tab.photograph(path)
+        browser.close()
+
+
 def lanes_gif(path: Path) -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
     drawn = build_drawing(Resolved(scene, scene.frame("barycentric")))
@@ -149,6 +175,7 @@ def main() -> None:
     write_paradox_figures(ASSETS / "figures")
     lanes_gif(ASSETS / "rod-collision-lanes.gif")
     signals_screenshot(ASSETS / "wall-crash-signals.png")
+    lesson_screenshot(ASSETS / "lesson-step.png")
     print(f"assets written: {ASSETS} ({CHROMIUM})")
 
 

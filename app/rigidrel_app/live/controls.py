@@ -158,6 +158,9 @@ class NumberControl:
         if not entry.is_log:
             self.slider.precision = TYPED_DECIMALS
         self._clamped_to: float | None = None
+        self._box_text: str | None = None
+        """The box's text as the server last read or wrote it; the box holding other text means the
+        client has typed on since, and that text's own message is on its way."""
         """The slider end a typed value was last refused beyond (see ``NumberEntry.judge_position``)."""
 
     @property
@@ -183,8 +186,11 @@ class NumberControl:
                 h.order = order + 0.001 * k
         if not visible:
             return
-        if self.box is not None and self.entry.read(self.box.value) != Use(value):
-            self.box.value = self.entry.text(value)
+        if self.box is not None:
+            shown = self.box.value
+            typed_on = self._box_text is not None and shown != self._box_text
+            if not typed_on and self.entry.read(shown) != Use(value):  # never over keys still arriving
+                self.box.value = self._box_text = self.entry.text(value)
         if not self.entry.shows(self.slider.value, value):
             self.slider.value = self.entry.to_slider(value)
             self._clamped_to = None
@@ -206,11 +212,16 @@ class NumberControl:
             return self.entry.to_slider(current())
 
         def box_text() -> str:
-            return self.entry.text(current())
+            self._box_text = self.entry.text(current())
+            return self._box_text
+
+        def judge_box(text: str) -> Verdict:
+            self._box_text = text  # read now: text arriving after it is newer typing
+            return self.entry.read(text)
 
         guard_number(self.slider, a, judge=judge_slider, act=act, put_back=slider_position, place=place)
         if self.box is not None:
-            guard_number(self.box, a, judge=lambda t: self.entry.read(t), act=act, put_back=box_text, place=place)
+            guard_number(self.box, a, judge=judge_box, act=act, put_back=box_text, place=place)
 
 
 def hidden_box_css(controls: Sequence[NumberControl]) -> str:
