@@ -144,14 +144,19 @@ LESSON_STEP = 6
 LESSON_NOW = 0.5
 
 
+#: A lesson's caption band takes a third of a 1280x720 screen in presenter mode and leaves the
+#: diagrams too little height there, so the README shows a 1080p projector.
+LESSON_VIEWPORT = {"width": 1920, "height": 1080}
+
+
 def lesson_screenshot(path: Path, step: int = LESSON_STEP, now: float = LESSON_NOW) -> None:
     """``rigidrel serve --lesson paper`` at step ``step`` (from 0) in presenter mode, paused at ``now``:
-    the caption band over the lanes, as a hall sees it at 1280x720."""
+    the caption band over the lanes, as a hall sees it on a 1920x1080 projector."""
     from playwright.sync_api import sync_playwright
 
     with App(port=0, lesson=builtin_lesson("paper")) as app, sync_playwright() as p:
         browser = launch_chromium(p)
-        tab = _Tab(app, browser)
+        tab = _Tab(app, browser, LESSON_VIEWPORT)
         tab.session.go_to_step(step)
         tab.presenter(True)
         with tab.session.lock:
