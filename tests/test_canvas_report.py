@@ -35,8 +35,7 @@ def test_values_no_page_sends_are_ignored(value: float) -> None:
 
 
 def test_the_page_measures_a_high_density_screen() -> None:
-    guessed = CanvasSize(2192.0, 1440.0)  # the camera's first report on a screen of 2 pixels per CSS px
-    measured = guessed.measured_at(1096, 720, 2.0)
+    measured = CanvasSize.measured_by_page(1096, 720, 2.0)  # 2 pixels per CSS px
     assert (measured.width, measured.height, measured.measured) == (1096, 720, True)
     slow = measured.reported(1918, 1260)  # the client renders at 0.875 for a while: the page is the same
     assert (slow.width, slow.height, slow.measured) == (1096, 720, True) and slow.resolution == 1.75

@@ -65,7 +65,7 @@ def test_events_json_in_a_preset_frame() -> None:
         (["serve", "wall-collision", "--frame", "barycentric"], "frame must be a velocity in (-1, 1) or one of"),
         (
             ["serve", "rod-collision", "--frame", "0.999"],
-            "--frame must be in [-0.99, 0.99] (the app's β slider) or a preset; got 0.999",
+            "--frame must be in [-0.99, 0.99] (the app's β slider) or one of the scene's frames; got 0.999",
         ),
         (["frobnicate"], "invalid choice"),
     ],

@@ -18,7 +18,6 @@ from dataclasses import dataclass, replace
 import numpy as np
 import pytest
 
-import rigidrel_core as rr
 from rigidrel_app.view import canvas, diagrams
 from rigidrel_app.view import placement as fast
 from rigidrel_app.view.canvas import chart_picture
@@ -36,6 +35,7 @@ from rigidrel_app.view.vocabulary import (
     Segments,
     Style,
 )
+from tests.test_label_placement import extreme_settings
 
 # ---------------------------------------------------------------------------------------------
 # Frozen copy of the placement before it was vectorised (the reference: do not speed it up).
@@ -372,18 +372,8 @@ Placed = Callable[[Chart, tuple[float, float]], Chart]
 
 def slider_settings() -> list[Settings]:
     """Every scene at its defaults, with each slider parameter at either end of its range, and each of
-    those in a frame at beta = +-0.99; invalid combinations left out."""
-    out: list[Settings] = [Settings.of("rod-collision", v1=0.99), Settings.of("constant-acceleration", v=0.99)]
-    for kind, d in rr.scene_descriptions().items():
-        base = Settings(kind)
-        variants = [base]
-        for p in d.parameters:
-            if p.slider is not None:
-                variants += [base.with_value(p.name, p.slider.lo), base.with_value(p.name, p.slider.hi)]
-        for s in list(variants):
-            variants += [replace(s, frame=CUSTOM_FRAME, beta=b) for b in (-0.99, 0.99)]
-        out += [s for s in variants if not isinstance(resolve(s), str)]
-    return out
+    those in a frame at beta = +-0.99 (the label placement tests' cases), and V = 0.99."""
+    return [Settings.of("rod-collision", v1=0.99), Settings.of("constant-acceleration", v=0.99), *extreme_settings()]
 
 
 def setting_id(s: Settings) -> str:

@@ -19,7 +19,7 @@ import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
 from .view.signals import signals_in, verdict_lines
-from .view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, format_value, frame_from_text, settings_for
+from .view.state import Settings, beta_problem, format_value, frame_from_text, settings_for
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
 
@@ -351,9 +351,8 @@ def start_settings(prog: str, args: argparse.Namespace) -> Settings | None:
         return None
     scene, frame = scene_from_args(prog, args, None)
     settings = settings_for(scene, frame)
-    lo, hi = CUSTOM_BETA
-    if settings.frame == CUSTOM_FRAME and not lo <= settings.beta <= hi:  # every tab shows it on the β slider
-        fail(prog, f"--frame must be in [{lo:g}, {hi:g}] (the app's β slider) or a preset; got {settings.beta!r}")
+    if (problem := beta_problem(settings)) is not None:  # every tab shows it on the β slider
+        fail(prog, problem)
     return settings
 
 

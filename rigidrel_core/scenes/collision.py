@@ -43,6 +43,15 @@ _NEW = object.__new__
 _SET_HI, _SET_LO, _SET_GAP = (ExactVelocity.__dict__[name].__set__ for name in ("hi", "lo", "gap"))
 
 
+def _exact(hi: float, lo: float, gap: float) -> ExactVelocity:
+    """``ExactVelocity(hi, lo, gap)`` without the dataclass' ``__init__`` (a solve makes three)."""
+    v = _NEW(ExactVelocity)
+    _SET_HI(v, hi)
+    _SET_LO(v, lo)
+    _SET_GAP(v, gap)
+    return v
+
+
 @dataclass(frozen=True, init=False)
 class CollisionSolution:
     """The barycentric solution of a rod-rod collision (paper Sec. 6), velocities to double-double.
@@ -329,17 +338,11 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
     elif 0.0 <= u < _NEAR_LIGHT:  # 1 - |u| from u itself, rounded once
         g = 1.0 - u
         gap = g + (((1.0 - g) - u) - u_lo)
-        bary = _NEW(ExactVelocity)
-        _SET_HI(bary, u)
-        _SET_LO(bary, u_lo)
-        _SET_GAP(bary, gap)
+        bary = _exact(u, u_lo, gap)
     elif -_NEAR_LIGHT < u < 0.0:
         g = 1.0 + u
         gap = g + (((1.0 - g) + u) + u_lo)
-        bary = _NEW(ExactVelocity)
-        _SET_HI(bary, u)
-        _SET_LO(bary, u_lo)
-        _SET_GAP(bary, gap)
+        bary = _exact(u, u_lo, gap)
     else:  # 1 -+ u = P-+/E
         bary = ExactVelocity(u, u_lo, div((pm, pm_lo) if u > 0.0 else (pp, pp_lo), (en, en_lo))[0])
     s = v1 - v2
@@ -426,10 +429,7 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         else:
             y, y_lo = _sum(r, r_lo, k, k_lo)
             gap = _gap_near_light(v, pp, pp_lo, y, y_lo)
-        after_1 = _NEW(ExactVelocity)
-        _SET_HI(after_1, v)
-        _SET_LO(after_1, v_lo)
-        _SET_GAP(after_1, gap)
+        after_1 = _exact(v, v_lo, gap)
 
     # ---- rod 2 leaves the barycentre with w_2 = k_2/R_2: k_2 = m1 K, R_2 = sqrt(M^2 + k_2^2)
     k = m1 * kk
@@ -490,10 +490,7 @@ def solve_collision(v1: float, v2: float, m1: float, m2: float, eps: float) -> C
         else:
             y, y_lo = _sum(r, r_lo, k, k_lo)
             gap = _gap_near_light(v, y, y_lo, pm, pm_lo)
-        after_2 = _NEW(ExactVelocity)
-        _SET_HI(after_2, v)
-        _SET_LO(after_2, v_lo)
-        _SET_GAP(after_2, gap)
+        after_2 = _exact(v, v_lo, gap)
 
     if eps == 1.0:
         gain = 0.0

@@ -61,6 +61,18 @@ def app_server() -> Iterator[object]:
 
 
 @pytest.fixture
+def tab(browser: Any, app_server: Any) -> Iterator[Any]:
+    """One tab on the app (an ``AppPage``), closed after the test, passed or failed."""
+    from tests.browser.test_app_browser import AppPage  # the tab's helper lives with the app's tests
+
+    page = AppPage(browser, app_server)
+    try:
+        yield page
+    finally:
+        page.close()
+
+
+@pytest.fixture
 def shots(request: pytest.FixtureRequest) -> Path:
     """The folder this test writes its screenshots to."""
     folder = ARTIFACTS / re.sub(r"[^\w.-]+", "_", request.node.name)

@@ -130,15 +130,6 @@ def _changed_fraction(a: np.ndarray, b: np.ndarray) -> float:
     return float((np.abs(a - b).sum(axis=-1) > 30).mean())
 
 
-@pytest.fixture
-def tab(browser: Any, app_server: App) -> Any:
-    page = AppPage(browser, app_server)
-    try:
-        yield page
-    finally:
-        page.close()
-
-
 def show(tab: AppPage, settings: Settings, now: float) -> None:
     """Put the session in a known state, paused at ``now`` (server side, as a preset would)."""
     s = tab.session

@@ -42,15 +42,6 @@ def collision(browser: Any) -> Iterator[AppPage]:
         app.stop()
 
 
-@pytest.fixture
-def tab(browser: Any, app_server: App) -> Iterator[AppPage]:
-    page = AppPage(browser, app_server)
-    try:
-        yield page
-    finally:
-        page.close()
-
-
 # ---------------------------------------------------------------- finding things as a user does
 def row(tab: AppPage, label: str) -> Any:
     """The control row whose label reads ``label``."""

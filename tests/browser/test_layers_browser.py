@@ -16,7 +16,6 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from rigidrel_app.live.server import App
 from rigidrel_app.view.canvas import color_rgb
 from rigidrel_app.view.layers import DEFAULT_LAYERS, Layer
 from rigidrel_app.view.layout import Rect
@@ -31,15 +30,6 @@ pytestmark = pytest.mark.browser
 CRASH = presets()["Sec. 5: crash into a wall, V = 0.6"]
 #: The origin's light cone is drawn in the light's colour too: hidden here, so any of that colour is a signal.
 BASE = DEFAULT_LAYERS - {Layer.LIGHT_CONE}
-
-
-@pytest.fixture
-def tab(browser: Any, app_server: App) -> Any:
-    page = AppPage(browser, app_server)
-    try:
-        yield page
-    finally:
-        page.close()
 
 
 def crash(layers: frozenset[Layer]) -> Settings:

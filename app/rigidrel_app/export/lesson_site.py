@@ -18,7 +18,6 @@ import html
 import json
 import shutil
 from collections.abc import Callable
-from dataclasses import replace
 from pathlib import Path
 
 import plotly
@@ -139,7 +138,7 @@ def export_lesson(
     write(out / "index.html", _index_page(lesson))
     for k, step in enumerate(lesson.steps):
         name = step_name(k)
-        resolved = replace(step.resolved, layers=step.layers)  # what the step shows, as the live app does
+        resolved = step.resolved
         write(out / f"{name}-lanes.html", record_lanes_html(build_drawing(resolved), seconds, fps))
         settings = settings_for(resolved.scene, resolved.frame).with_layers(step.layers)
         write(out / f"{name}-diagram.html", diagram_html(settings, "beside"))

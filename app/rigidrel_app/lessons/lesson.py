@@ -8,7 +8,7 @@ The file format (``docs/lessons.md`` has the full reference)::
     title = "The wall crash"
     caption = "The back end starts braking at t = {event[T_1].t:.3g}, before the contact."
     scene = "wall-collision --v 0.6 --eps 0 --frame lab"   # a scenario string
-    layers = ["world-tube", "light-cone", "signals"]       # optional; default: all but signals
+    layers = ["world-tube", "light-cone", "signals"]       # optional; default: --layers, else all but signals
     window = [-1.5, 2.5]                                   # optional: the time window shown
     start = -1.0                                           # optional, or --t in the scene line
     autoplay = true                                        # optional, default false
@@ -25,12 +25,12 @@ import math
 import re
 import tomllib
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from ..view.comoving import RidePoint
-from ..view.layers import DEFAULT_LAYERS, Layer
+from ..view.layers import Layer
 from ..view.scenario import Scenario, ScenarioError, parse_scenario
 from ..view.state import Resolved, build
 from .captions import CaptionError, render_caption
@@ -196,7 +196,7 @@ def _step(source: str, lines: _Lines, k: int, raw: Mapping[str, Any]) -> Step:
     resolved = build(scenario.settings)
     d = scenario.settings.description
 
-    layers = DEFAULT_LAYERS
+    layers = scenario.settings.layers  # without the key, the scene line's --layers (or the default)
     if "layers" in raw:
         given = raw["layers"]
         allowed = ", ".join(f'"{layer.value}"' for layer in Layer)
@@ -263,4 +263,5 @@ def _step(source: str, lines: _Lines, k: int, raw: Mapping[str, Any]) -> Step:
         text = render_caption(caption, resolved.scene, resolved.frame)
     except CaptionError as exc:
         raise fail("caption", str(exc)) from None
+    resolved = replace(resolved, layers=layers)  # what the step draws, live and exported
     return Step(title, text, scenario, resolved, layers, window, start, autoplay, locked, ride, lines.of(k))

@@ -11,7 +11,7 @@ from dataclasses import dataclass, replace
 
 from markdown_it import MarkdownIt
 
-from ..view.layers import DEFAULT_LAYERS, Layer
+from ..view.layers import Layer
 from ..view.state import Settings
 from .lesson import Lesson, Step
 
@@ -45,12 +45,11 @@ class Arrival:
 
 
 def arrival(step: Step) -> Arrival:
-    """The state a step opens on. The step's ``layers`` key wins; without it, a ``--layers`` in its
-    scene line does. A riding step (``ride``) shows the scene's default frame: the live app does not
-    ride a point yet (:func:`ride_note`)."""
-    given = step.scenario.settings
-    layers = step.layers if step.layers != DEFAULT_LAYERS else given.layers
-    return Arrival(replace(given, layers=layers), step.window, step.start, step.autoplay, step.locked)
+    """The state a step opens on (its layers as the lesson file's reader settled them). A riding
+    step (``ride``) shows the scene's default frame: the live app does not ride a point yet
+    (:func:`ride_note`)."""
+    settings = replace(step.scenario.settings, layers=step.layers)
+    return Arrival(settings, step.window, step.start, step.autoplay, step.locked)
 
 
 def ride_note(step: Step) -> str:

@@ -24,7 +24,7 @@ import rigidrel_core as rr
 
 from ..lessons import Lesson
 from ..lessons.tour import LAYER_LABELS, step_labels
-from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, refusal
+from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, control_value, refusal
 from ..view.layers import Layer
 from ..view.scene_view import CONTROL_PX
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, preset_menu
@@ -158,10 +158,10 @@ class NumberControl:
         if not entry.is_log:
             self.slider.precision = TYPED_DECIMALS
         self._clamped_to: float | None = None
+        """The slider end a typed value was last refused beyond (see ``NumberEntry.judge_position``)."""
         self._box_text: str | None = None
         """The box's text as the server last read or wrote it; the box holding other text means the
         client has typed on since, and that text's own message is on its way."""
-        """The slider end a typed value was last refused beyond (see ``NumberEntry.judge_position``)."""
 
     @property
     def handles(self) -> tuple[viser.GuiInputHandle[float] | viser.GuiTextHandle, ...]:
@@ -331,7 +331,7 @@ class Controls:
         for param, control in self.parameters.items():
             control.wire(
                 a,
-                current=lambda p=param: _value_or_default(p, a.settings.parameters().get(p.name)),
+                current=lambda p=param: control_value(p, a.settings.parameters().get(p.name)),
                 act=lambda v, p=param: a.set_parameter(p, v),
                 place="scene",
             )
@@ -379,7 +379,7 @@ class Controls:
         mine = {p: k for k, p in enumerate(d.parameters) if p.slider is not None}
         for p, control in self.parameters.items():
             if p in mine:
-                control.show(_value_or_default(p, s.value(p.name)), True, PARAMETER_ORDER + 0.01 * mine[p])
+                control.show(control_value(p, s.value(p.name)), True, PARAMETER_ORDER + 0.01 * mine[p])
             else:
                 control.hide()
         if self.overlay.visible != (d.overlay is not None):
@@ -556,13 +556,6 @@ def build_lesson_controls(gui: viser.GuiApi, lesson: Lesson, follow: bool) -> Le
         status = gui.add_markdown("", visible=follow)
         notice = gui.add_markdown("", visible=False)
     return LessonControls(lesson, step, previous, nxt, lead, status, notice)
-
-
-def _value_or_default(p: rr.Parameter, value: float | None) -> float:
-    """What a parameter's control holds: its value, or for an omitted optional one its default."""
-    if value is not None:
-        return value
-    return float(p.default) if p.default is not None else 0.0
 
 
 #: Where a scene's parameter controls sit in the Scene folder: after the menus, before the overlay.

@@ -59,14 +59,15 @@ HOTKEYS: tuple[Hotkey, ...] = (
 )
 
 #: A lesson's keys: the clicker and the arrows move between steps (no frame stepping, no figures).
+_SHARED = {h.action: h for h in HOTKEYS}
 LESSON_HOTKEYS: tuple[Hotkey, ...] = (
-    Hotkey("space", Action.TOGGLE_PLAY, "Play / pause", "Space", "play"),
+    _SHARED[Action.TOGGLE_PLAY],
     Hotkey("arrowleft", Action.PREVIOUS_STEP, "Previous step of the lesson", "←", "step"),
     Hotkey("arrowright", Action.NEXT_STEP, "Next step of the lesson", "→", "step"),
     Hotkey("pageup", Action.PREVIOUS_STEP, "Previous step of the lesson (clicker)", "PgUp", "step"),
     Hotkey("pagedown", Action.NEXT_STEP, "Next step of the lesson (clicker)", "PgDn", "step"),
-    Hotkey("R", Action.RESET_VIEW, "Reset view", "R", "reset"),
-    Hotkey("F", Action.TOGGLE_PRESENTER, "Presenter mode (panel hidden, larger text) on / off", "F", "presenter"),
+    _SHARED[Action.RESET_VIEW],
+    _SHARED[Action.TOGGLE_PRESENTER],
     Hotkey("C", Action.TOGGLE_CAPTION, "Caption over the lanes hidden / shown", "C", "caption"),
     Hotkey("L", Action.LEAD, "Lead: with --follow, every other tab follows this tab's step", "L", "lead"),
 )

@@ -30,10 +30,9 @@ from ..view.scenario import ScenarioError, format_scenario, parse_scenario
 from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, build_drawing, nice_step
 from ..view.scene_view import readout_markdown as readout
 from ..view.state import (
-    CUSTOM_BETA,
-    CUSTOM_FRAME,
     Resolved,
     Settings,
+    beta_problem,
     frame_choice,
     frame_choices,
     preset_step,
@@ -103,6 +102,8 @@ class Session:
         """The caption band says the tab shows another scene than its step's."""
         self.shown_settings: Settings | None = None
         """The settings of what is on screen (the scenario box shows them)."""
+        self._scenario_of: tuple[Settings, float | None] | None = None
+        """What the scenario line on screen names (settings, and the time while paused)."""
         self.lock = threading.RLock()
         self.settings = settings or Settings()
         self.notice = ""
@@ -161,7 +162,7 @@ class Session:
                 return
             with self.lock:
                 if not self.closed:
-                    self._resize(self.canvas_size.measured_at(size.width, size.height, size.resolution))
+                    self._resize(CanvasSize.measured_by_page(size.width, size.height, size.resolution))
             self.client.flush()
 
     def _resize(self, size: CanvasSize) -> None:
@@ -362,13 +363,8 @@ class Session:
                 self._set_notice(f"Scenario refused: {scenario_problem(exc)}", "scenario")
                 return
             s = scenario.settings
-            lo, hi = CUSTOM_BETA
-            if s.frame == CUSTOM_FRAME and not lo <= s.beta <= hi:
-                self._set_notice(
-                    f"Scenario refused: --frame must be in [{lo:g}, {hi:g}] (the app's β slider) or one of the "
-                    f"scene's frames; got {s.beta!r}",
-                    "scenario",
-                )
+            if (problem := beta_problem(s)) is not None:
+                self._set_notice(f"Scenario refused: {problem}", "scenario")
                 return
             changed = locked_changes(self.locked, self.settings, s)
             if scenario.t is not None and "time" in self.locked:
@@ -501,8 +497,9 @@ class Session:
             if force_plots or not self.playback.playing or wall - self._last_plot >= 1.0 / PLOT_HZ:
                 self._last_plot = wall
                 self.controls.time.show(round(now, 6))
-                if self.shown_settings is not None:
-                    t = None if self.playback.playing else round(now, 6)
+                t = None if self.playback.playing else round(now, 6)
+                if self.shown_settings is not None and (self.shown_settings, t) != self._scenario_of:
+                    self._scenario_of = (self.shown_settings, t)
                     self.controls.show_scenario(format_scenario(self.shown_settings, t))
 
     def tick(self, dt: float) -> None:

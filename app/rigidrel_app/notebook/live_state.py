@@ -22,7 +22,7 @@ from markdown_it import MarkdownIt
 import rigidrel_core as rr
 
 from ..backends.plotly import TITLE_PX, chart_layout, item_to_traces, label_to_annotation
-from ..view.entry import NumberEntry
+from ..view.entry import NumberEntry, control_value, significant
 from ..view.scene_view import Drawn, build_drawing, nice_step, readout_markdown
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, build, frame_choice, frame_choices, resolve
 from ..view.vocabulary import Chart, Item, Label
@@ -54,17 +54,6 @@ def slider_parameters(kind: str) -> tuple[tuple[rr.Parameter, NumberEntry], ...]
     return tuple((p, NumberEntry.of(p)) for p in rr.describe(kind).parameters if p.slider is not None)
 
 
-def slider_value(parameter: rr.Parameter, value: float | None) -> float:
-    """What a parameter's slider holds: its value, or for an omitted optional one (``None``, e.g. the
-    impulsive limit) its default, else its slider's upper end."""
-    if value is not None:
-        return value
-    if parameter.default is not None:
-        return float(parameter.default)
-    assert parameter.slider is not None
-    return parameter.slider.hi
-
-
 def time_entry(drawn: Drawn) -> NumberEntry:
     """The time slider: over the scene's window (lab t and the chosen frame's t′ together), in steps
     of about 1/1000 of it."""
@@ -76,7 +65,7 @@ def slider_time(t: float) -> float:
     """A time as the time slider holds it: to 12 significant digits. A browser's slider computes its
     value as ``min + k * step`` in floating point, which leaves noise in the last digits (0.3 comes
     back as 0.29999999999999977); the same time must give the same picture, not a redraw."""
-    return float(f"{t:.12g}")
+    return significant(t, 12)
 
 
 @dataclass(frozen=True)
@@ -305,7 +294,7 @@ def live_figure(state: LiveState) -> dict[str, Any]:
 def parameter_values(state: LiveState) -> Mapping[str, float]:
     """Each slider parameter's slider value in the state (what the sliders should show)."""
     s = state.settings
-    return {p.name: slider_value(p, s.value(p.name)) for p, _ in slider_parameters(s.scene)}
+    return {p.name: control_value(p, s.value(p.name)) for p, _ in slider_parameters(s.scene)}
 
 
 def figure_arrays(fig: dict[str, Any]) -> list[tuple[np.ndarray, np.ndarray]]:

@@ -17,7 +17,7 @@ import rigidrel_core as rr
 from .layers import DEFAULT_LAYERS, Layer
 from .placement import place_labels
 from .sampling import ADAPTIVE, Sampler
-from .signals import signal_items, signals_in
+from .signals import Signals, signal_items
 from .vocabulary import (
     DOOR_COLOR,
     FRAME_COLOR,
@@ -158,6 +158,7 @@ def minkowski_static(
     overlay_label: str = "comparison",
     area_px: tuple[float, float] | None = None,
     layers: frozenset[Layer] = DEFAULT_LAYERS,
+    signals: Signals | None = None,
 ) -> Chart:
     """Everything in a Minkowski diagram that does not move with playback.
 
@@ -165,8 +166,9 @@ def minkowski_static(
     The event labels are placed (:func:`~rigidrel_app.view.placement.place_labels`) for a plot
     area of ``area_px`` CSS pixels; ``None``: ``panel_px`` wide at equal scales. ``layers`` says
     what is drawn (:class:`~.layers.Layer`): the origin's light cone, the other frame's axes, the
-    world tubes and end worldlines, the interior worldlines, and the light signals of
-    :mod:`.signals` (their arrivals named and placed with the events' labels, so none overprints).
+    world tubes and end worldlines, the interior worldlines. ``signals``: the light signals of
+    :mod:`.signals` in this diagram's frame, drawn if given (their arrivals named and placed with
+    the events' labels, so none overprints).
     """
     frame = view.frame
     px_per_x = panel_px / max(x_range[1] - x_range[0], 1e-300)
@@ -175,8 +177,8 @@ def minkowski_static(
     # light cone of the origin event (start / kick / contact): x = +-t
     span = max(abs(t0), abs(t1), abs(x_range[0]), abs(x_range[1])) * 2.0
     signal_layer: tuple[Item, ...] = ()
-    if Layer.SIGNALS in layers:  # the key event's future, shaded under everything else
-        signal_layer = signal_items(signals_in(scene, frame), x_range, t_range)
+    if signals is not None:  # the key event's future, shaded under everything else
+        signal_layer = signal_items(signals, x_range, t_range)
         items.extend(i for i in signal_layer if isinstance(i, Area))
     if Layer.LIGHT_CONE in layers:
         cone = Style(LIGHT_COLOR, 1.5, "dash", name="light cone of the origin", group="cone")

@@ -94,8 +94,19 @@ def read_number(text: str) -> float | Typing | str:
     return x if math.isfinite(x) else "not a finite number"
 
 
-def _sig(x: float, digits: int) -> float:
+def significant(x: float, digits: int) -> float:
+    """``x`` rounded to ``digits`` significant digits."""
     return float(f"{x:.{digits}g}")
+
+
+def control_value(parameter: rr.Parameter, value: float | None) -> float:
+    """What a parameter's slider or box holds: its value, or for an omitted optional one (``None``,
+    e.g. the impulsive limit) its default, else its slider's upper end."""
+    if value is not None:
+        return value
+    if parameter.default is not None:
+        return float(parameter.default)
+    return parameter.slider.hi if parameter.slider is not None else 0.0
 
 
 @dataclass(frozen=True)
@@ -156,7 +167,7 @@ class NumberEntry:
         if not self.is_log:
             return position
         digits = max(LOG_DIGITS, math.ceil(-math.log10(self.step * math.log(10.0))) + 1)
-        return min(max(_sig(10.0**position, digits), self.lo), self.hi)
+        return min(max(significant(10.0**position, digits), self.lo), self.hi)
 
     def slider_marks(self) -> tuple[tuple[float, str], ...] | None:
         """A log slider's marks: every power of ten in range, labelled as the value (0.01 ... 100).

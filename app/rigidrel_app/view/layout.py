@@ -154,7 +154,7 @@ RESOLUTION_STEPS = (1.0, *sorted({b / a for a in ADAPTIVE_RESOLUTIONS for b in A
 class CanvasSize:
     """A canvas' size in CSS px, and how many rendered pixels its camera reports per CSS px.
 
-    The page measures both itself when it can (:meth:`measured_at`); the camera's reports in
+    The page measures both itself when it can (:meth:`measured_by_page`); the camera's reports in
     rendered pixels (:meth:`reported`) then only tell a new resolution from a new size. Before the
     page has spoken, one rendered pixel is taken for one CSS px.
     """
@@ -179,9 +179,10 @@ class CanvasSize:
         r = self.resolution
         return CanvasSize(pixels_wide / r, pixels_high / r, r, False)
 
-    def measured_at(self, width: float, height: float, resolution: float) -> CanvasSize:
+    @classmethod
+    def measured_by_page(cls, width: float, height: float, resolution: float) -> CanvasSize:
         """The canvas as the page measured it: CSS px, and rendered pixels per CSS px."""
-        return CanvasSize(width, height, resolution, True)
+        return cls(width, height, resolution, True)
 
 
 def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:

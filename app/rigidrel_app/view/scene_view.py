@@ -230,11 +230,12 @@ def build_drawing(
     fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window, plot_area)
     label = overlay_label(scene)
     layers = resolved.layers
+    lab_signals, frame_signals = signals if signals is not None else (None, None)
     lab_chart = minkowski_static(
-        scene, lab_view, lab_t, lab_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers
+        scene, lab_view, lab_t, lab_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers, lab_signals
     )
     frame_chart = minkowski_static(
-        scene, frame_view, fr_t, fr_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers
+        scene, frame_view, fr_t, fr_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers, frame_signals
     )
     if Layer.LENGTH_PANEL in layers:
         length_chart = length_static(scene, lab, frame, window, length_area, sampler)

@@ -152,6 +152,15 @@ def preset_step(settings: Settings, step: int) -> Settings | None:
     return figures[k] if 0 <= k < len(figures) else None
 
 
+def beta_problem(s: Settings) -> str | None:
+    """Why the app cannot show ``s``'s custom frame (its β slider's range), or ``None``: the core, the
+    exports and the command line take any |β| < 1, a tab only what the slider holds."""
+    lo, hi = CUSTOM_BETA
+    if s.frame == CUSTOM_FRAME and not lo <= s.beta <= hi:
+        return f"--frame must be in [{lo:g}, {hi:g}] (the app's β slider) or one of the scene's frames; got {s.beta!r}"
+    return None
+
+
 def frame_choices(scene: rr.Scene) -> tuple[str, ...]:
     return (*scene.frames.keys(), CUSTOM_FRAME)
 
