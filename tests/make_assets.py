@@ -167,6 +167,24 @@ def lesson_screenshot(path: Path, step: int = LESSON_STEP, now: float = LESSON_N
         browser.close()
 
 
+#: The riding frame the README shows: the Born-rigid wall crash ridden by the rod's back end (its
+#: right end, the one far from the wall), paused while that end brakes.
+RIDE_SETTINGS = Settings.of("wall-collision", v=0.6, eps=0.0).riding(0, 1.0)
+RIDE_NOW = -0.3
+
+
+def ride_screenshot(path: Path, now: float = RIDE_NOW, viewport: dict[str, int] = SCREENSHOT) -> None:
+    """The app riding the crashing rod's back end at ``now``: its lane keeps the rod at rest length."""
+    from playwright.sync_api import sync_playwright
+
+    with App(port=0) as app, sync_playwright() as p:
+        browser = launch_chromium(p)
+        tab = _Tab(app, browser, viewport)
+        tab.show(RIDE_SETTINGS, now)
+        tab.photograph(path)
+        browser.close()
+
+
 def lanes_gif(path: Path) -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
     drawn = build_drawing(Resolved(scene, scene.frame("barycentric")))
@@ -181,6 +199,7 @@ def main() -> None:
     lanes_gif(ASSETS / "rod-collision-lanes.gif")
     signals_screenshot(ASSETS / "wall-crash-signals.png")
     lesson_screenshot(ASSETS / "lesson-step.png")
+    ride_screenshot(ASSETS / "riding-frame.png")
     print(f"assets written: {ASSETS} ({CHROMIUM})")
 
 

@@ -26,7 +26,8 @@ from rigidrel_app.notebook.live_state import (
     with_parameter,
 )
 from rigidrel_app.notebook.widget import LiveView
-from rigidrel_app.view.state import CUSTOM_FRAME
+from rigidrel_app.view.comoving import RIDE_LINE_NAME
+from rigidrel_app.view.state import CUSTOM_FRAME, DEFAULT_RIDE, RIDE_FRAME
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 
@@ -143,13 +144,18 @@ def test_refusals_name_the_control_and_its_range() -> None:
 
 def test_the_frame_menu_and_the_beta_slider() -> None:
     view = explore("rod-collision", v1=0.6)
-    assert tuple(view.frame.options) == (*rr.build_scene("rod-collision", v1=0.6).frames, CUSTOM_FRAME)
+    assert tuple(view.frame.options) == (*rr.build_scene("rod-collision", v1=0.6).frames, CUSTOM_FRAME, RIDE_FRAME)
     view.frame.value = "rod 2 after"
     beta = rr.build_scene("rod-collision", v1=0.6).frame("rod 2 after").beta
     assert view.state.drawn.resolved.frame.beta == beta and view.beta.value == pytest.approx(beta)
     view.beta.value = -0.5  # the custom frame
     assert view.frame.value == CUSTOM_FRAME and view.state.drawn.resolved.frame.beta == -0.5
     assert same_arrays(widget_arrays(view), figure_arrays(live_figure(view.state)))
+    view.frame.value = RIDE_FRAME  # riding the first rod's middle: its comoving line sweeps the diagrams
+    assert view.state.drawn.resolved.ride == DEFAULT_RIDE
+    assert same_arrays(widget_arrays(view), figure_arrays(live_figure(view.state)))
+    names = {t.get("name") for t in live_figure(view.state)["data"]}
+    assert RIDE_LINE_NAME in names, names
 
 
 @pytest.mark.parametrize("kind", sorted(rr.scene_descriptions()))

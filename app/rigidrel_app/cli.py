@@ -18,8 +18,9 @@ from typing import Any, NoReturn
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
+from .view.scenario import ride_from_text
 from .view.signals import signals_in, verdict_lines
-from .view.state import Settings, beta_problem, format_value, frame_from_text, settings_for
+from .view.state import Settings, beta_problem, build, format_value, frame_from_text, settings_for
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
 
@@ -238,6 +239,14 @@ def build_parser() -> OneLineParser:
         port = 8080 if defaults else argparse.SUPPRESS
         common.add_argument("--host", default=host, help="interface to bind (default 127.0.0.1: this machine only)")
         common.add_argument("--port", type=_port, default=port, help="port to try first; the next free one if busy")
+        if not defaults:  # a scene's option: the lower lane rides a point of one of its rods
+            common.add_argument(
+                "--ride",
+                default=None,
+                metavar="ROD:F",
+                help="the lower lane rides point F in [0, 1] (0 the left end, 1 the right) of rod ROD (from 1; "
+                "F alone: rod 1), instead of a --frame",
+            )
         return common
 
     sv = sub.add_parser(
@@ -353,6 +362,15 @@ def start_settings(prog: str, args: argparse.Namespace) -> Settings | None:
     settings = settings_for(scene, frame)
     if (problem := beta_problem(settings)) is not None:  # every tab shows it on the β slider
         fail(prog, problem)
+    if getattr(args, "ride", None) is not None:
+        if args.frame is not None:
+            fail(prog, "--ride is a frame of its own (the lower lane rides the point): give --ride or --frame")
+        try:
+            point = ride_from_text(args.ride)
+            settings = settings.riding(point.rod, point.fraction)
+            build(settings)
+        except ValueError as exc:
+            fail(prog, str(exc) if str(exc).startswith("--ride") else f"--ride: {exc}")
     return settings
 
 

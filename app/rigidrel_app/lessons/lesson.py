@@ -258,6 +258,9 @@ def _step(source: str, lines: _Lines, k: int, raw: Mapping[str, Any]) -> Step:
         if scenario.settings.frame is not None:
             raise fail("ride", "the step names a frame in its scene line too; a riding step has no other frame")
         ride = RidePoint(rod - 1, fraction)
+        scenario = replace(scenario, settings=scenario.settings.riding(ride.rod, ride.fraction))
+        resolved = build(scenario.settings)
+    ride = resolved.ride  # also from the scene line's --ride
 
     try:
         text = render_caption(caption, resolved.scene, resolved.frame)

@@ -45,18 +45,10 @@ class Arrival:
 
 
 def arrival(step: Step) -> Arrival:
-    """The state a step opens on (its layers as the lesson file's reader settled them). A riding
-    step (``ride``) shows the scene's default frame: the live app does not ride a point yet
-    (:func:`ride_note`)."""
+    """The state a step opens on (its layers as the lesson file's reader settled them; a riding
+    step's lower lane rides its point)."""
     settings = replace(step.scenario.settings, layers=step.layers)
     return Arrival(settings, step.window, step.start, step.autoplay, step.locked)
-
-
-def ride_note(step: Step) -> str:
-    """One sentence for a riding step (empty for any other)."""
-    if step.ride is None:
-        return ""
-    return "(Live, this step shows the scene's default frame: the app does not ride a point of the rod yet.)"
 
 
 def clamp_step(lesson: Lesson, index: int) -> int:
@@ -87,7 +79,7 @@ def locked_changes(locked: frozenset[str], old: Settings, new: Settings) -> tupl
         changed.append("scene")
     if new.scene == old.scene:
         changed += [name for name, value in new.values if name in locked and old.value(name) != value]
-    if "frame" in locked and (new.frame, new.beta) != (old.frame, old.beta):
+    if "frame" in locked and (new.frame, new.beta, new.ride) != (old.frame, old.beta, old.ride):
         changed.append("frame")
     return tuple(changed)
 
@@ -117,7 +109,6 @@ def caption_html(step: Step, presenter: bool = False, off_step: bool = False) ->
     """The caption band over the lanes: the step's title and its caption (Markdown, numbers from the
     core) as HTML; larger in presenter mode, to be read from the back of a hall. ``off_step``: the
     tab shows another scene than the step's, and the band says so."""
-    note = " ".join(n for n in (ride_note(step), OFF_STEP_NOTE if off_step else "") if n)
-    body = _MARKDOWN.render(step.caption + (f"\n\n*{note}*" if note else ""))
+    body = _MARKDOWN.render(step.caption + (f"\n\n*{OFF_STEP_NOTE}*" if off_step else ""))
     size = "presenter" if presenter else "normal"
     return f'<div class="rr-caption-{size}"><h2>{html.escape(step.title)}</h2>{body}</div>'

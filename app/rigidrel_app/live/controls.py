@@ -284,6 +284,10 @@ def time_entry(window: tuple[float, float], step: float) -> NumberEntry:
 
 SPEED = NumberEntry("Speed", 0.1, 4.0, 0.1)
 BETA = NumberEntry("β (custom)", *CUSTOM_BETA, 0.01)
+#: The light-cone menu's entry for no event.
+NO_CONE = "none"
+#: The riding frame's point: a share of the rod's rest length, 0 its left end, 1 its right.
+RIDE_POINT = NumberEntry("Ride: point f", 0.0, 1.0, 0.05, noun="a share of the rest length")
 
 
 @dataclass
@@ -298,6 +302,10 @@ class Controls:
     """One notice slot at the end of each folder; at most one shows."""
     frame: viser.GuiDropdownHandle[str]
     beta: NumberControl
+    ride_rod: viser.GuiDropdownHandle[str]
+    """Which rod the riding frame rides (shown for scenes of more than one rod)."""
+    ride_point: NumberControl
+    """Which point of it: moving it selects the riding frame."""
     play: viser.GuiButtonHandle
     time: NumberControl
     speed: NumberControl
@@ -310,6 +318,8 @@ class Controls:
     """The keyboard's and the clicker's commands (:mod:`.keys`)."""
     layers: dict[Layer, viser.GuiCheckboxHandle]
     """One toggle per layer of the drawings."""
+    cone: viser.GuiDropdownHandle[str]
+    """The event whose light cone both diagrams draw (:data:`NO_CONE` for none): the scene's events."""
     scenario_shown: viser.GuiHtmlHandle
     """The current state as a scenario string, with a copy button."""
     scenario_box: viser.GuiTextHandle
@@ -353,6 +363,12 @@ class Controls:
                  act=lambda v: a.change(replace(a.settings, frame=v)))  # fmt: skip
         self.beta.wire(a, current=lambda: a.settings.beta, place="frame",
                        act=lambda b: a.change(replace(a.settings, frame=CUSTOM_FRAME, beta=b)))  # fmt: skip
+        self.ride_point.wire(a, current=lambda: a.settings.ride.fraction, place="frame",
+                             act=lambda f: a.change(a.settings.riding(fraction=f)))  # fmt: skip
+        in_frame(self.ride_rod, label="Ride: rod", allowed="one of the scene's rods",
+                 legal=lambda v: v in self.ride_rod.options,
+                 current=lambda: self.ride_rod.options[min(a.settings.ride.rod, len(self.ride_rod.options) - 1)],
+                 act=lambda v: a.change(a.settings.riding(rod=list(self.ride_rod.options).index(v))))  # fmt: skip
         self.time.wire(a, current=lambda: round(a.playback.now, 6), act=a.seek, place="playback")
         self.speed.wire(a, current=lambda: a.playback.speed, place="playback",
                         act=lambda v: a.set_playback(replace(a.playback, speed=v)))  # fmt: skip
@@ -368,6 +384,14 @@ class Controls:
             in_scene_layers(box, label=LAYER_LABELS[layer], allowed="on or off", legal=on_or_off,
                             current=lambda layer=layer: layer in a.settings.layers,
                             act=lambda v, layer=layer: a.set_layer(layer, v))  # fmt: skip
+        in_layers = functools.partial(guard_choice, a=a, place="scenario")
+
+        def show_cone(v: str) -> None:
+            a.change(replace(a.settings, cone=None if v == NO_CONE else v), refit=False)
+
+        in_layers(self.cone, label="Light cone of", allowed="none or one of the scene's events",
+                  legal=lambda v: v in self.cone.options, current=lambda: a.settings.cone or NO_CONE,
+                  act=show_cone)  # fmt: skip
         self.scenario_load.on_click(lambda _: a.checked(lambda: a.load_scenario(self.scenario_box.value)))
         if self.lesson is not None:
             self.lesson.wire(a)
@@ -400,9 +424,13 @@ class Controls:
         if self.preset.disabled != (len(menu.options) == 1 or fixed):
             self.preset.disabled = len(menu.options) == 1 or fixed
         self.beta.show(s.beta)
+        self.ride_point.show(s.ride.fraction)
         for layer, box in self.layers.items():
             if box.value != (layer in s.layers):
                 box.value = layer in s.layers
+        cone = s.cone or NO_CONE
+        if self.cone.value != cone and cone in self.cone.options:
+            self.cone.value = cone
 
     def show_scenario(self, text: str) -> None:
         """The scenario string of what is on screen, with its copy button."""
@@ -425,12 +453,12 @@ class Controls:
         self.show_settings(settings)
         if self.lock_css is not None:
             boxes = [c for p, c in self.parameters.items() if p.name in locked]
-            boxes += [self.beta] if "frame" in locked else []
+            boxes += [self.beta, self.ride_point] if "frame" in locked else []
             boxes += [self.time] if "time" in locked else []
             css = locked_box_css(boxes)
             if self.lock_css.content != css:
                 self.lock_css.content = css
-        for h in (self.frame, *self.beta.handles):
+        for h in (self.frame, *self.beta.handles, self.ride_rod, *self.ride_point.handles):
             if h.disabled != ("frame" in locked):
                 h.disabled = "frame" in locked
         for h in self.time.handles:
@@ -601,6 +629,16 @@ def build_controls(
         beta = NumberControl(
             gui, BETA, settings.beta, "Velocity of the custom frame, in (-1, 1); moving it selects the custom frame"
         )
+        ride_rod = gui.add_dropdown(
+            "Ride: rod", ["rod"], hint="The rod whose point the riding frame rides", visible=False
+        )
+        ride_point = NumberControl(
+            gui,
+            RIDE_POINT,
+            settings.ride.fraction,
+            "The riding frame: at each instant the inertial frame moving with this point of the rod "
+            "(0 its left end, 1 its right); moving it selects the riding frame",
+        )
         notices["frame"] = gui.add_markdown("", visible=False)
     table = LESSON_HOTKEYS if lesson is not None else HOTKEYS
     with gui.add_folder("Playback", order=3.0):
@@ -626,6 +664,11 @@ def build_controls(
             layer: gui.add_checkbox(label, layer in settings.layers, hint=f"Draw the {label.lower()} ({layer.value})")
             for layer, label in LAYER_LABELS.items()
         }
+        cone = gui.add_dropdown(
+            "Light cone of",
+            [NO_CONE],
+            hint="Draw this event's light cone (future and past) in both diagrams",
+        )
     with gui.add_folder("Scenario", order=3.8):
         scenario_shown = gui.add_html(scenario_html(""))
         scenario_box = gui.add_text(
@@ -640,8 +683,9 @@ def build_controls(
     gui.main_panel.set_width(CONTROL_PX)
     commands = tuple((h, gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}")) for h in table)
     controls = Controls(
-        preset, scene, params, overlay, notices, frame, beta, play, time, speed, loop, fit, reset_view, presenter,
-        readout, commands, layers, scenario_shown, scenario_box, scenario_load, lesson_controls, locks,
+        preset, scene, params, overlay, notices, frame, beta, ride_rod, ride_point, play, time, speed, loop, fit,
+        reset_view, presenter, readout, commands, layers, cone, scenario_shown, scenario_box, scenario_load,
+        lesson_controls, locks,
         lock_css=gui.add_html("", order=5.1) if lesson is not None else None,
     )  # fmt: skip
     return controls
@@ -660,6 +704,6 @@ def on_or_off(value: bool) -> bool:
 def notice_place(old: Settings, new: Settings) -> Place:
     """Where the notice for ``new`` (refused by the scene, keeping ``old`` on screen) shows: the Frame
     folder if only the frame changed, else the Scene folder."""
-    if new.scene == old.scene and (new.frame, new.beta) != (old.frame, old.beta):
+    if new.scene == old.scene and (new.frame, new.beta, new.ride) != (old.frame, old.beta, old.ride):
         return "frame"
     return "scene"

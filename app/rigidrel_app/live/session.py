@@ -33,6 +33,7 @@ from ..view.state import (
     Resolved,
     Settings,
     beta_problem,
+    cone_events,
     frame_choice,
     frame_choices,
     preset_step,
@@ -41,7 +42,7 @@ from ..view.state import (
 from ..view.state import resolve as resolve_settings
 from ..view.vocabulary import markdown_literal
 from .canvas_report import add_canvas_report, decode
-from .controls import Place, build_controls, caption_message, notice_place, time_entry
+from .controls import NO_CONE, Place, build_controls, caption_message, notice_place, time_entry
 from .keys import Action
 from .playback import Playback
 
@@ -423,7 +424,7 @@ class Session:
 
     def frame_choice(self) -> str:
         d = self.drawn
-        return frame_choice(d.resolved.scene, d.resolved.frame) if d is not None else "lab"
+        return frame_choice(d.resolved.scene, d.resolved.frame, d.resolved.ride) if d is not None else "lab"
 
     # ------------------------------------------------------------------ drawing
     def _apply(self, resolved: Resolved, refit: bool) -> None:
@@ -434,9 +435,22 @@ class Session:
         choices = frame_choices(resolved.scene)
         if tuple(c.frame.options) != choices:
             c.frame.options = choices
-        chosen = frame_choice(resolved.scene, resolved.frame)
+        chosen = frame_choice(resolved.scene, resolved.frame, resolved.ride)
         if c.frame.value != chosen:  # each assignment is a message to the browser
             c.frame.value = chosen
+        rods = tuple(rod.name for rod in resolved.scene.rods)
+        if tuple(c.ride_rod.options) != rods:
+            c.ride_rod.options = rods
+        if c.ride_rod.visible != (len(rods) > 1):
+            c.ride_rod.visible = len(rods) > 1
+        ridden = rods[min(self.settings.ride.rod, len(rods) - 1)]
+        if c.ride_rod.value != ridden:
+            c.ride_rod.value = ridden
+        cones = (NO_CONE, *cone_events(resolved.scene))
+        if tuple(c.cone.options) != cones:
+            c.cone.options = cones
+        if c.cone.value != (resolved.cone or NO_CONE):
+            c.cone.value = resolved.cone or NO_CONE
         window = d.window
         if self.step_window is not None and self.step_window[0] == resolved.scene.kind:
             window = self.step_window[1]  # the lesson's step shows its own window
@@ -487,9 +501,11 @@ class Session:
             return
         now = self.playback.now
         wall = time.monotonic()
-        lanes = d.lane_pictures(now, layout)
+        instant = d.ride_instant(now)  # the riding lane's instant (None unless it rides a point)
+        lanes = d.lane_pictures(now, layout, instant)
         moving = PagePicture()
-        for f, items in zip(self.chart_frames, d.moving_items(now, [lane.ends for lane in lanes]), strict=True):
+        ends = [lane.ends for lane in lanes]
+        for f, items in zip(self.chart_frames, d.moving_items(now, ends, instant), strict=True):
             moving += items_picture(items, f, layout.theme, MOVING)
         self.renderer_lanes = lanes
         with self.client.atomic():

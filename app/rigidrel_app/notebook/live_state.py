@@ -214,8 +214,10 @@ def _moving_items(state: LiveState) -> tuple[tuple[Item, ...], ...]:
     chosen frame, and the now-lines and length markers the app draws from them."""
     d = state.drawn
     r = d.resolved
-    ends = [r.scene.snapshot(state.now, f, fractions=_ENDS)[0] for f in (rr.LAB, r.frame)]
-    return d.moving_items(state.now, ends)
+    instant = d.ride_instant(state.now)  # riding a point: its comoving frame at its event at lab time now
+    lower = (state.now, r.frame) if instant is None else (instant.event[0], instant.frame)
+    ends = [r.scene.snapshot(t, f, fractions=_ENDS)[0] for t, f in ((state.now, rr.LAB), lower)]
+    return d.moving_items(state.now, ends, instant)
 
 
 def moving_traces(state: LiveState) -> list[dict[str, Any]]:

@@ -14,7 +14,13 @@ import numpy as np
 
 import rigidrel_core as rr
 
-from .vocabulary import FRAME_COLOR, INK, Item, Label, Points, Polyline, Style
+from .vocabulary import FRAME_COLOR, INK, FloatArray, Item, Label, Points, Polyline, Style
+
+#: The legend's names of the ride's items on the diagrams.
+RIDE_LINE_NAME = "comoving: now"
+HORIZON_NAME = "horizon event"
+#: The horizon event's mark: a square (the named events are dots, the rods now diamonds).
+HORIZON_SYMBOL = "square"
 
 
 @dataclass(frozen=True)
@@ -55,6 +61,40 @@ def ride(scene: rr.Scene, point: RidePoint, proper_time: float) -> ComovingInsta
     return ComovingInstant(proper_time, frame, event, event_lab, horizon, tuple(float(v) for v in lengths))
 
 
+def ride_at(scene: rr.Scene, point: RidePoint, t: float) -> ComovingInstant:
+    """The instant of the ride where the point's worldline crosses lab time ``t`` (once: its clock
+    runs forward with lab time), so the lab lane and the riding lane show the same event of the point."""
+    tau = scene.proper_times(np.array([t]), rr.LAB, fractions=np.array([point.fraction]))[point.rod, 0, 0]
+    return ride(scene, point, float(tau))
+
+
+@dataclass(frozen=True)
+class RideTrack:
+    """The ride sampled over a lab time window: what the length panel and the riding lane's scale need."""
+
+    t: FloatArray
+    """Lab times of the point's events, ``(n,)``."""
+    lengths: FloatArray
+    """Each rod's equal-time length in the point's comoving frame at each instant, ``(rods, n)``
+    (the core's :meth:`~rigidrel_core.Scene.lengths`: the ridden rod's is its rest length throughout)."""
+    reach: float
+    """The farthest any rod's end gets from the point over the window, in the comoving frames."""
+
+
+def ride_track(scene: rr.Scene, point: RidePoint, window: tuple[float, float], samples: int = 97) -> RideTrack:
+    """The ride at ``samples`` lab times evenly over ``window`` (one comoving frame each: c = 1)."""
+    t = np.linspace(window[0], window[1], samples)
+    lengths = np.empty((scene.n_rods, samples))
+    reach = 0.0
+    for k, tk in enumerate(t):
+        instant = ride_at(scene, point, float(tk))
+        here = np.array([instant.event[0]])
+        lengths[:, k] = instant.lengths
+        ends = scene.positions(here, instant.frame)[:, :, 0]
+        reach = max(reach, float(np.max(np.abs(ends - instant.event[1]))))
+    return RideTrack(t, lengths, reach)
+
+
 def proper_time_window(scene: rr.Scene, point: RidePoint, lab_window: tuple[float, float]) -> tuple[float, float]:
     """The point's clock readings over a lab time window (its clock runs forward with lab time)."""
     t = np.array(lab_window, dtype=np.float64)
@@ -62,18 +102,20 @@ def proper_time_window(scene: rr.Scene, point: RidePoint, lab_window: tuple[floa
     return float(tau[0]), float(tau[1])
 
 
-def simultaneity_items(instant: ComovingInstant, span: float) -> tuple[Item, ...]:
-    """For the lab diagram: the comoving frame's line of simultaneity through the point's event
-    (``span`` either side, in the frame's x'), the point's event and the horizon event, named."""
+def simultaneity_items(instant: ComovingInstant, span: float, seen_from: rr.Frame = rr.LAB) -> tuple[Item, ...]:
+    """For a diagram of ``seen_from`` (the lab unless given): the comoving frame's line of simultaneity
+    through the point's event (``span`` either side, in the comoving x'), the point's event and the
+    horizon event, named (the events boosted by the core: ``seen_from @ comoving⁻¹``)."""
     t_here, x_here = instant.event
-    line = np.array([[t_here, x_here - span], [t_here, x_here + span]])
-    lab = instant.frame.inverse() @ line
-    style = Style(FRAME_COLOR, 2.5, "dot", name="comoving: now", group="comoving")
-    th, xh = instant.horizon_lab
-    te, xe = instant.event_lab
+    events = np.array([[t_here, x_here - span], [t_here, x_here + span], [t_here, x_here]])
+    seen = (seen_from @ instant.frame.inverse()) @ events
+    style = Style(FRAME_COLOR, 2.5, "dot", name=RIDE_LINE_NAME, group="comoving")
+    horizon = Style(INK, name=HORIZON_NAME, group="comoving")
+    th, xh = seen_from @ np.array(instant.horizon_lab)
+    te, xe = seen[2]
     return (
-        Polyline(lab[:, 1], lab[:, 0], style),
+        Polyline(seen[:2, 1], seen[:2, 0], style),
         Points(np.array([xe]), np.array([te]), Style(FRAME_COLOR, group="comoving"), size=10, symbol="circle-open"),
-        Points(np.array([xh]), np.array([th]), Style(INK, name="horizon event", group="comoving"), size=10, symbol="x"),
-        Label(xh, th, "horizon", Style(INK, group="comoving")),
+        Points(np.array([xh]), np.array([th]), horizon, size=10, symbol=HORIZON_SYMBOL),
+        Label(float(xh), float(th), "horizon", Style(INK, group="comoving")),
     )

@@ -294,18 +294,28 @@ def length_static(
     t_range: tuple[float, float],
     panel_px: tuple[float, float],
     sampler: Sampler = ADAPTIVE,
+    comoving: tuple[FloatArray, FloatArray, str] | None = None,
 ) -> Chart:
     """Equal-time length of each rod against time, in the lab and in the chosen frame (Fig. 2).
 
     ``panel_px`` is the plot area (width, height) in pixels; curves are sampled to half a pixel.
+    ``comoving``: ``(t, lengths, name)``, the lengths ``(rods, n)`` in a riding point's comoving
+    frames at lab times ``t`` (:class:`.comoving.RideTrack`, from the core), drawn dashed instead of
+    the chosen frame's.
     """
     items: list[Item] = []
     frames: list[tuple[rr.Frame, str, Dash]] = [(lab, "", "solid")]
-    if not chosen.same_velocity(lab):
+    if not chosen.same_velocity(lab) and comoving is None:
         frames.append((chosen, "'", "dash"))
     # the largest length over the window: the rest lengths and the contracted ones at the ends
     probe = np.array([t_range[0], t_range[1]])
     top = max(max(r.motion.length for r in scene.rods), *(float(scene.lengths(probe, f).max()) for f, _, _ in frames))
+    if comoving is not None:
+        top = max(top, float(np.max(comoving[1])))
+        for r, rod in enumerate(scene.rods):
+            color = ROD_COLORS[r % len(ROD_COLORS)]
+            style = Style(color, 2.0, "dash", name=f"{rod.name}, {comoving[2]}")
+            items.append(Polyline(comoving[0], comoving[1][r], style))
     px_per_length = panel_px[1] / (LENGTH_HEADROOM * top)
     for frame, prime, dash in frames:
         curves = sampler.lengths(scene, frame, t_range, px_per_length)

@@ -237,20 +237,25 @@ class LaneWindow:
     width: float
 
 
-def lane_window(ends: FloatArray, rest_lengths: FloatArray, steady: float) -> LaneWindow:
-    """Centred on the rods (``ends``: ``(rods, 2)``, the frame's x), at the steady width unless a
-    rod would be drawn under :data:`ROD_SHARE` of the lane (scaled by its rest length): then
-    narrower, just enough; never so narrow that the rods leave the lane.
+def lane_window(ends: FloatArray, rest_lengths: FloatArray, steady: float, center: float | None = None) -> LaneWindow:
+    """Centred on the rods (``ends``: ``(rods, 2)``, the frame's x), or on ``center`` if given (a
+    riding lane keeps its point still), at the steady width unless a rod would be drawn under
+    :data:`ROD_SHARE` of the lane (scaled by its rest length): then narrower, just enough; never so
+    narrow that the rods leave the lane.
 
     width = max(extent / FIT_SHARE, min(steady, min_r length_r * L_max / (ROD_SHARE * L_r))),
-    continuous in time, so the zoom never jumps.
+    continuous in time, so the zoom never jumps (about ``center``, extent = 2 max |x - center|).
     """
     lo, hi = float(ends.min()), float(ends.max())
     unit = float(rest_lengths.max())
     lengths = ends[:, 1] - ends[:, 0]
     zoom = float(np.min(lengths * unit / (ROD_SHARE * rest_lengths)))
-    width = max((hi - lo) / FIT_SHARE, min(steady, zoom))
-    return LaneWindow(0.5 * (lo + hi), width)
+    if center is None:
+        center, extent = 0.5 * (lo + hi), hi - lo
+    else:
+        extent = 2.0 * max(abs(hi - center), abs(center - lo))
+    width = max(extent / FIT_SHARE, min(steady, zoom))
+    return LaneWindow(center, width)
 
 
 def ruler_step(width: float) -> float:
@@ -293,15 +298,21 @@ class LanePicture:
 
 
 def lane_picture(
-    scene: rr.Scene, frame: rr.Frame, now: float, steady: float, place: LaneLayout, title: str
+    scene: rr.Scene,
+    frame: rr.Frame,
+    now: float,
+    steady: float,
+    place: LaneLayout,
+    title: str,
+    center: float | None = None,
 ) -> LanePicture:
     """The rods of ``scene`` at time ``now`` of ``frame`` in the lane ``place``: the lane follows
-    its rods (:func:`lane_window`), with true positions on a ruler of the frame's x; dials and
-    rods keep their pixel sizes at any zoom."""
+    its rods (:func:`lane_window`; centred on ``center`` if given), with true positions on a ruler
+    of the frame's x; dials and rods keep their pixel sizes at any zoom."""
     snap = scene.snapshot(now, frame, fractions=TICK_FRACTIONS)
     rest = np.array([r.motion.length for r in scene.rods])
     ends = snap[0][:, [0, -1]]
-    win = lane_window(ends, rest, steady)
+    win = lane_window(ends, rest, steady, center)
     track = place.track
     scale = track.width / win.width
     origin = 0.5 * (track.x0 + track.x1) - win.center * scale

@@ -6,7 +6,10 @@ The scene's name, then one ``--flag value`` per parameter (the flag is the param
 ``-`` for ``_``; ``none`` omits an optional one), then ``--frame`` (a preset name, quoted if it has
 spaces, or a velocity in (-1, 1)), ``--t`` (the time shown, in that frame), ``--overlay``
 (the description's comparison curve) and ``--layers`` (the layers drawn, comma-separated, written
-only when they are not the default: ``--layers world-tube,light-cone,signals``, or ``all``). ``rigidrel
+only when they are not the default: ``--layers world-tube,light-cone,signals``, or ``all``) and
+``--ride ROD:F`` instead of ``--frame`` (the lower lane rides point F, in [0, 1], of rod ROD, from 1;
+``--ride F`` rides rod 1), and ``--cone EVENT`` (the diagrams draw that event's light cone: ``T_1``,
+or the origin event's name, ``contact``). ``rigidrel
 serve``, lesson files and the app's scenario box all read this syntax, and the app shows the
 current state in it, so a state can be copied from a student's screen into a lesson. Everything
 is generated from the scene registry.
@@ -20,8 +23,9 @@ from dataclasses import dataclass
 
 import rigidrel_core as rr
 
+from .comoving import RidePoint
 from .layers import DEFAULT_LAYERS, Layer
-from .state import CUSTOM_FRAME, Settings, format_value
+from .state import CUSTOM_FRAME, RIDE_FRAME, Settings, build, format_value
 
 
 class ScenarioError(ValueError):
@@ -60,10 +64,14 @@ def format_scenario(settings: Settings, t: float | None = None) -> str:
             parts += [flag(p), format_value(value)]
     if settings.frame == CUSTOM_FRAME:
         parts += ["--frame", format_value(settings.beta)]
+    elif settings.frame == RIDE_FRAME:
+        parts += ["--ride", f"{settings.ride.rod + 1}:{format_value(settings.ride.fraction)}"]
     elif settings.frame is not None:
         parts += ["--frame", _quote(settings.frame)]
     if settings.overlay:
         parts.append("--overlay")
+    if settings.cone is not None:
+        parts += ["--cone", _quote(settings.cone)]
     if settings.layers != DEFAULT_LAYERS:
         shown = ",".join(layer.value for layer in Layer if layer in settings.layers)
         parts += ["--layers", "all" if settings.layers == frozenset(Layer) else shown or "none"]
@@ -80,6 +88,26 @@ def _number(name: str, text: str, allowed: str) -> float:
     if not math.isfinite(value):
         raise ScenarioError(name, f"--{name} needs {allowed}; got {text!r}")
     return value
+
+
+#: What ``--ride`` takes, in the words of its errors.
+RIDE_ALLOWED = "ROD:F, a rod (from 1) and a point F in [0, 1] of it (0 its left end, 1 its right), or F alone for rod 1"
+
+
+def ride_from_text(text: str) -> RidePoint:
+    """``2:0.5`` -> rod 2 (index 1) at its middle; ``1`` -> rod 1's right end. The rod's range is
+    checked against the scene when the scenario is built."""
+    rod_text, _, f_text = text.rpartition(":")
+    rod = 1
+    if rod_text:
+        try:
+            rod = int(rod_text)
+        except ValueError:
+            raise ScenarioError("ride", f"--ride needs {RIDE_ALLOWED}; got {text!r}") from None
+    fraction = _number("ride", f_text, RIDE_ALLOWED)
+    if not 0.0 <= fraction <= 1.0:
+        raise ScenarioError("ride", f"--ride needs {RIDE_ALLOWED}; got {text!r}")
+    return RidePoint(rod - 1, fraction)
 
 
 def _layers(text: str) -> frozenset[Layer]:
@@ -119,14 +147,16 @@ def parse_scenario(text: str) -> Scenario:
     overlay = False
     layers = DEFAULT_LAYERS
     t: float | None = None
+    ride: RidePoint | None = None
+    cone: str | None = None
     i = 0
     while i < len(rest):
         name = rest[i]
         if name == "--overlay":
             overlay, i = True, i + 1
             continue
-        if name not in (*by_flag, "--frame", "--t", "--layers"):
-            options = ", ".join((*by_flag, "--frame", "--t", "--overlay", "--layers"))
+        if name not in (*by_flag, "--frame", "--t", "--layers", "--ride", "--cone"):
+            options = ", ".join((*by_flag, "--frame", "--t", "--overlay", "--layers", "--ride", "--cone"))
             raise ScenarioError("scene", f"{name!r} is not an option of {kind}; its options are {options}")
         if i + 1 >= len(rest):
             raise ScenarioError(name.lstrip("-"), f"{name} needs a value")
@@ -145,15 +175,23 @@ def parse_scenario(text: str) -> Scenario:
             t = _number("t", value, "a time (a finite number)")
         elif name == "--layers":
             layers = _layers(value)
+        elif name == "--ride":
+            ride = ride_from_text(value)
+        elif name == "--cone":
+            cone = value
         else:
             p = by_flag[name]
             if p.optional and value.strip().lower() == "none":
                 values[p.name] = None
             else:
                 values[p.name] = _number(p.name.replace("_", "-"), value, p.allowed())
-    settings = Settings(kind, tuple(values.items()), frame, beta, overlay, layers)
+    if ride is not None and frame is not None:
+        raise ScenarioError("ride", "--ride is a frame of its own (the lane rides the point): give --ride or --frame")
+    settings = Settings(kind, tuple(values.items()), frame, beta, overlay, layers, cone=cone)
+    if ride is not None:
+        settings = settings.riding(ride.rod, ride.fraction)
     try:
-        d.build(**settings.parameters())
+        build(settings)
     except ValueError as exc:
         parameter = getattr(exc, "parameter", "scene")
         raise ScenarioError(str(parameter).replace("_", "-"), str(exc)) from None

@@ -16,6 +16,7 @@ import rigidrel_core as rr
 
 from . import camera as cam
 from .canvas import LegendEntry, legend_entries
+from .comoving import HORIZON_NAME, HORIZON_SYMBOL, ComovingInstant, RideTrack, ride_at, ride_track, simultaneity_items
 from .diagrams import (
     View,
     equal_scale_ranges,
@@ -28,6 +29,7 @@ from .diagrams import (
     window_x_range,
 )
 from .lanes import (
+    FIT_SHARE,
     LaneGeometry,
     LanePicture,
     LaneState,
@@ -41,7 +43,7 @@ from .lanes import (
 from .layers import Layer
 from .layout import CanvasLayout
 from .sampling import ADAPTIVE, Sampler
-from .signals import Signals, signals_in, verdict_lines
+from .signals import Signals, event_cone_items, signals_in, verdict_lines
 from .state import Resolved, format_value
 from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style, signed
 
@@ -92,6 +94,14 @@ class Drawn:
     signals: tuple[Signals, Signals] | None = None
     """The light signals in the lab and in the chosen frame (:func:`.signals.signals_in`), if the
     :attr:`~.layers.Layer.SIGNALS` layer is shown: the lanes' pulses, at no cost to the core per frame."""
+    ride: RideTrack | None = None
+    """The ride over the window while the lower lane rides a point (:attr:`.state.Resolved.ride`)."""
+
+    def ride_instant(self, now: float) -> ComovingInstant | None:
+        """The riding lane's instant at playback time ``now``: the point's event at lab time ``now``
+        (:func:`.comoving.ride_at`), or ``None`` when the lane does not ride."""
+        point = self.resolved.ride
+        return None if point is None else ride_at(self.resolved.scene, point, now)
 
     @property
     def x_range(self) -> tuple[float, float]:
@@ -118,15 +128,21 @@ class Drawn:
         """The lab diagram, the chosen frame's diagram, the equal-time lengths."""
         return (self.lab_chart, self.frame_chart, self.length_chart)
 
-    def moving_items(self, now: float, ends: Sequence[FloatArray]) -> tuple[tuple[Item, ...], ...]:
+    def moving_items(
+        self, now: float, ends: Sequence[FloatArray], instant: ComovingInstant | None = None
+    ) -> tuple[tuple[Item, ...], ...]:
         """What moves on each of :attr:`charts` at playback time ``now``: the now-lines and markers.
 
         ``ends`` are the rods' end positions at ``now`` in the lab and in the chosen frame (each
         ``(rods, 2)``, from the core, as the lanes drew them): they mark the rods on the diagrams,
         as diamonds in the rods' colours. The length plot's markers are the core's equal-time
         lengths in both frames. The now-lines' legend names carry no number (the lanes show it).
+        While the lower lane rides a point, its ends are in the point's comoving frame at the ride's
+        ``instant`` (:meth:`ride_instant`, found here if not given), and :meth:`_riding_items` draws them.
         """
         r = self.resolved
+        if r.ride is not None:
+            return self._riding_items(now, ends, instant or self.ride_instant(now))
         lab_view, frame_view = self.views
         now_lines = Layer.SIMULTANEITY in r.layers
         lab = minkowski_now(lab_view, now, self.span, ends[0])
@@ -142,26 +158,68 @@ class Drawn:
             length,
         )
 
+    def _riding_items(
+        self, now: float, ends: Sequence[FloatArray], instant: ComovingInstant | None
+    ) -> tuple[tuple[Item, ...], ...]:
+        """The moving parts while the lower lane rides a point: on the lab diagram its now-line and the
+        comoving frame's line of simultaneity through the point's event (sweeping as the point
+        accelerates, always through the horizon event); on the second diagram (the scene's default
+        frame) the same comoving line and the riding lane's rod ends, boosted there by the core; on
+        the length panel the lab's lengths and the comoving frame's (the ridden rod's: its rest length)."""
+        assert instant is not None
+        r = self.resolved
+        frame_view = self.views[1]
+        now_lines = Layer.SIMULTANEITY in r.layers
+        lab = _now_items(
+            minkowski_now(View.alone(_LAB), now, self.span, ends[0]), ends[0], np.full(ends[0].shape, now), now_lines
+        )
+        t_ride = np.full(ends[1].shape, instant.event[0])
+        seen = (frame_view.frame @ instant.frame.inverse()) @ np.stack([t_ride, ends[1]], axis=-1)  # (rods, 2, 2)
+        frame = _now_items((), seen[..., 1], seen[..., 0])
+        lab += simultaneity_items(instant, self.span)[:2]
+        frame += simultaneity_items(instant, self.span, frame_view.frame)[:2]
+        if Layer.LENGTH_PANEL in r.layers:
+            lengths = np.stack([r.scene.lengths(now, _LAB), np.array(instant.lengths)])  # (2, rods)
+            length = _now_items(length_now(now, self.length_chart.y_range[1], lengths), *_at(now, lengths.T))
+        else:
+            length = ()
+        return lab, frame, length
+
     def legend(self) -> list[LegendEntry]:
         """Every named item of the three charts, static or moving, each name once."""
         moving = self.moving_items(self.window[0], [np.zeros((self.resolved.scene.n_rods, 2))] * 2)
         items = [it for chart in self.charts for it in chart.items] + [it for m in moving for it in m]
         return legend_entries(items)
 
-    def lane_pictures(self, now: float, layout: CanvasLayout) -> list[LanePicture]:
-        """Both lanes at playback time ``now`` on the canvas: the lab at t = now, the chosen frame at t' = now."""
+    def lane_pictures(
+        self, now: float, layout: CanvasLayout, instant: ComovingInstant | None = None
+    ) -> list[LanePicture]:
+        """Both lanes at playback time ``now`` on the canvas: the lab at t = now, the chosen frame at
+        t' = now; or, riding a point, its comoving frame at the ride's ``instant`` (:meth:`ride_instant`,
+        found here if not given), centred on the point, which stays still on screen."""
         r = self.resolved
-        titles = lane_titles(r, now)
-        frames = (_LAB, r.frame)
-        lanes = [
-            lane_picture(r.scene, f, now, w, place, title)
-            for f, w, place, title in zip(frames, self.steady_widths, layout.lanes, titles, strict=True)
-        ]
+        if r.ride is not None:
+            instant = instant or self.ride_instant(now)
+        titles = lane_titles(r, now, instant)
+        lanes = [lane_picture(r.scene, _LAB, now, self.steady_widths[0], layout.lanes[0], titles[0])]
+        if instant is None:
+            lanes.append(lane_picture(r.scene, r.frame, now, self.steady_widths[1], layout.lanes[1], titles[1]))
+        else:
+            t_ride, x_point = instant.event
+            lanes.append(
+                lane_picture(
+                    r.scene, instant.frame, t_ride, self.steady_widths[1], layout.lanes[1], titles[1], center=x_point
+                )
+            )
         if self.signals is None:
             return lanes
+        signals = self.signals
+        if instant is not None:  # the lab's rays, boosted into the comoving frame of this instant
+            signals = (signals[0], signals[0].seen_from(instant.frame))
+        times = (now, now if instant is None else instant.event[0])
         out = []
-        for lane, place, sig in zip(lanes, layout.lanes, self.signals, strict=True):
-            light = pulse_segments(sig.pulses_at(now), sig.far_arrivals, lane, place)
+        for lane, place, sig, t in zip(lanes, layout.lanes, signals, times, strict=True):
+            light = pulse_segments(sig.pulses_at(t), sig.far_arrivals, lane, place)
             out.append(replace(lane, segments=(*lane.segments, light)))
         return out
 
@@ -191,9 +249,13 @@ def _now_items(items: tuple[Item, ...], x: FloatArray, y: FloatArray, now_lines:
     return tuple(out)
 
 
-def lane_titles(r: Resolved, now: float) -> tuple[str, str]:
-    """The lanes' first lines: the frame and its time."""
-    return f"lab frame:   t = {signed(now)}", f"{frame_title(r.frame)} frame:   t' = {signed(now)}"
+def lane_titles(r: Resolved, now: float, instant: ComovingInstant | None = None) -> tuple[str, str]:
+    """The lanes' first lines: the frame and its time; riding, the point and its clock's reading
+    (``instant``: the ride at ``now``)."""
+    lab = f"lab frame:   t = {signed(now)}"
+    if r.ride is not None and instant is not None:
+        return lab, f"riding: {r.ride.label(r.scene)}:   its clock τ = {signed(instant.proper_time)}"
+    return lab, f"{frame_title(r.frame)} frame:   t' = {signed(now)}"
 
 
 def _views(frame: rr.Frame) -> tuple[View, View]:
@@ -226,8 +288,12 @@ def build_drawing(
         return (lo - pad, hi + pad)
 
     lab_view, frame_view = _views(frame)
-    lab_x, lab_t = equal_scale_ranges(window_x_range(scene, (lab,), window), window, plot_area)
-    fr_x, fr_t = equal_scale_ranges(window_x_range(scene, (frame,), window), window, plot_area)
+    lab_sweep, frame_sweep = window_x_range(scene, (lab,), window), window_x_range(scene, (frame,), window)
+    if resolved.ride is not None:  # the riding lane's lines of simultaneity meet at the horizon event: show it
+        lab_sweep = _reaching(lab_sweep, scene.horizon_event(resolved.ride.rod)[1])
+        frame_sweep = _reaching(frame_sweep, scene.horizon_event(resolved.ride.rod, frame)[1])
+    lab_x, lab_t = equal_scale_ranges(lab_sweep, window, plot_area)
+    fr_x, fr_t = equal_scale_ranges(frame_sweep, window, plot_area)
     label = overlay_label(scene)
     layers = resolved.layers
     lab_signals, frame_signals = signals if signals is not None else (None, None)
@@ -237,8 +303,19 @@ def build_drawing(
     frame_chart = minkowski_static(
         scene, frame_view, fr_t, fr_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers, frame_signals
     )
+    if resolved.cone is not None:  # the chosen event's light cone, in both diagrams
+        lab_chart = _with_cone(lab_chart, scene, resolved.cone, lab)
+        frame_chart = _with_cone(frame_chart, scene, resolved.cone, frame)
+    track = None
+    frame_width = steady_width(scene, frame, _round_outward(b0, b1))
+    if resolved.ride is not None:
+        track = ride_track(scene, resolved.ride, window)
+        frame_width = 2.0 * track.reach / FIT_SHARE  # about the point, which the riding lane keeps still
+        lab_chart = _with_horizon(lab_chart, scene.horizon_event(resolved.ride.rod))
+        frame_chart = _with_horizon(frame_chart, scene.horizon_event(resolved.ride.rod, frame))
     if Layer.LENGTH_PANEL in layers:
-        length_chart = length_static(scene, lab, frame, window, length_area, sampler)
+        comoving = None if track is None else (track.t, track.lengths, RIDE_LENGTH_NAME)
+        length_chart = length_static(scene, lab, frame, window, length_area, sampler, comoving)
     else:
         length_chart = hidden_chart(LENGTH_HIDDEN_TITLE, LENGTH_HIDDEN_NOTE)
     return Drawn(
@@ -251,12 +328,44 @@ def build_drawing(
         length_chart=length_chart,
         views=(lab_view, frame_view),
         # each lane's scale from its own frame's window: the lab lane does not change with the frame
-        steady_widths=(
-            steady_width(scene, lab, _round_outward(a0, a1)),
-            steady_width(scene, frame, _round_outward(b0, b1)),
-        ),
+        steady_widths=(steady_width(scene, lab, _round_outward(a0, a1)), frame_width),
         signals=signals,
+        ride=track,
     )
+
+
+#: The length panel's name for the riding point's comoving frames (the legend shows it per rod).
+RIDE_LENGTH_NAME = "comoving (ride)"
+
+
+def _with_cone(chart: Chart, scene: rr.Scene, event: str, frame: rr.Frame) -> Chart:
+    """``chart`` (a Minkowski diagram in ``frame``) with the light cone of ``event`` drawn under its
+    curves: its future and past shaded, its light rays dashed (:func:`.signals.event_cone_items`)."""
+    cone = event_cone_items(scene, event, frame, chart.x_range, chart.y_range)
+    return replace(chart, items=(*cone, *chart.items))
+
+
+#: A diagram widens to show the horizon event if that at most triples its x range.
+HORIZON_REACH = 1.0
+
+
+def _reaching(x_range: tuple[float, float], x: float) -> tuple[float, float]:
+    """``x_range`` widened to hold ``x``, unless ``x`` lies farther than :data:`HORIZON_REACH` ranges
+    beyond it (a weakly accelerated rod's horizon is far away: the lines then run off the plot)."""
+    lo, hi = x_range
+    reach = HORIZON_REACH * (hi - lo)
+    return (min(lo, x), max(hi, x)) if lo - reach <= x <= hi + reach else x_range
+
+
+def _with_horizon(chart: Chart, event: tuple[float, float]) -> Chart:
+    """``chart`` with the ridden rod's horizon event (the centre of its change, where every comoving
+    line of simultaneity meets) marked and named in the legend, if it lies on the chart."""
+    t, x = event
+    if not (chart.x_range[0] <= x <= chart.x_range[1] and chart.y_range[0] <= t <= chart.y_range[1]):
+        return chart
+    style = Style(INK, name=HORIZON_NAME, group="comoving")
+    mark = Points(np.array([x]), np.array([t]), style, size=9, symbol=HORIZON_SYMBOL)
+    return replace(chart, items=(*chart.items, mark))
 
 
 #: The length panel's place when its layer is hidden: a title and a note say so and how to bring it
@@ -334,10 +443,17 @@ def readout_markdown(resolved: Resolved) -> str:
     v = ", ".join(f"{r.name}: {signed(v, 4)}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
     ev = " · ".join(f"{k} ({_fixed(t)}, {_fixed(x)})" for k, (t, x) in scene.events.items())
     notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame))  # a paradox's verdicts, in words
+    shown = frame_title(frame)
+    if resolved.ride is not None:
+        shown = f"the lower lane rides: {resolved.ride.label(scene)} ({RIDE_RULE}); the second diagram: {shown}"
     return (
         f"**Scene** {', '.join(params)}  \n**Final velocities** {v}  \n**Events (lab t, x)** {ev}  \n"
-        f"**Frame** {frame_title(frame)}  \n**Clocks** {CLOCK_RULE}{notes}{signals_readout(resolved)}"
+        f"**Frame** {shown}  \n**Clocks** {CLOCK_RULE}{notes}{signals_readout(resolved)}"
     )
+
+
+#: What a riding lane shows, in the readout's words.
+RIDE_RULE = "at each instant the inertial frame moving with that point, at the point's event at lab time t"
 
 
 def _fixed(x: float, digits: int = 3) -> str:

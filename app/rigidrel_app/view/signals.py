@@ -72,6 +72,17 @@ class Signals:
         """:meth:`pulse_positions` as plain floats (every playback frame: no numpy per call)."""
         return [x for leg in self.legs if (x := leg.position(t)) is not None]
 
+    def seen_from(self, frame: rr.Frame) -> Signals:
+        """These signals, given as events of the lab, as ``frame`` sees them: every event boosted by
+        the core (``frame @ events``, exact on the light cone), so each ray stays at 45 degrees."""
+
+        def boost(event: tuple[float, float]) -> tuple[float, float]:
+            t, x = frame @ np.array(event)
+            return float(t), float(x)
+
+        legs = tuple(SignalLeg(boost(leg.source), boost(leg.arrival), leg.name) for leg in self.legs)
+        return Signals(boost(self.key_event), self.key_phrase, legs)
+
     @property
     def far_arrivals(self) -> tuple[float, ...]:
         """The x of each event ``S``: where the first light from the key event reaches a far end."""
@@ -207,7 +218,7 @@ def event_cone_items(
             if sign > 0:
                 style = replace(style, name=f"light cone of {plain_text(label)}")
             items.append(Area(poly[:, 0], poly[:, 1], style))
-    rays = Style(LIGHT_COLOR, 2.0, "dash", group="event cone")
+    rays = Style(LIGHT_COLOR, 2.5, group="event cone")  # solid: the origin's cone is dashed
     items.append(
         Segments(
             np.array([xk - reach, xk + reach]),

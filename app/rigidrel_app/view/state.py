@@ -16,10 +16,15 @@ from types import MappingProxyType
 
 import rigidrel_core as rr
 
+from .comoving import RidePoint
 from .layers import DEFAULT_LAYERS, Layer
 
 #: The frame dropdown's entry for a frame set by the β slider.
 CUSTOM_FRAME = "custom (β slider)"
+#: The frame dropdown's entry for the frame that rides a material point (the ride controls choose it).
+RIDE_FRAME = "riding a point (ride f)"
+#: The point a riding frame rides until one is chosen: the middle of the first rod.
+DEFAULT_RIDE = RidePoint(0, 0.5)
 #: The range of the app's β slider (the core, the exports and the command line take any |β| < 1).
 CUSTOM_BETA = (-0.99, 0.99)
 #: The preset menu's entry when the controls show no paper figure.
@@ -55,6 +60,11 @@ class Settings:
     """Draw the description's comparison scene (Fig. 1's dashed impulsive curve) dashed over the scene."""
     layers: frozenset[Layer] = DEFAULT_LAYERS
     """What the drawings show (:class:`~.layers.Layer`): the light signals are off unless asked for."""
+    ride: RidePoint = DEFAULT_RIDE
+    """The material point the frame rides while ``frame`` is :data:`RIDE_FRAME` (kept, unused, otherwise)."""
+    cone: str | None = None
+    """An event of the scene (its name, or the origin event's: ``"contact"``) whose light cone both
+    diagrams draw, or ``None``."""
     _by_name: Mapping[str, float | None] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -85,10 +95,16 @@ class Settings:
         if kind == self.scene:
             return self
         keep = {p.name: self._by_name[p.name] for p in rr.describe(kind).parameters if p.name in self._by_name}
-        return Settings(kind, tuple(keep.items()), None, self.beta, False, self.layers)
+        ride = replace(self.ride, rod=0)  # the same share of the new scene's first rod
+        return Settings(kind, tuple(keep.items()), None, self.beta, False, self.layers, ride)  # no event's cone
 
     def with_layers(self, layers: frozenset[Layer]) -> Settings:
         return replace(self, layers=frozenset(layers))
+
+    def riding(self, rod: int | None = None, fraction: float | None = None) -> Settings:
+        """The riding frame, on rod ``rod`` (from 0) at point ``fraction`` of it (each kept if not given)."""
+        point = RidePoint(self.ride.rod if rod is None else rod, self.ride.fraction if fraction is None else fraction)
+        return replace(self, frame=RIDE_FRAME, ride=point)
 
 
 @dataclass(frozen=True)
@@ -100,6 +116,11 @@ class Resolved:
     overlay: rr.Scene | None = None
     layers: frozenset[Layer] = DEFAULT_LAYERS
     """The layers the settings ask to be drawn."""
+    ride: RidePoint | None = None
+    """The material point whose momentarily comoving frame the lower lane rides, or ``None``. While
+    riding, ``frame`` is the scene's default frame: the second diagram and the exports are drawn in it."""
+    cone: str | None = None
+    """The event whose light cone the diagrams draw (checked against the scene), or ``None``."""
 
 
 def presets() -> dict[str, Settings]:
@@ -162,11 +183,14 @@ def beta_problem(s: Settings) -> str | None:
 
 
 def frame_choices(scene: rr.Scene) -> tuple[str, ...]:
-    return (*scene.frames.keys(), CUSTOM_FRAME)
+    return (*scene.frames.keys(), CUSTOM_FRAME, RIDE_FRAME)
 
 
-def frame_choice(scene: rr.Scene, frame: rr.Frame) -> str:
-    """The frame dropdown's entry for ``frame``: its preset name, or the custom (β slider) entry."""
+def frame_choice(scene: rr.Scene, frame: rr.Frame, ride: RidePoint | None = None) -> str:
+    """The frame dropdown's entry for ``frame``: its preset name, or the custom (β slider) entry;
+    :data:`RIDE_FRAME` while the lane rides a point (``ride``)."""
+    if ride is not None:
+        return RIDE_FRAME
     if frame.name is not None and frame.name in scene.frames and scene.frames[frame.name] == frame:
         return frame.name
     return CUSTOM_FRAME
@@ -198,15 +222,44 @@ def frame_from_text(scene: rr.Scene, text: str | None) -> rr.Frame:
 def build(s: Settings) -> Resolved:
     """The scene and frame the settings mean; a ``ValueError`` names the parameter that makes none."""
     scene = s.description.build(**s.parameters())
+    ride: RidePoint | None = None
     if s.frame == CUSTOM_FRAME:
         frame = rr.Frame.from_velocity(s.beta, name="custom")
     elif s.frame is None:
         frame = rr.default_frame(scene)
+    elif s.frame == RIDE_FRAME:
+        frame, ride = rr.default_frame(scene), check_ride(scene, s.ride)
     else:
         frame = scene.frame(s.frame)
     d = s.description
     overlay = d.overlay.build(scene.parameters) if s.overlay and d.overlay is not None else None
-    return Resolved(scene, frame, overlay, s.layers)
+    return Resolved(scene, frame, overlay, s.layers, ride, None if s.cone is None else check_cone(scene, s.cone))
+
+
+def cone_events(scene: rr.Scene) -> tuple[str, ...]:
+    """The events whose light cone can be drawn: the origin event (by its name, ``"contact"``), then
+    the scene's named events in the lab's time order."""
+    lab = scene.events_in(rr.LAB)
+    return (scene.origin_event.value, *sorted(lab, key=lambda name: lab[name][0]))
+
+
+def check_cone(scene: rr.Scene, name: str) -> str:
+    """``name`` if it is one of :func:`cone_events`, else a ``ParameterError`` naming ``cone``."""
+    events = cone_events(scene)
+    if name not in events:
+        raise rr.ParameterError("cone", f"an event of the scene: {', '.join(events)}", name)
+    return name
+
+
+def check_ride(scene: rr.Scene, point: RidePoint) -> RidePoint:
+    """``point`` if ``scene`` has it: a rod of the scene (counted from 0 here, from 1 where a person
+    types it) and a share of its rest length in [0, 1]; else a ``ParameterError`` naming ``ride``."""
+    n = scene.n_rods
+    if not 0 <= point.rod < n:
+        raise rr.ParameterError("ride", f"a rod of the scene, 1..{n}", point.rod + 1)
+    if not 0.0 <= point.fraction <= 1.0:  # also refuses NaN
+        raise rr.ParameterError("ride", "a point f in [0, 1] (0 the left end, 1 the right)", point.fraction)
+    return point
 
 
 def resolve(s: Settings) -> Resolved | str:
@@ -228,6 +281,10 @@ def notice(s: Settings, exc: ValueError) -> str:
         return f"{p.label} = {shown} refused: {exc}. The last valid scene stays on screen."
     if name == "beta":
         return f"β = {s.beta!r} refused: {exc}. The last valid scene stays on screen."
+    if name == "ride":
+        return f"Ride point refused: {exc}. The last valid scene stays on screen."
+    if name == "cone":
+        return f"Light cone refused: {exc}. The last valid scene stays on screen."
     return f"{exc}. The last valid scene stays on screen."
 
 
