@@ -226,3 +226,25 @@ def test_the_riding_lane_carries_the_light_pulse_boosted_from_the_lab() -> None:
     assert light and light[0].x0.size > 0
     centre = lower.origin_px + pulses[0] * lower.scale
     assert np.min(np.abs(light[0].x0 - centre)) < 4.0  # the pulse bar is drawn where the boosted ray is
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_every_scene_rides_with_its_signals_and_verdicts(kind: str) -> None:
+    """The signal layer in the riding frame, in every scene: pulses in the riding lane where the
+    lab's rays cross its instant, the verdicts in words (frame-independent) in the readout."""
+    from rigidrel_app.view.layers import DEFAULT_LAYERS, Layer
+
+    settings = replace(Settings(kind), layers=DEFAULT_LAYERS | {Layer.SIGNALS}).riding(0, 0.5)
+    r = build(settings)
+    d = build_drawing(r)
+    assert d.signals is not None
+    for now in np.linspace(*d.window, 5):
+        instant = d.ride_instant(float(now))
+        lanes = d.lane_pictures(float(now), LAYOUT, instant)
+        charts = d.moving_items(float(now), [lane.ends for lane in lanes], instant)
+        assert all(np.all(np.isfinite(lane.ends)) for lane in lanes)
+        assert len(charts) == 3
+    text = readout_markdown(r)
+    fixed = readout_markdown(build(replace(settings, frame=None)))
+    assert "**Light**" in text
+    assert text.split("**Light**", 1)[1] == fixed.split("**Light**", 1)[1]  # the same verdicts, riding or not
