@@ -195,6 +195,26 @@ def test_presenter_caption_at_1920(open_tab: OpenTab, lesson_app: App, shots: Pa
     tab.screenshot(shots / "presenter-step-6-1920.png")
 
 
+def test_the_riding_step_rides_its_point(open_tab: OpenTab, lesson_app: App, shots: Path) -> None:
+    """The built-in lesson's riding step, reached from the step list: its lower lane rides the rod's
+    back end (the lane's title says so, and the rod keeps its rest length there)."""
+    k = next(i for i, step in enumerate(PAPER.steps) if step.ride is not None)
+    tab = open_tab(lesson_app)
+    tab.wait_caption(PAPER.steps[0].title)
+    tab.control("Step").click()
+    tab.page.locator(f'[role=option]:has-text("{k + 1}/{len(PAPER.steps)}")').first.click()
+    tab.wait_caption(PAPER.steps[k].title)
+    s = tab.session
+    wait_until(lambda: s.drawn is not None and s.drawn.resolved.ride == PAPER.steps[k].ride, timeout=30)
+    wait_until(lambda: len(s.renderer_lanes) == 2 and s.renderer_lanes[1].title.startswith("riding:"), timeout=30)
+    lane = s.renderer_lanes[1]
+    rest = s.drawn.resolved.scene.rods[0].motion.length  # type: ignore[union-attr]
+    assert float(np.diff(lane.ends[0])[0]) == pytest.approx(rest, rel=1e-12)
+    assert "default frame" not in tab.caption()
+    tab.screenshot(shots / f"riding-step-{k + 1}-1280.png")
+    assert tab.errors == []
+
+
 def test_follow_the_leading_tab(open_tab: OpenTab, shots: Path) -> None:
     app = App(host="127.0.0.1", port=0, lesson=PAPER, follow=True)
     try:
