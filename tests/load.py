@@ -63,7 +63,8 @@ def rss_mb() -> float:
 def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
     """``clients`` tabs playing Fig. 3 for ``seconds`` (after a warm-up) with the server animating at ``fps``.
 
-    Per client: delivered rod frames per second (minimum, median), bytes per second (median);
+    Per client: delivered frames per second (minimum, median), a frame being one that moved the
+    picture (:attr:`tests.viser_client.Stats.lane_frames`); bytes per second (median);
     for the server: errors, resident-memory growth and CPU per client over the measured window.
     """
     with App(port=0, animation_hz=fps) as app, client_swarm(app.url, clients, seconds) as child:

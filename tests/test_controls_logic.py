@@ -206,6 +206,7 @@ def test_each_action_has_one_key_viser_knows() -> None:
         "pagedown": Action.NEXT_FIGURE,  # and "next"
         "R": Action.RESET_VIEW,
         "F": Action.TOGGLE_PRESENTER,
+        "T": Action.TOGGLE_THEME,
     }
     assert action_for("Q") is None
     assert not set(RESERVED) & set(keys) and set(RESERVED) <= viser_keys

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import itertools
 import logging
 import math
 import threading
@@ -264,6 +265,16 @@ def test_a_client_cannot_reach_another_session(harness: Harness) -> None:
     session_a.perform(Action.TOGGLE_PLAY)
 
 
+#: A reader that gets no frame for this long is frozen (playback asks for about 30 a second).
+FREEZE_SECONDS = 0.5
+
+
+def _longest_gap(client: LightClient, t0: float, t1: float) -> float:
+    """The longest wait (s) between the client's rod frames from ``t0`` to ``t1`` (the ends count)."""
+    times = [t0, *(t for t in client.stats.lane_times if t0 <= t <= t1), t1]
+    return max(b - a for a, b in itertools.pairwise(times))
+
+
 def _fps(clients: list[LightClient], seconds: float) -> list[float]:
     """Rod frames per second each client received, over one window shared by all of them."""
     t0 = time.monotonic()
@@ -335,14 +346,17 @@ def test_a_flooding_client_is_dropped_and_the_others_keep_playing() -> None:
         time.sleep(1.0)
         baseline = min(_fps([c for c, _ in readers], 3.0))
         flooding_for = h.loop.start(flood(flooder, "V", rate=10_000.0, seconds=5.0))
+        t0 = time.monotonic()
         during = min(_fps([c for c, _ in readers], 4.0))
+        gap = max(_longest_gap(c, t0, time.monotonic()) for c, _ in readers)
         sent, hung_up_after = flooding_for.result(10)
         assert hung_up_after is not None and hung_up_after < 2.0, (sent, hung_up_after)
         assert h.app.floods == 1 and flooding.closed
         wait_until(lambda: flooding not in h.app.sessions.values())
-        # not frozen by it: loosely, as in-process windows of the same readers vary by a quarter on this
-        # shared machine; the absolute rate under a flood is the load benchmark's (--flood)
-        assert baseline > 0 and during >= 0.5 * baseline, (baseline, during)
+        # not frozen by it: no reader waited a whole second for a frame, and each kept a good share of
+        # its own rate (loosely: in-process windows of the same readers vary by half when other jobs
+        # load this shared machine); the absolute rate under a flood is the load benchmark's (--flood)
+        assert baseline > 0 and gap < FREEZE_SECONDS and during >= 0.25 * baseline, (baseline, during, gap)
         assert all(not s.closed for _, s in readers) and all(c.stats.errors == [] for c, _ in readers)
         h.clients.remove(flooder)
         _, newcomer = h.connect()  # the room still takes new tabs

@@ -104,7 +104,9 @@ class Stats:
     frames: int = 0
     bytes: int = 0
     lane_frames: int = 0
-    """Frames that moved the rods (a batched-mesh position update)."""
+    """Frames that moved the picture: a scene-node update (the rods, their clocks, the lane titles or
+    the now-lines). Not the rods' boxes alone: a lane follows its rods, so a rod in uniform motion
+    keeps its place on the page while its ruler scrolls, and its box sends nothing."""
     lane_times: list[float] = field(default_factory=list)
     errors: list[str] = field(default_factory=list)
     first_picture_bytes: int | None = None
@@ -191,7 +193,7 @@ class LightClient:
                 self.gui_uuid[str(props["label"])] = str(m["uuid"])
             if kind == "RegisterCommandMessage" and isinstance(props, dict):
                 self.command_uuid[str(props["label"])] = str(m["uuid"])
-            if kind == "SceneNodeUpdateMessage" and "batched_positions" in m.get("updates", {}):
+            if kind == "SceneNodeUpdateMessage":
                 moved = True
         if moved:
             s.lane_frames += 1

@@ -21,6 +21,7 @@ from .export.paths import EXIT_USAGE, fail, out_dir
 from .view.scenario import ride_from_text
 from .view.signals import signals_in, verdict_lines
 from .view.state import Settings, beta_problem, build, format_value, frame_from_text, settings_for
+from .view.vocabulary import Shade
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
 
@@ -239,6 +240,12 @@ def build_parser() -> OneLineParser:
         port = 8080 if defaults else argparse.SUPPRESS
         common.add_argument("--host", default=host, help="interface to bind (default 127.0.0.1: this machine only)")
         common.add_argument("--port", type=_port, default=port, help="port to try first; the next free one if busy")
+        common.add_argument(
+            "--theme",
+            choices=("light", "dark"),
+            default="light" if defaults else argparse.SUPPRESS,
+            help="the theme every tab opens in: light, or dark for a projector (key T switches a tab)",
+        )
         if not defaults:  # a scene's option: the lower lane rides a point of one of its rods
             common.add_argument(
                 "--ride",
@@ -269,6 +276,8 @@ def build_parser() -> OneLineParser:
     ex_common.add_argument("--seconds", type=_positive, default=10.0, help="length of the animations (default 10 s)")
     ex_common.add_argument("--fps", type=_positive, default=30.0, help="frames per second of the 3-D HTML and MP4")
     ex_common.add_argument("--gif-fps", type=_positive, default=15.0, help="frames per second of the GIF")
+    theme_help = "light, or dark for a projector (light on black, every colour's lightness flipped)"
+    ex_common.add_argument("--theme", choices=("light", "dark"), default=argparse.SUPPRESS, help=theme_help)
     ex = sub.add_parser(
         "export",
         help="offline HTML (3-D and diagram), PNG, SVG, GIF and MP4 of a scene, or a lesson as a page set",
@@ -276,6 +285,7 @@ def build_parser() -> OneLineParser:
     )
     ex.add_argument("--lesson", help="a lesson file (TOML) or a built-in lesson's name (paper)")
     ex.add_argument("--out", dest="lesson_out", help="with --lesson: folder to write into")
+    ex.add_argument("--theme", choices=("light", "dark"), default="light", help=theme_help)
     add_scene_subparsers(ex, [ex_common], frame_help + " (default: the scene's default frame)", required=False)
     ex.set_defaults(func=cmd_export)
 
@@ -298,13 +308,15 @@ def cmd_export(args: argparse.Namespace) -> int:
     if args.lesson is not None:
         if getattr(args, "scene", None) is not None:
             fail(prog, "give a SCENE or --lesson, not both")
-        return export_lesson_folder(prog, args.lesson, args.lesson_out)
+        return export_lesson_folder(prog, args.lesson, args.lesson_out, args.theme)
     if getattr(args, "scene", None) is None:
         fail(prog, "give a SCENE (see rigidrel scenes) or --lesson FILE")
     scene, frame = scene_from_args(prog, args, None)
     out = out_dir(prog, args.out)
     try:
-        written = export_scene(scene, frame, out, seconds=args.seconds, fps=args.fps, gif_fps=args.gif_fps)
+        written = export_scene(
+            scene, frame, out, seconds=args.seconds, fps=args.fps, gif_fps=args.gif_fps, shade=args.theme
+        )
     except (RuntimeError, ValueError) as exc:
         fail(prog, str(exc))
     for w in written:
@@ -312,7 +324,7 @@ def cmd_export(args: argparse.Namespace) -> int:
     return 0
 
 
-def export_lesson_folder(prog: str, lesson_name: str, out_text: str | None) -> int:
+def export_lesson_folder(prog: str, lesson_name: str, out_text: str | None, shade: Shade = "light") -> int:
     """``rigidrel export --lesson FILE --out DIR``: the lesson checked whole, then its pages."""
     from .export.lesson_site import export_lesson
     from .lessons import LessonError, lesson_from
@@ -325,7 +337,7 @@ def export_lesson_folder(prog: str, lesson_name: str, out_text: str | None) -> i
         fail(prog, str(exc))
     out = out_dir(prog, out_text)
     t0 = time.perf_counter()
-    written = export_lesson(lesson, out, progress=lambda p: print(p, flush=True))
+    written = export_lesson(lesson, out, progress=lambda p: print(p, flush=True), shade=shade)
     size = sum(p.stat().st_size for p in written) / 1e6
     seconds, index = time.perf_counter() - t0, out / "index.html"
     print(f"{len(lesson.steps)} steps, {len(written)} files, {size:.1f} MB in {seconds:.1f} s: open {index}")
@@ -393,7 +405,7 @@ def cmd_serve(args: argparse.Namespace) -> int:
     start = start_settings(prog, args)
     from .live.server import serve  # viser is imported only here
 
-    return serve(args.host, args.port, start, lesson, args.follow)
+    return serve(args.host, args.port, start, lesson, args.follow, args.theme)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -8,12 +8,13 @@ from __future__ import annotations
 
 import base64
 import json
+import re
 from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
-from ..view.vocabulary import Area, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style
+from ..view.vocabulary import Area, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Shade, Style, shaded
 
 #: The app's plotly config, sent with every figure: no mode bar, resize with the panel.
 APP_CONFIG: dict[str, Any] = {"displayModeBar": False, "responsive": True}
@@ -149,6 +150,74 @@ def chart_layout(chart: Chart, height: int | None = None) -> dict[str, Any]:
     if height is not None:
         layout["height"] = height
     return layout
+
+
+#: plotly's own colours where a figure leaves them out, made explicit before a figure is shaded
+#: (so that a dark figure has no dark-grey text or white slider left of plotly's defaults).
+_LAYOUT_DEFAULTS: dict[str, Any] = {"paper_bgcolor": "#FFFFFF", "plot_bgcolor": "#FFFFFF", "font": {"color": "#222222"}}
+_AXIS_DEFAULTS = {"gridcolor": "#EEEEEE", "linecolor": "#444444", "zerolinecolor": "#444444", "tickcolor": "#444444"}
+_MENU_DEFAULTS = {"bgcolor": "#F4FAFF", "bordercolor": "#BEC8D9", "font": {"color": "#222222"}}
+_SLIDER_DEFAULTS = {
+    "bgcolor": "#F8FAFC", "activebgcolor": "#DBDDE0", "bordercolor": "#BEC8D9", "tickcolor": "#333333",
+    "font": {"color": "#222222"}, "currentvalue": {"font": {"color": "#222222"}},
+}  # fmt: skip
+_NAMED = {"white": "#FFFFFF", "black": "#000000"}
+_RGB = re.compile(r"rgba?\(\s*(\d+)\s*,\s*(\d+)\s*,\s*(\d+)\s*(?:,\s*([\d.]+)\s*)?\)")
+
+
+def _shaded_color(value: str, shade: Shade) -> str:
+    """One plotly colour (``#RGB``, ``#RRGGBB``, ``rgb()``, ``rgba()``, white, black) on a ``shade``
+    ground; any other string is left as it is."""
+    v = _NAMED.get(value.strip().lower(), value.strip())
+    if re.fullmatch(r"#[0-9A-Fa-f]{3}", v):
+        v = "#" + "".join(2 * ch for ch in v[1:])
+    if re.fullmatch(r"#[0-9A-Fa-f]{6}", v):
+        return shaded(v, shade)
+    m = _RGB.fullmatch(v)
+    if m is None:
+        return value
+    flipped = shaded("#{:02X}{:02X}{:02X}".format(*(int(g) for g in m.groups()[:3])), shade)
+    r, g, b = (int(flipped[k : k + 2], 16) for k in (1, 3, 5))
+    return f"rgba({r},{g},{b},{m.group(4)})" if m.group(4) is not None else f"rgb({r},{g},{b})"
+
+
+def _with_defaults(target: dict[str, Any], defaults: dict[str, Any]) -> None:
+    for key, value in defaults.items():
+        if isinstance(value, dict):
+            _with_defaults(target.setdefault(key, {}), value)  # pyright: ignore[reportUnknownArgumentType]
+        else:
+            target.setdefault(key, value)
+
+
+def _shade_tree(node: Any, shade: Shade) -> Any:
+    if isinstance(node, dict):
+        return {
+            k: _shaded_color(v, shade) if isinstance(v, str) and k.endswith("color") else _shade_tree(v, shade)
+            for k, v in node.items()  # pyright: ignore[reportUnknownVariableType]
+        }
+    if isinstance(node, list):
+        return [_shade_tree(v, shade) for v in node]  # pyright: ignore[reportUnknownVariableType]
+    return node
+
+
+def shaded_figure(fig: dict[str, Any], shade: Shade) -> dict[str, Any]:
+    """A copy of a plotly figure dict drawn on a ``shade`` ground. Dark: every colour in it (traces,
+    annotations, axes, sliders, buttons, frames) lightness-flipped, the same hue with dark and light
+    swapped, as the live app's dark theme (:func:`~rigidrel_app.view.vocabulary.lightness_flipped`);
+    plotly's defaults are made explicit first. Light: ``fig`` itself."""
+    if shade == "light":
+        return fig
+    fig = json.loads(dumps(fig))
+    layout = fig.setdefault("layout", {})
+    _with_defaults(layout, _LAYOUT_DEFAULTS)
+    for key in list(layout):
+        if re.fullmatch(r"[xy]axis\d*", key):
+            _with_defaults(layout[key], _AXIS_DEFAULTS)
+    for menu in layout.get("updatemenus", []):
+        _with_defaults(menu, _MENU_DEFAULTS)
+    for slider in layout.get("sliders", []):
+        _with_defaults(slider, _SLIDER_DEFAULTS)
+    return _shade_tree(fig, shade)
 
 
 def _encode(obj: Any) -> Any:

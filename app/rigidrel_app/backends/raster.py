@@ -15,7 +15,7 @@ from PIL import Image, ImageDraw, ImageFont
 
 from ..view.lanes import LaneState
 from ..view.scene_view import FRAME_Z, LAB_Z, LANE_Z, Drawn, lane_states
-from ..view.vocabulary import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, plain_text, rgb
+from ..view.vocabulary import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, Shade, lightness_flipped, plain_text, rgb
 
 _FONTS = (
     "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
@@ -105,10 +105,18 @@ class LaneRaster:
         )
 
 
-def lane_frames(drawn: Drawn, times: Iterable[float], width: int = 960) -> Iterable[Image.Image]:
+def shaded_frame(img: Image.Image, shade: Shade) -> Image.Image:
+    """A light frame as shown on a ``shade`` ground: on dark, every pixel lightness-flipped (the
+    same hue; the live app's dark theme, :func:`~rigidrel_app.view.vocabulary.lightness_flipped`)."""
+    return img if shade == "light" else Image.fromarray(lightness_flipped(np.asarray(img.convert("RGB"))))
+
+
+def lane_frames(
+    drawn: Drawn, times: Iterable[float], width: int = 960, shade: Shade = "light"
+) -> Iterable[Image.Image]:
     raster = LaneRaster(drawn, width)
     for now in times:
-        yield raster.frame(lane_states(drawn, float(now)))
+        yield shaded_frame(raster.frame(lane_states(drawn, float(now))), shade)
 
 
 #: A fixed palette for GIF frames: white, ink, the rods, the wall, the frame colour, greys.
@@ -124,23 +132,28 @@ _PALETTE_COLORS = [
 ]
 
 
-def _palette_image() -> Image.Image:
+def _palette_image(shade: Shade = "light") -> Image.Image:
     pal = Image.new("P", (1, 1))
-    flat = [v for c in _PALETTE_COLORS for v in c]
+    colors = np.array(_PALETTE_COLORS, dtype=np.uint8)
+    flat = [int(v) for v in (colors if shade == "light" else lightness_flipped(colors)).ravel()]
     pal.putpalette(flat + [0] * (768 - len(flat)))
     return pal
 
 
-def write_gif(drawn: Drawn, path: Path, times: np.ndarray, fps: float, width: int = 960) -> Path:
-    pal = _palette_image()
-    frames = [f.quantize(palette=pal, dither=Image.Dither.NONE) for f in lane_frames(drawn, times, width)]
+def write_gif(
+    drawn: Drawn, path: Path, times: np.ndarray, fps: float, width: int = 960, shade: Shade = "light"
+) -> Path:
+    pal = _palette_image(shade)
+    frames = [f.quantize(palette=pal, dither=Image.Dither.NONE) for f in lane_frames(drawn, times, width, shade)]
     frames[0].save(
         path, save_all=True, append_images=frames[1:], duration=round(1000 / fps), loop=0, optimize=False, disposal=1
     )
     return path
 
 
-def write_mp4(drawn: Drawn, path: Path, times: np.ndarray, fps: float, width: int = 960) -> Path | None:
+def write_mp4(
+    drawn: Drawn, path: Path, times: np.ndarray, fps: float, width: int = 960, shade: Shade = "light"
+) -> Path | None:
     """H.264 MP4 through the ffmpeg of ``imageio-ffmpeg`` (PyPI); ``None`` if it is not installed."""
     try:
         import imageio_ffmpeg
@@ -158,6 +171,6 @@ def write_mp4(drawn: Drawn, path: Path, times: np.ndarray, fps: float, width: in
     )
     writer.send(None)
     for now in times:
-        writer.send(raster.frame(lane_states(drawn, float(now))).tobytes())
+        writer.send(shaded_frame(raster.frame(lane_states(drawn, float(now))), shade).tobytes())
     writer.close()
     return path

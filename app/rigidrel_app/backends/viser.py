@@ -7,6 +7,13 @@ per scene (or canvas size); per playback frame it assigns a handful of arrays (b
 positions, segment points, dot positions), the lane titles and one translation per ruler,
 so the lanes and the diagrams' now-lines always show one instant in one message batch.
 :class:`LaneRenderer` draws the 3-D lanes of the recordings.
+
+The dark (projector) theme: viser draws every label as black glyphs on a white box, which no
+message can change. So the page stays a light page and the browser inverts the canvas exactly
+(``filter: invert(1)``, :data:`DARK_CANVAS_CSS`, put on the tab by the live app): the labels come
+out white on black. Every colour this module sends on a dark page is first replaced by its
+complement at equal lightness (:func:`sent_for_shade`), so that after the inversion it shows
+:func:`~rigidrel_app.view.vocabulary.lightness_flipped` of itself: the same hue, dark turned light.
 """
 
 from __future__ import annotations
@@ -22,7 +29,7 @@ from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
 from ..view.lanes import Box, LanePicture, LaneState, ruler_text, segments_array
 from ..view.layout import CanvasLayout
-from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, plain_text, rgb
+from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, plain_text, rgb
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
 _CUBE_FACES = np.array(
@@ -70,20 +77,38 @@ def _ring(radius: float, width: float = 0.13, n: int = 32) -> tuple[np.ndarray, 
     return vertices, faces
 
 
+#: The CSS that turns a tab's canvas into the dark theme: its ground white, then every pixel
+#: inverted exactly (``255 - v`` per channel), viser's black-on-white labels included.
+DARK_CANVAS_CSS = "canvas[data-engine] { background: #ffffff; filter: invert(1); }"
+
+
+def sent_for_shade(colors: np.ndarray, shade: Shade) -> np.ndarray:
+    """The sRGB colours ``(..., 3)`` to send so that the page shows ``colors`` on a ``shade`` ground.
+    Light: themselves. Dark: ``max(c) + min(c) - c`` (the complement at equal HSL lightness), which
+    the canvas' inversion turns into ``c + 255 - max(c) - min(c)``, the colour's
+    :func:`~rigidrel_app.view.vocabulary.lightness_flipped` self."""
+    c = np.asarray(colors, dtype=np.uint8)
+    if shade == "light":
+        return c
+    w = c.astype(np.int16)
+    return (w.max(axis=-1, keepdims=True) + w.min(axis=-1, keepdims=True) - w).astype(np.uint8)
+
+
 @functools.lru_cache(maxsize=64)
-def _instance_colors(names: tuple[str, ...]) -> np.ndarray:
-    return np.array([linear_rgb(c) for c in names], dtype=np.uint8)
+def _instance_colors(names: tuple[str, ...], shade: Shade = "light") -> np.ndarray:
+    return np.array([linear_rgb(c, shade) for c in names], dtype=np.uint8)
 
 
-def linear_rgb(color: str) -> tuple[int, int, int]:
-    """An sRGB palette colour as the linear values three.js expects for mesh instance colours."""
+def linear_rgb(color: str, shade: Shade = "light") -> tuple[int, int, int]:
+    """An sRGB palette colour (as sent for a ``shade`` page, :func:`sent_for_shade`) as the linear
+    values three.js expects for mesh instance colours."""
 
     def lin(c: int) -> int:
         x = c / 255.0
         y = x / 12.92 if x <= 0.04045 else ((x + 0.055) / 1.055) ** 2.4
         return round(255.0 * y)
 
-    r, g, b = rgb(color)
+    r, g, b = (int(v) for v in sent_for_shade(np.array(rgb(color)), shade))
     return lin(r), lin(g), lin(b)
 
 
@@ -125,8 +150,11 @@ class _LabelPool:
 class LaneRenderer:
     """Draws :class:`LaneState` s of several lanes (stacked in z) into one client's scene."""
 
-    def __init__(self, scene: viser.SceneApi, lane_z: Sequence[float]) -> None:
+    def __init__(self, scene: viser.SceneApi, lane_z: Sequence[float], shade: Shade = "light") -> None:
+        """``shade``: the colours are sent for that ground (:func:`sent_for_shade`; a dark page also
+        needs :data:`DARK_CANVAS_CSS`)."""
         self._scene = scene
+        self._shade: Shade = shade
         self.lane_z = tuple(lane_z)
         self._boxes: viser.BatchedMeshHandle | None = None
         self._box_capacity = BOXES_PER_LANE * len(self.lane_z)
@@ -147,12 +175,16 @@ class LaneRenderer:
         self._dial_radius = 0.0
 
     # ------------------------------------------------------------------ per scene
+    def _rgb(self, color: str) -> tuple[int, int, int]:
+        r, g, b = (int(v) for v in sent_for_shade(np.array(rgb(color)), self._shade))
+        return r, g, b
+
     def set_static(self, rulers: Sequence[tuple[Segments, Sequence[Label]]]) -> None:
         """Per-lane static geometry (rulers, origin marks): redrawn only when the scene changes."""
         pts = np.concatenate([segments_array(seg, z, _FRONT) for (seg, _), z in zip(rulers, self.lane_z, strict=True)])
         if self._static is None:
             self._static = self._scene.add_line_segments(
-                "/lanes/static", pts, colors=rgb(FRAME_COLOR), thickness=1.5, thickness_units="screen"
+                "/lanes/static", pts, colors=self._rgb(FRAME_COLOR), thickness=1.5, thickness_units="screen"
             )
         else:
             self._static.points = pts
@@ -170,7 +202,7 @@ class LaneRenderer:
         )
         if self._dynamic is None:
             self._dynamic = self._scene.add_line_segments(
-                "/lanes/dynamic", pts, colors=rgb(INK), thickness=1.6, thickness_units="screen"
+                "/lanes/dynamic", pts, colors=self._rgb(INK), thickness=1.6, thickness_units="screen"
             )
         else:
             self._dynamic.points = pts
@@ -198,7 +230,7 @@ class LaneRenderer:
                 faces,
                 batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (n, 1)),
                 batched_positions=positions,
-                batched_colors=np.array(linear_rgb(INK), dtype=np.uint8),
+                batched_colors=np.array(linear_rgb(INK, self._shade), dtype=np.uint8),
                 flat_shading=True,
                 lod="off",
                 cast_shadow=False,
@@ -223,7 +255,7 @@ class LaneRenderer:
             positions[k] = (0.5 * (b.x0 + b.x1), 0.0, z + b.z)
             scales[k] = (max(b.x1 - b.x0, 1e-4), ROD_DEPTH, b.height)
         names = tuple(b.color for b, _ in boxes) + ("#ffffff",) * (n - len(boxes))
-        colors = _instance_colors(names)
+        colors = _instance_colors(names, self._shade)
         if self._boxes is None:
             self._boxes = self._scene.add_batched_meshes_simple(
                 "/lanes/boxes",
@@ -355,9 +387,10 @@ def line_rgb(color: tuple[int, int, int]) -> tuple[int, int, int]:
     return r, g, bl
 
 
-def _to_linear(colors: np.ndarray) -> np.ndarray:
-    """sRGB colours ``(n, 3)`` as the values viser's lines take (:func:`line_rgb`)."""
-    unique, inverse = np.unique(np.asarray(colors, dtype=np.uint8), axis=0, return_inverse=True)
+def _to_linear(colors: np.ndarray, shade: Shade = "light") -> np.ndarray:
+    """sRGB colours ``(n, 3)``, as sent for a ``shade`` page (:func:`sent_for_shade`), as the values
+    viser's lines take (:func:`line_rgb`)."""
+    unique, inverse = np.unique(sent_for_shade(colors, shade), axis=0, return_inverse=True)
     mapped = np.array([line_rgb((int(r), int(g), int(b))) for r, g, b in unique], dtype=np.uint8)
     return mapped[inverse.reshape(-1)]
 
@@ -372,6 +405,8 @@ class _LineNodes:
         self._y = y
         self._nodes: dict[tuple[float, int], viser.LineSegmentsHandle] = {}
         self._counts: dict[tuple[float, int], int] = {}
+        self.shade: Shade = "light"
+        """The page's ground; colours are sent for it (:func:`sent_for_shade`)."""
         self.points = np.zeros((0, 2, 3), dtype=np.float32)
         """Every segment shown, ``(n, 2, 3)`` world (page) coordinates, as last sent."""
 
@@ -390,7 +425,7 @@ class _LineNodes:
             pts[:, :, 1] = self._y - _LAYER_Y * layer
             pts[:, :, 2] = pts2[:, :, 1]
             shown.append(pts)
-            colors = np.repeat(_to_linear(cols)[:, None, :], 2, axis=1)
+            colors = np.repeat(_to_linear(cols, self.shade)[:, None, :], 2, axis=1)
             node = self._nodes.get(key)
             if node is None:
                 name = f"{self._prefix}/l{layer}w{width:g}".replace(".", "_")
@@ -418,6 +453,8 @@ class _DotNodes:
         self._prefix = prefix
         self._nodes: dict[tuple[str, float, int], viser.PointCloudHandle] = {}
         self._counts: dict[tuple[str, float, int], int] = {}
+        self.shade: Shade = "light"
+        """The page's ground; colours are sent for it (:func:`sent_for_shade`)."""
 
     def show(self, dots: Sequence[PageDots]) -> None:
         groups: dict[tuple[str, float, int], list[PageDots]] = {}
@@ -428,7 +465,7 @@ class _DotNodes:
             shape, size, layer = key
             xy = np.concatenate([m.xy for m in members])
             pts = np.stack([xy[:, 0], np.full(len(xy), -_LAYER_Y * layer - 0.2), xy[:, 1]], -1)
-            cols = np.concatenate([m.colors for m in members]).astype(np.uint8)
+            cols = sent_for_shade(np.concatenate([m.colors for m in members]).astype(np.uint8), self.shade)
             node = self._nodes.get(key)
             if node is None:
                 name = f"{self._prefix}/{shape}{size:g}l{layer}".replace(".", "_")
@@ -500,7 +537,7 @@ class PageRenderer:
         self._box_capacity = 0
         self._box_state: tuple[bytes, bytes, tuple[str, ...]] | None = None
         self._dials: viser.BatchedMeshHandle | None = None
-        self._dial_key: tuple[int, float] | None = None
+        self._dial_key: tuple[int, float, Shade] | None = None
         self.layout: CanvasLayout | None = None
 
     def moving_points(self) -> np.ndarray:
@@ -511,8 +548,11 @@ class PageRenderer:
         return cam.fit_page(layout.width, layout.height)
 
     def set_static(self, layout: CanvasLayout, picture: PagePicture, axis_names: Sequence[str]) -> None:
-        """What does not move: the diagrams (axes, curves, events, labels), the legend, the rulers' names."""
+        """What does not move: the diagrams (axes, curves, events, labels), the legend, the rulers' names.
+        Every colour from here on is sent for the layout theme's ground (:func:`sent_for_shade`)."""
         self.layout = layout
+        for nodes in (self._static_lines, self._static_dots, self._moving_lines, self._moving_dots, self._lane_lines):
+            nodes.shade = layout.theme.shade
         self._static_lines.show(picture.lines)
         self._static_dots.show(picture.dots)
         names = [
@@ -526,7 +566,7 @@ class PageRenderer:
         layout = self.layout
         assert layout is not None, "set_static first"
         theme = layout.theme
-        self._update_boxes([b for lane in lanes for b in lane.boxes])
+        self._update_boxes([b for lane in lanes for b in lane.boxes], theme.shade)
         lines: list[PageLines] = []
         for lane in lanes:
             for seg in lane.segments:
@@ -537,7 +577,7 @@ class PageRenderer:
                 color = color_rgb(theme.ink if seg.style.color == INK else seg.style.color)
                 lines.append(PageLines(pts, np.tile(color, (n, 1)), theme.line_px, 0))
         self._lane_lines.show(lines)
-        self._update_dials(np.concatenate([lane.dials for lane in lanes]), layout.lanes[0].clock_px)
+        self._update_dials(np.concatenate([lane.dials for lane in lanes]), layout.lanes[0].clock_px, theme.shade)
         self.titles.show(
             [
                 PageText(p.band.x0, p.title_z, lane.title, theme.title_px, "top-left")
@@ -550,7 +590,7 @@ class PageRenderer:
         self._moving_lines.show(moving.lines)
         self._moving_dots.show(moving.dots)
 
-    def _update_boxes(self, boxes: Sequence[Box]) -> None:
+    def _update_boxes(self, boxes: Sequence[Box], shade: Shade) -> None:
         if len(boxes) > self._box_capacity:
             self._box_capacity = max(len(boxes), 4)
             if self._boxes is not None:
@@ -562,8 +602,8 @@ class PageRenderer:
         for k, b in enumerate(boxes):
             positions[k] = (0.5 * (b.x0 + b.x1), 0.0, b.z)
             scales[k] = (max(b.x1 - b.x0, 0.5), _PAGE_ROD_DEPTH, b.height)
-        names = tuple(b.color for b in boxes) + ("#ffffff",) * (n - len(boxes))
-        colors = _instance_colors(names)
+        names = (*(b.color for b in boxes), *("#ffffff",) * (n - len(boxes)), shade)
+        colors = _instance_colors(names[:-1], shade)
         if self._boxes is None:
             self._boxes = self._scene.add_batched_meshes_simple(
                 "/page/boxes", _CUBE_VERTICES, _CUBE_FACES,
@@ -582,13 +622,13 @@ class PageRenderer:
             self._boxes.batched_colors = colors
         self._box_state = (positions.tobytes(), scales.tobytes(), names)
 
-    def _update_dials(self, centres: np.ndarray, radius: float) -> None:
+    def _update_dials(self, centres: np.ndarray, radius: float, shade: Shade) -> None:
         n = len(centres)
         positions = np.zeros((max(n, 1), 3), dtype=np.float32)
         positions[:, 1] = 1e5  # none: one instance out of sight
         if n:
             positions[:, 0], positions[:, 1], positions[:, 2] = centres[:, 0], _LANE_LINES_Y + 0.5, centres[:, 1]
-        key = (len(positions), radius)
+        key = (len(positions), radius, shade)
         if self._dials is None or key != self._dial_key:
             if self._dials is not None:
                 self._dials.remove()
@@ -596,7 +636,7 @@ class PageRenderer:
             self._dials = self._scene.add_batched_meshes_simple(
                 "/page/dials", vertices, faces,
                 batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (len(positions), 1)),
-                batched_positions=positions, batched_colors=np.array(linear_rgb(INK), dtype=np.uint8),
+                batched_positions=positions, batched_colors=np.array(linear_rgb(INK, shade), dtype=np.uint8),
                 flat_shading=True, lod="off", cast_shadow=False, receive_shadow=False, side="double",
             )  # fmt: skip
             self._dial_key = key

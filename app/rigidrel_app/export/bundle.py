@@ -9,9 +9,11 @@ from pathlib import Path
 
 import rigidrel_core as rr
 
+from ..backends.plotly import shaded_figure
 from ..backends.raster import write_gif, write_mp4
 from ..view.scene_view import build_drawing
 from ..view.state import Resolved, settings_for
+from ..view.vocabulary import Shade
 from .diagram import slide_diagram
 from .diagram_html import diagram_html
 from .images import image_writer
@@ -37,8 +39,10 @@ def export_scene(
     fps: float = 30.0,
     gif_fps: float = 15.0,
     width: int = 960,
+    shade: Shade = "light",
 ) -> list[Written]:
-    """Write the 3-D HTML, the slider HTML, PNG and SVG of the diagram, a GIF and (with ffmpeg) an MP4."""
+    """Write the 3-D HTML, the slider HTML, PNG and SVG of the diagram, a GIF and (with ffmpeg) an MP4,
+    each on a ``shade`` ground (dark: the live app's dark theme, every colour lightness-flipped)."""
     out.mkdir(parents=True, exist_ok=True)
     stem = scene.kind
     drawn = build_drawing(Resolved(scene, frame, None))
@@ -50,18 +54,24 @@ def export_scene(
         if result is not None:
             written.append(Written(path, time.perf_counter() - t0))
 
-    timed(out / f"{stem}-3d.html", lambda p: p.write_text(record_lanes_html(drawn, seconds, fps), encoding="utf-8"))
+    timed(
+        out / f"{stem}-3d.html",
+        lambda p: p.write_text(record_lanes_html(drawn, seconds, fps, shade=shade), encoding="utf-8"),
+    )
     timed(
         out / f"{stem}-diagram.html",
-        lambda p: p.write_text(diagram_html(settings_for(scene, frame)), encoding="utf-8"),
+        lambda p: p.write_text(diagram_html(settings_for(scene, frame), shade=shade), encoding="utf-8"),
     )
-    fig = slide_diagram(scene, frame)
+    fig = shaded_figure(slide_diagram(scene, frame), shade)
     with image_writer() as writer:
         timed(out / f"{stem}-diagram.png", lambda p: writer.write(fig, p, 760, 640, scale=2.0))
         timed(out / f"{stem}-diagram.svg", lambda p: writer.write(fig, p, 760, 640))
     timed(
         out / f"{stem}-lanes.gif",
-        lambda p: write_gif(drawn, p, playback_times(drawn, seconds, gif_fps), gif_fps, width),
+        lambda p: write_gif(drawn, p, playback_times(drawn, seconds, gif_fps), gif_fps, width, shade),
     )
-    timed(out / f"{stem}-lanes.mp4", lambda p: write_mp4(drawn, p, playback_times(drawn, seconds, fps), fps, width))
+    timed(
+        out / f"{stem}-lanes.mp4",
+        lambda p: write_mp4(drawn, p, playback_times(drawn, seconds, fps), fps, width, shade),
+    )
     return written

@@ -19,10 +19,18 @@ import plotly.io as pio
 
 import rigidrel_core as rr
 
-from ..backends.plotly import LABEL_PX, TICK_PX, TITLE_PX, item_to_traces, jsonable, label_to_annotation
+from ..backends.plotly import (
+    LABEL_PX,
+    TICK_PX,
+    TITLE_PX,
+    item_to_traces,
+    jsonable,
+    label_to_annotation,
+    shaded_figure,
+)
 from ..view.diagrams import frame_title, length_static, minkowski_in_frame
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Resolved, Settings, resolve
-from ..view.vocabulary import Label
+from ..view.vocabulary import Label, Shade
 
 #: The page's figure (CSS pixels): fits a 1280x720 projector without scrolling.
 PAGE_PX = (1240, 700)
@@ -347,10 +355,11 @@ gd.on('plotly_buttonclicked', function () {
 """
 
 
-def diagram_html(settings: Settings, plotly_js: Literal["inline", "beside"] = "inline") -> str:
+def diagram_html(settings: Settings, plotly_js: Literal["inline", "beside"] = "inline", shade: Shade = "light") -> str:
     """The standalone page. ``plotly_js``: ``"inline"`` puts plotly.js in the page (no network, one
-    file); ``"beside"`` loads ``plotly.min.js`` from the page's folder (a page set shares one copy)."""
-    fig = diagram_figure(settings)
+    file); ``"beside"`` loads ``plotly.min.js`` from the page's folder (a page set shares one copy);
+    ``shade``: its ground (dark: every colour lightness-flipped, :func:`shaded_figure`)."""
+    fig = shaded_figure(diagram_figure(settings), shade)
     include: Any = True if plotly_js == "inline" else "directory"  # plotly's annotation says bool only
     page = str(
         pio.to_html(
@@ -364,4 +373,6 @@ def diagram_html(settings: Settings, plotly_js: Literal["inline", "beside"] = "i
         )
     )
     # centred on a wide screen (the figure has a fixed size: its labels are placed for it)
-    return page.replace("<body>", f'<body style="margin: 8px auto; width: {PAGE_PX[0]}px">', 1)
+    ground = "" if shade == "light" else " background: #000000;"
+    page = page.replace("<head>", "<head><style>html { background: #000000; }</style>", 1) if ground else page
+    return page.replace("<body>", f'<body style="margin: 8px auto; width: {PAGE_PX[0]}px;{ground}">', 1)

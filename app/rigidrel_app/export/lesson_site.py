@@ -26,6 +26,7 @@ from markdown_it import MarkdownIt
 from ..lessons import Lesson, Step
 from ..view.scene_view import build_drawing
 from ..view.state import settings_for
+from ..view.vocabulary import Shade
 from .diagram_html import diagram_html
 from .recording import record_lanes_html
 
@@ -50,6 +51,17 @@ ol.index li { margin: 0.3em 0; }
 .note { color: #555; font-size: 0.85em; }
 """
 
+#: The pages' dark theme (``--theme dark``): light text on black, the live app's colours.
+_DARK_STYLE = """
+body { color: #DDDDDD; background: #000000; }
+header { background: #17150A; color: #F2F2F2; border-bottom: 3px solid #4DBFFF; }
+header a { color: #F2F2F2; }
+.views iframe { border-color: #333333; }
+nav a { border-color: #4DBFFF; color: #4DBFFF; }
+a { color: #4DBFFF; }
+.note { color: #AAAAAA; }
+"""
+
 _KEYS = """
 document.addEventListener("keydown", function (e) {
   if (e.altKey || e.ctrlKey || e.metaKey) return;
@@ -67,17 +79,18 @@ def step_name(k: int) -> str:
     return f"step-{k + 1:02d}"
 
 
-def _page(title: str, body: str, next_href: str | None, prev_href: str | None) -> str:
+def _page(title: str, body: str, next_href: str | None, prev_href: str | None, shade: Shade = "light") -> str:
     script = f"var NEXT = {json.dumps(next_href)}, PREV = {json.dumps(prev_href)};\n{_KEYS}"
+    style = _STYLE if shade == "light" else _STYLE + _DARK_STYLE
     return (
         "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>"
         "<meta name='viewport' content='width=device-width, initial-scale=1'>"
-        f"<title>{html.escape(title)}</title><style>{_STYLE}</style></head>"
+        f"<title>{html.escape(title)}</title><style>{style}</style></head>"
         f"<body>{body}<script>{script}</script></body></html>\n"
     )
 
 
-def _step_page(lesson: Lesson, k: int, step: Step) -> str:
+def _step_page(lesson: Lesson, k: int, step: Step, shade: Shade = "light") -> str:
     n = len(lesson.steps)
     prev_href = f"{step_name(k - 1)}.html" if k > 0 else "index.html"
     next_href = f"{step_name(k + 1)}.html" if k + 1 < n else None
@@ -99,10 +112,10 @@ def _step_page(lesson: Lesson, k: int, step: Step) -> str:
         f"<iframe class='diagram' src='{name}-diagram.html' title='Minkowski diagram with sliders'></iframe>"
         f"</div><nav class='steps'>{nav}</nav></main>"
     )
-    return _page(f"{step.title} · {lesson.title}", body, next_href, prev_href if k > 0 else "index.html")
+    return _page(f"{step.title} · {lesson.title}", body, next_href, prev_href if k > 0 else "index.html", shade)
 
 
-def _index_page(lesson: Lesson) -> str:
+def _index_page(lesson: Lesson, shade: Shade = "light") -> str:
     items = "".join(
         f"<li><a href='{step_name(k)}.html'>{html.escape(s.title)}</a></li>" for k, s in enumerate(lesson.steps)
     )
@@ -112,7 +125,7 @@ def _index_page(lesson: Lesson) -> str:
         f"<main><h1>{html.escape(lesson.title)}</h1>{subtitle}<ol class='index'>{items}</ol>"
         "<p class='note'>Keys: → or PageDown next, ← or PageUp previous, Home here.</p></main>"
     )
-    return _page(lesson.title, body, f"{step_name(0)}.html", None)
+    return _page(lesson.title, body, f"{step_name(0)}.html", None, shade)
 
 
 def export_lesson(
@@ -121,8 +134,10 @@ def export_lesson(
     seconds: float = 10.0,
     fps: float = 30.0,
     progress: Callable[[Path], None] | None = None,
+    shade: Shade = "light",
 ) -> list[Path]:
-    """Write the lesson's pages into ``out`` (created if missing); returns the files written."""
+    """Write the lesson's pages into ``out`` (created if missing), on a ``shade`` ground (dark: the
+    live app's dark theme in every page, lanes and diagram); returns the files written."""
     out.mkdir(parents=True, exist_ok=True)
     written: list[Path] = []
 
@@ -135,12 +150,12 @@ def export_lesson(
     plotly_js = Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
     shutil.copyfile(plotly_js, out / "plotly.min.js")
     written.append(out / "plotly.min.js")
-    write(out / "index.html", _index_page(lesson))
+    write(out / "index.html", _index_page(lesson, shade))
     for k, step in enumerate(lesson.steps):
         name = step_name(k)
         resolved = step.resolved
-        write(out / f"{name}-lanes.html", record_lanes_html(build_drawing(resolved), seconds, fps))
+        write(out / f"{name}-lanes.html", record_lanes_html(build_drawing(resolved), seconds, fps, shade=shade))
         settings = settings_for(resolved.scene, resolved.frame).with_layers(step.layers)
-        write(out / f"{name}-diagram.html", diagram_html(settings, "beside"))
-        write(out / f"{name}.html", _step_page(lesson, k, step))
+        write(out / f"{name}-diagram.html", diagram_html(settings, "beside", shade))
+        write(out / f"{name}.html", _step_page(lesson, k, step, shade))
     return written

@@ -15,8 +15,9 @@ from collections.abc import Iterator
 import numpy as np
 import viser
 
-from ..backends.viser import LaneRenderer
+from ..backends.viser import DARK_CANVAS_CSS, LaneRenderer
 from ..view.scene_view import LANE_Z, PLOT_HZ, Drawn, camera_pose, lane_states
+from ..view.vocabulary import Shade
 
 
 @contextlib.contextmanager
@@ -37,10 +38,13 @@ def playback_times(drawn: Drawn, seconds: float, fps: float) -> np.ndarray:
     return np.linspace(drawn.window[0], drawn.window[1], n)
 
 
-def record_lanes_html(drawn: Drawn, seconds: float = 10.0, fps: float = 30.0, aspect: float = 16 / 9) -> str:
-    """HTML of both lanes playing through the scene's window in ``seconds`` at ``fps`` frames per second."""
+def record_lanes_html(
+    drawn: Drawn, seconds: float = 10.0, fps: float = 30.0, aspect: float = 16 / 9, shade: Shade = "light"
+) -> str:
+    """HTML of both lanes playing through the scene's window in ``seconds`` at ``fps`` frames per
+    second, on a ``shade`` ground (dark: the live app's dark theme, the canvas inverted by the page)."""
     with quiet_server() as server:
-        renderer = LaneRenderer(server.scene, LANE_Z)
+        renderer = LaneRenderer(server.scene, LANE_Z, shade)
         renderer.set_static(drawn.lane_statics())
         pose = camera_pose(drawn.lane_x_range, aspect)
         server.initial_camera.position = pose.position
@@ -56,4 +60,7 @@ def record_lanes_html(drawn: Drawn, seconds: float = 10.0, fps: float = 30.0, as
             labels = k % label_every == 0
             renderer.update(lane_states(drawn, float(now), labels=labels), radius, labels=labels)
             serializer.insert_sleep(1.0 / fps)
-        return serializer.as_html()
+        page = serializer.as_html()
+    if shade == "dark":
+        page = page.replace("</head>", f"<style>{DARK_CANVAS_CSS} body {{ background: #000000; }}</style></head>", 1)
+    return page

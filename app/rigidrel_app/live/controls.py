@@ -11,23 +11,27 @@ control.
 
 from __future__ import annotations
 
+import asyncio
 import functools
 import html
+import itertools
 import json
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
-from typing import Literal, Protocol, TypeVar
+from typing import Any, Literal, Protocol, TypeVar
 
 import viser
 
 import rigidrel_core as rr
 
+from ..backends.viser import DARK_CANVAS_CSS
 from ..lessons import Lesson
 from ..lessons.tour import LAYER_LABELS, step_labels
 from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, control_value, refusal
 from ..view.layers import Layer
 from ..view.scene_view import CONTROL_PX
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, preset_menu
+from ..view.vocabulary import Shade
 from .keys import HOTKEYS, LESSON_HOTKEYS, Action, Hotkey, key_line
 from .playback import Playback
 
@@ -61,20 +65,38 @@ class Actions(Protocol):
     def go_to_step(self, index: int) -> None: ...
     def load_scenario(self, text: str) -> None: ...
     def set_layer(self, layer: Layer, on: bool) -> None: ...
-    def checked(self, respond: Callable[[], None]) -> None:
-        """Run ``respond`` to one client message under the session's lock, and count it."""
+    def set_shade(self, shade: Shade) -> None: ...
+    def checked(self, respond: Callable[[], None], newest: Callable[[], bool] = lambda: True) -> None:
+        """Run ``respond`` to one client message under the session's lock (unless ``newest`` then says
+        a newer value of its control has arrived), and count it."""
         ...
 
 
 def _on_client_value(handle: viser.GuiInputHandle[T], a: Actions, respond: Callable[[T], None]) -> None:
-    """Call ``respond`` with each value a client sends to ``handle`` (values the server sets itself
-    are the session's own and not checked). The value is read under the session's lock: viser runs
-    these callbacks on a thread pool, so the one that runs last must see the last value sent."""
+    """Call ``respond`` with the values a client sends to ``handle`` (values the server sets itself
+    are the session's own and not checked), newest first: a value that is still waiting for the
+    session when a newer one of the same control arrives is counted and dropped, so a fast drag, a
+    held arrow key or a flood queues no redraws behind the newest value (a control's state is its
+    last value). Arrivals are numbered on viser's event loop, in the order they came; the response
+    runs on a worker thread and reads the value under the session's lock."""
+    arrivals = itertools.count(1)
+    latest = 0
 
     @handle.on_update
-    def _(event: viser.GuiEvent) -> None:
-        if event.client is not None:
-            a.checked(lambda: respond(handle.value))
+    async def _(event: viser.GuiEvent) -> None:
+        nonlocal latest
+        if event.client is None:
+            return
+        latest = ticket = next(arrivals)
+        loop = asyncio.get_running_loop()
+        done = loop.run_in_executor(None, a.checked, lambda: respond(handle.value), lambda: ticket == latest)
+        done.add_done_callback(functools.partial(_report, loop))
+
+
+def _report(loop: asyncio.AbstractEventLoop, done: asyncio.Future[None]) -> None:
+    """A response that raised: to the event loop's exception handler (the server logs it in one line)."""
+    if not done.cancelled() and (exc := done.exception()) is not None:
+        loop.call_exception_handler({"message": "a control's value", "exception": exc})
 
 
 def guard_number(
@@ -313,6 +335,8 @@ class Controls:
     fit: viser.GuiCheckboxHandle
     reset_view: viser.GuiButtonHandle
     presenter: viser.GuiButtonHandle
+    dark: viser.GuiCheckboxHandle
+    """The dark projector theme (key T)."""
     readout: viser.GuiMarkdownHandle
     commands: tuple[tuple[Hotkey, viser.CommandHandle], ...]
     """The keyboard's and the clicker's commands (:mod:`.keys`)."""
@@ -377,6 +401,8 @@ class Controls:
         self.play.on_click(lambda _: a.perform(Action.TOGGLE_PLAY))
         self.reset_view.on_click(lambda _: a.perform(Action.RESET_VIEW))
         self.presenter.on_click(lambda _: a.perform(Action.TOGGLE_PRESENTER))
+        in_playback(self.dark, label="Dark theme", allowed="on or off", legal=on_or_off,
+                    current=lambda: self.dark.value, act=lambda v: a.set_shade("dark" if v else "light"))  # fmt: skip
         for hotkey, command in self.commands:
             command.on_trigger(lambda _, action=hotkey.action: a.perform(action))
         for layer, box in self.layers.items():
@@ -487,12 +513,13 @@ def scenario_html(text: str) -> str:
     )
 
 
-#: The caption band over the lanes. The panel is unmounted while it is minimized (presenter mode),
-#: so the band cannot live in it: this page script (run once, from an image that fails to load, as
-#: viser's HTML element runs no ``<script>``) adds the band above the app and moves the app below
-#: it, so the canvas shrinks and the server lays the page out again under the band. The server
-#: sends the band's content through the tab's localStorage (a message viser always delivers) under
-#: the session's own key; the script takes it from there and removes it.
+#: The caption band over the lanes, and the page's own style sheet (the dark theme's canvas). The
+#: panel is unmounted while it is minimized (presenter mode), so neither can live in it: this page
+#: script (run once, from an image that fails to load, as viser's HTML element runs no ``<script>``)
+#: adds the band above the app and moves the app below it, so the canvas shrinks and the server lays
+#: the page out again under the band, and keeps one ``<style>`` element in the page's head. The
+#: server sends the band's content and the style through the tab's localStorage (a message viser
+#: always delivers) under the session's own key; the script takes them from there and removes them.
 _CAPTION_JS = (
     "window.rigidrelCaptionKey = this.dataset.key; if (!window.rigidrelCaption) { window.rigidrelCaption = true; "
     "var band = document.createElement('div'); band.id = 'rigidrel-caption'; band.style.display = 'none'; "
@@ -501,8 +528,11 @@ _CAPTION_JS = (
     "root.style.position = 'fixed'; root.style.left = '0'; root.style.right = '0'; root.style.bottom = '0'; "
     "root.style.height = 'auto'; root.style.top = h + 'px'; }; new ResizeObserver(fit).observe(band); "
     "setInterval(function () { var v = localStorage.getItem(window.rigidrelCaptionKey); if (v === null) return; "
-    "localStorage.removeItem(window.rigidrelCaptionKey); var m = JSON.parse(v); band.innerHTML = m.html; "
-    "band.style.display = m.shown ? 'block' : 'none'; fit(); }, 150); }"
+    "localStorage.removeItem(window.rigidrelCaptionKey); var m = JSON.parse(v); "
+    "var sheet = document.getElementById('rigidrel-page-style'); "
+    "if (!sheet) { sheet = document.createElement('style'); sheet.id = 'rigidrel-page-style'; "
+    "document.head.appendChild(sheet); } sheet.textContent = m.style; "
+    "band.innerHTML = m.html; band.style.display = m.shown ? 'block' : 'none'; fit(); }, 150); }"
 )
 
 #: The band's looks: dark text on a pale band, 17 px (in presenter mode 22 px on a 1280x720 screen, 30 px on
@@ -531,9 +561,34 @@ def caption_installer(key: str) -> str:
     )
 
 
-def caption_message(band_html: str, shown: bool) -> str:
-    """What the server puts in the tab's localStorage for the band (read by :data:`_CAPTION_JS`)."""
-    return json.dumps({"html": CAPTION_CSS + band_html, "shown": shown})
+#: The band's looks in the dark theme: light text on a dark band, the rule the rods' light blue.
+CAPTION_DARK_CSS = "body #rigidrel-caption { background: #17150A; color: #F2F2F2; border-bottom-color: #4DBFFF; } "
+
+
+def page_style(shade: Shade) -> str:
+    """The page's own style sheet for a ``shade`` tab: none for light; for dark the canvas inverted
+    (:data:`~rigidrel_app.backends.viser.DARK_CANVAS_CSS`) and the caption band dark."""
+    return "" if shade == "light" else DARK_CANVAS_CSS + " " + CAPTION_DARK_CSS
+
+
+def caption_message(band_html: str, shown: bool, shade: Shade = "light") -> str:
+    """What the server puts in the tab's localStorage for the band and the page's style (read by
+    :data:`_CAPTION_JS`); ``band_html`` "" and ``shown`` False for a tab without a lesson."""
+    band = CAPTION_CSS + band_html if band_html else ""
+    return json.dumps({"html": band, "shown": shown, "style": page_style(shade)})
+
+
+#: The panel's look: viser's, in the app's blue, wide controls, no logo and no share button (it
+#: needs the internet).
+PANEL_LOOK: dict[str, Any] = {
+    "show_share_button": False, "show_logo": False, "control_width": "large", "brand_color": (0, 114, 178),
+}  # fmt: skip
+
+
+def configure_panel(gui: viser.GuiApi, shade: Shade) -> None:
+    """Give the panel its look for a ``shade`` tab (viser's dark mode for dark). viser resets every
+    setting a call leaves out, so every call gives them all (:data:`PANEL_LOOK`)."""
+    gui.configure_theme(dark_mode=shade == "dark", **PANEL_LOOK)
 
 
 @dataclass
@@ -596,10 +651,16 @@ def scene_titles() -> dict[str, str]:
 
 
 def build_controls(
-    gui: viser.GuiApi, settings: Settings, lesson: Lesson | None = None, follow: bool = False, caption_key: str = ""
+    gui: viser.GuiApi,
+    settings: Settings,
+    lesson: Lesson | None = None,
+    follow: bool = False,
+    caption_key: str = "",
+    shade: Shade = "light",
 ) -> Controls:
     """The control panel (right) of one tab, and its hotkeys (the lanes and the diagrams are drawn
-    on the canvas). With a ``lesson``: its folder first, the lesson's keys, the caption band."""
+    on the canvas). With a ``lesson``: its folder first, the lesson's keys, the caption band. The
+    page script that keeps the band and the page's style (:data:`_CAPTION_JS`) is in every tab."""
     notices: dict[Place, viser.GuiMarkdownHandle] = {}
     lesson_controls = None
     if lesson is not None:
@@ -658,6 +719,9 @@ def build_controls(
             "Presenter mode", icon=viser.Icon.PRESENTATION, color="gray",
             hint="Hide this panel; larger text and thicker lines for a projector. F again brings it back (F)",
         )  # fmt: skip
+        dark = gui.add_checkbox(
+            "Dark theme", shade == "dark", hint="Light on black for a projector, the panel dark too (T)"
+        )
         gui.add_markdown(f"<small>{key_line(table)}</small>")
     with gui.add_folder("Layers", order=3.5):
         layers = {
@@ -677,14 +741,14 @@ def build_controls(
         scenario_load = gui.add_button("Load scenario", icon=viser.Icon.UPLOAD, color="gray")
         notices["scenario"] = gui.add_markdown("", visible=False)
     readout = gui.add_markdown("", order=4.0)
-    band = caption_installer(caption_key) if lesson is not None else ""
+    band = caption_installer(caption_key)
     gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS + band, order=5.0)
     gui.main_panel.dock_right()
     gui.main_panel.set_width(CONTROL_PX)
     commands = tuple((h, gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}")) for h in table)
     controls = Controls(
         preset, scene, params, overlay, notices, frame, beta, ride_rod, ride_point, play, time, speed, loop, fit,
-        reset_view, presenter, readout, commands, layers, cone, scenario_shown, scenario_box, scenario_load,
+        reset_view, presenter, dark, readout, commands, layers, cone, scenario_shown, scenario_box, scenario_load,
         lesson_controls, locks,
         lock_css=gui.add_html("", order=5.1) if lesson is not None else None,
     )  # fmt: skip

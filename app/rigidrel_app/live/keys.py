@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 #: The keys used here, as viser names them (a subset of its ``HotkeyKey``).
-Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "C", "L"]
+Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "T", "C", "L"]
 
 
 class Action(enum.Enum):
@@ -30,6 +30,7 @@ class Action(enum.Enum):
     NEXT_FIGURE = "next figure"
     RESET_VIEW = "reset view"
     TOGGLE_PRESENTER = "presenter mode"
+    TOGGLE_THEME = "dark theme"
     PREVIOUS_STEP = "previous step"
     NEXT_STEP = "next step"
     TOGGLE_CAPTION = "caption"
@@ -56,6 +57,7 @@ HOTKEYS: tuple[Hotkey, ...] = (
     Hotkey("pagedown", Action.NEXT_FIGURE, "Next paper figure of this scene", "PgDn", "figure"),
     Hotkey("R", Action.RESET_VIEW, "Reset view", "R", "reset"),
     Hotkey("F", Action.TOGGLE_PRESENTER, "Presenter mode (panel hidden, larger text) on / off", "F", "presenter"),
+    Hotkey("T", Action.TOGGLE_THEME, "Dark projector theme (light on black) on / off", "T", "theme"),
 )
 
 #: A lesson's keys: the clicker and the arrows move between steps (no frame stepping, no figures).
@@ -68,6 +70,7 @@ LESSON_HOTKEYS: tuple[Hotkey, ...] = (
     Hotkey("pagedown", Action.NEXT_STEP, "Next step of the lesson (clicker)", "PgDn", "step"),
     _SHARED[Action.RESET_VIEW],
     _SHARED[Action.TOGGLE_PRESENTER],
+    _SHARED[Action.TOGGLE_THEME],
     Hotkey("C", Action.TOGGLE_CAPTION, "Caption over the lanes hidden / shown", "C", "caption"),
     Hotkey("L", Action.LEAD, "Lead: with --follow, every other tab follows this tab's step", "L", "lead"),
 )

@@ -21,6 +21,8 @@ from viser.infra import WebsockClientConnection
 
 from ..lessons import Lesson
 from ..view.state import Settings
+from ..view.vocabulary import Shade
+from .controls import configure_panel
 from .greeting import greet
 from .playback import FRAME_RATE
 from .session import Session
@@ -147,13 +149,15 @@ class App:
         budget: MessageBudget | None = None,
         lesson: Lesson | None = None,
         follow: bool = False,
+        shade: Shade = "light",
     ) -> None:
         """``start``: the settings every new tab opens on (default: the first scene's defaults);
         ``budget``: how many messages a tab may send before it is dropped; ``lesson``: every tab gives
         it, from step 1 (``start`` is then not used); ``follow``: every tab follows the leading tab's
         step (the first tab to connect leads, or the last to press L; a tab that joins opens on the
-        leader's step)."""
+        leader's step); ``shade``: the theme every new tab opens in (each tab's key T changes its own)."""
         limit_heap_growth()
+        self.shade: Shade = shade
         self.lesson = lesson
         self.follow = follow and lesson is not None
         self.leader: int | None = None
@@ -176,9 +180,7 @@ class App:
         # delivered, which is exactly right and not worth a warning
         warnings.filterwarnings("ignore", message=r"Queued a \w+ on a closed connection")
         self.server = viser.ViserServer(host=host, port=port, label="rigidrel", verbose=False)
-        self.server.gui.configure_theme(
-            show_share_button=False, show_logo=False, control_width="large", brand_color=(0, 114, 178)
-        )
+        configure_panel(self.server.gui, shade)
         loop = self.server.get_event_loop()
         loop.call_soon_threadsafe(loop.set_exception_handler, self._loop_exception)
         self.sessions: dict[int, Session] = {}
@@ -246,7 +248,7 @@ class App:
         try:
             with self._lock:
                 first = self.leader_step if self.follow else 0
-            session = Session(client, self.start, self.lesson, self.follow, self, first)
+            session = Session(client, self.start, self.lesson, self.follow, self, first, self.shade)
         finally:
             with self._lock:
                 gone = client.client_id in self._departed
@@ -355,6 +357,7 @@ def serve(
     start: Settings | None = None,
     lesson: Lesson | None = None,
     follow: bool = False,
+    shade: Shade = "light",
 ) -> int:
     """Run until Ctrl-C or SIGTERM; print the URL the server really got."""
     done = threading.Event()
@@ -366,7 +369,7 @@ def serve(
     # shell inherits SIGINT as *ignored*, and Python then raises no KeyboardInterrupt.
     signal.signal(signal.SIGINT, _terminate)
     signal.signal(signal.SIGTERM, _terminate)
-    with App(host, port, start=start, lesson=lesson, follow=follow) as app:
+    with App(host, port, start=start, lesson=lesson, follow=follow, shade=shade) as app:
         if lesson is not None:
             followed = ", every tab following the leading one (key L leads)" if app.follow else ""
             print(f"rigidrel: lesson {lesson.title!r}, {len(lesson.steps)} steps{followed}", flush=True)

@@ -40,9 +40,17 @@ from ..view.state import (
     scene_presets,
 )
 from ..view.state import resolve as resolve_settings
-from ..view.vocabulary import markdown_literal
+from ..view.vocabulary import Shade, markdown_literal, shaded
 from .canvas_report import add_canvas_report, decode
-from .controls import NO_CONE, Place, build_controls, caption_message, notice_place, time_entry
+from .controls import (
+    NO_CONE,
+    Place,
+    build_controls,
+    caption_message,
+    configure_panel,
+    notice_place,
+    time_entry,
+)
 from .keys import Action
 from .playback import Playback
 
@@ -83,10 +91,14 @@ class Session:
         follow: bool = False,
         hooks: LessonHooks | None = None,
         first_step: int = 0,
+        shade: Shade = "light",
     ) -> None:
         """``lesson``: the tab gives it, opening on ``first_step`` (from 0); ``follow``: ``--follow``
-        (the Lesson folder says who leads); ``hooks``: where step changes and key L are reported."""
+        (the Lesson folder says who leads); ``hooks``: where step changes and key L are reported;
+        ``shade``: the theme the tab opens in (key T changes it)."""
         self.client = client
+        self.shade: Shade = shade
+        """The tab's theme: light, or the dark projector theme (key T)."""
         self.lesson = lesson
         self.hooks = hooks
         self.step_index = 0
@@ -109,6 +121,7 @@ class Session:
         self.settings = settings or Settings()
         self.notice = ""
         """The notice on screen ("" for none): why the last value was refused."""
+        self._notice_place: Place = "scene"
         self.closed = False
         self.messages_handled = 0
         """Control values a client sent that the session has checked and acted on or refused (in any order)."""
@@ -132,7 +145,9 @@ class Session:
             resolved = resolve_settings(self.settings)
             assert isinstance(resolved, Resolved)
         with client.atomic():
-            self.controls = build_controls(client.gui, self.settings, lesson, follow, self.caption_key)
+            self.controls = build_controls(client.gui, self.settings, lesson, follow, self.caption_key, shade)
+            if shade != "light":
+                configure_panel(client.gui, shade)
             self.canvas_report = add_canvas_report(client.gui)
             self.renderer = PageRenderer(client.scene)
             self.playback = Playback.start((-1.0, 1.0))
@@ -142,6 +157,8 @@ class Session:
             else:
                 self._apply(resolved, refit=True)
                 self._set_notice(self.notice, "scene")
+                if shade != "light":
+                    self._send_caption()
 
     # ------------------------------------------------------------------ wiring
     def _wire(self) -> None:
@@ -176,7 +193,7 @@ class Session:
 
     def _canvas_layout(self, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
         """The page for this tab's canvas size and mode."""
-        theme = PRESENTER if self.presenter else NORMAL
+        theme = replace(PRESENTER if self.presenter else NORMAL, shade=self.shade)
         return canvas_layout(self.canvas_size.width, self.canvas_size.height, theme, legend_rows)
 
     # ------------------------------------------------------------------ state
@@ -254,6 +271,8 @@ class Session:
                 self.fit_camera()
             elif action is Action.TOGGLE_PRESENTER:
                 self.set_presenter(not self.presenter)
+            elif action is Action.TOGGLE_THEME:
+                self.set_shade("light" if self.shade == "dark" else "dark")
             elif action in (Action.PREVIOUS_STEP, Action.NEXT_STEP):
                 if self.lesson is not None:  # past either end nothing happens (the step is not reset)
                     index = clamp_step(self.lesson, self.step_index + (-1 if action is Action.PREVIOUS_STEP else 1))
@@ -281,6 +300,22 @@ class Session:
                 panel.expand()
             if self.drawn is not None:
                 self._apply(self.drawn.resolved, refit=True)
+            self._send_caption()
+
+    def set_shade(self, shade: Shade) -> None:
+        """The tab's theme: the dark projector theme (light ink on black: the canvas inverted by the
+        page's style, every colour sent for it, the panel in viser's dark mode) or the light one.
+        The page is drawn again as it is (the camera stays)."""
+        with self.lock, self.client.atomic():
+            if shade == self.shade:
+                return
+            self.shade = shade
+            if self.controls.dark.value != (shade == "dark"):
+                self.controls.dark.value = shade == "dark"
+            configure_panel(self.client.gui, shade)
+            self._set_notice(self.notice, self._notice_place)
+            if self.drawn is not None:
+                self._apply(self.drawn.resolved, refit=False)
             self._send_caption()
 
     # ------------------------------------------------------------------ a lesson
@@ -341,13 +376,15 @@ class Session:
                 self.controls.lesson.status.content = text
 
     def _send_caption(self) -> None:
-        """The caption band over the lanes, through the tab's localStorage (the panel may be folded away)."""
+        """The caption band over the lanes and the page's style (the theme), through the tab's
+        localStorage (the panel may be folded away)."""
         if self.lesson is None:
+            self.client.local_storage.set_item(self.caption_key, caption_message("", False, self.shade))
             return
         step = self.lesson.steps[self.step_index]
         self.caption_off_step = self.settings.scene != step.scenario.settings.scene
         band = caption_html(step, self.presenter, self.caption_off_step)
-        self.client.local_storage.set_item(self.caption_key, caption_message(band, self.caption_shown))
+        self.client.local_storage.set_item(self.caption_key, caption_message(band, self.caption_shown, self.shade))
 
     # ------------------------------------------------------------------ scenario box and layers
     def load_scenario(self, text: str) -> None:
@@ -384,15 +421,16 @@ class Session:
             layers = self.settings.layers | {layer} if on else self.settings.layers - {layer}
             self.change(self.settings.with_layers(frozenset(layers)), refit=False)
 
-    def checked(self, respond: Callable[[], None]) -> None:
+    def checked(self, respond: Callable[[], None], newest: Callable[[], bool] = lambda: True) -> None:
         """Respond to one value a client sent, under the lock, and count it whatever happened; then
         send the answer at once (viser would hold it for the rest of its 1/60 s send window).
 
         A session the server has let go (``closed``: the tab left, or was dropped for flooding)
-        counts the value and does nothing more."""
+        counts the value and does nothing more; so does a value that ``newest`` says a newer one of
+        its control has overtaken while it waited for the lock."""
         with self.lock:
             try:
-                if not self.closed:
+                if not self.closed and newest():
                     with self.client.atomic():
                         respond()
             finally:
@@ -413,8 +451,8 @@ class Session:
     def _set_notice(self, text: str, place: Place = "scene") -> None:
         """Show ``text`` as the one notice, in the folder ``place`` (it replaces any older one, wherever
         that was); "" clears it."""
-        self.notice = text
-        content = f'<span style="color: {NOTICE_COLOR}"><b>⚠ {markdown_literal(text)}</b></span>'
+        self.notice, self._notice_place = text, place
+        content = f'<span style="color: {shaded(NOTICE_COLOR, self.shade)}"><b>⚠ {markdown_literal(text)}</b></span>'
         for where, handle in self.controls.notices.items():
             shown = bool(text) and where == place
             if shown and handle.content != content:

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from .vocabulary import INK
+from .vocabulary import INK, Shade
 
 ThemeName = Literal["normal", "presenter"]
 
@@ -31,6 +31,9 @@ class Theme:
     ink: str = INK
     grid: str = "#E4E4E4"
     """Faint grid lines of the diagrams."""
+    shade: Shade = "light"
+    """The ground: every colour above and in the pictures is a light-ground colour; a backend drawing on
+    a dark ground shows each as :func:`~rigidrel_app.view.vocabulary.lightness_flipped` of itself."""
 
     @property
     def line_scale(self) -> float:

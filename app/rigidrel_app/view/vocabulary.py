@@ -18,6 +18,9 @@ import numpy.typing as npt
 
 FloatArray = npt.NDArray[np.float64]
 Dash = Literal["solid", "dash", "dot", "dashdot"]
+Shade = Literal["light", "dark"]
+"""The canvas' ground: light (dark ink on white, for a desk) or dark (light ink on black, the projector
+theme for a hall)."""
 Anchor = Literal["left", "right", "center"]
 
 # palette (colour-blind safe: blue / orange / purple, Okabe-Ito)
@@ -34,6 +37,25 @@ def rgb(color: str) -> tuple[int, int, int]:
     """``"#RRGGBB"`` -> ``(r, g, b)``."""
     c = color.lstrip("#")
     return int(c[0:2], 16), int(c[2:4], 16), int(c[4:6], 16)
+
+
+def lightness_flipped(colors: npt.ArrayLike) -> npt.NDArray[np.uint8]:
+    """The dark theme's colour of each light-theme sRGB colour ``(..., 3)``: the same hue and HSL
+    saturation at HSL lightness ``1 - L``, which is ``c + 255 - max(c) - min(c)`` per channel (exact in
+    integers). White and black swap, the ink ``#222222`` becomes ``#DDDDDD``, the rods' blue
+    ``#0072B2`` becomes ``#4DBFFF``; a colour mixed toward white (a faint fill) comes out mixed toward
+    black, so the dark page keeps every contrast of the light one."""
+    c = np.asarray(colors, dtype=np.int16)
+    shift = 255 - c.max(axis=-1, keepdims=True) - c.min(axis=-1, keepdims=True)
+    return (c + shift).astype(np.uint8)
+
+
+def shaded(color: str, shade: Shade) -> str:
+    """``color`` (``"#RRGGBB"``) as drawn on a ``shade`` ground (:func:`lightness_flipped` on dark)."""
+    if shade == "light":
+        return color
+    r, g, b = (int(v) for v in lightness_flipped(rgb(color)))
+    return f"#{r:02X}{g:02X}{b:02X}"
 
 
 def rgba(color: str, alpha: float) -> str:
