@@ -31,7 +31,18 @@ from rigidrel_app.view.canvas import (
 )
 from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from rigidrel_app.view.lanes import ROD_SHARE, TICK_FRACTIONS, lane_geometry, lane_state
-from rigidrel_app.view.layout import NORMAL, PRESENTER, Rect, canvas_layout
+from rigidrel_app.view.layout import (
+    LEGEND_ROWS,
+    MIN_PLOT_PX,
+    MIN_TEXT_PX,
+    NORMAL,
+    PRESENTER,
+    Rect,
+    _canvas_layout,  # pyright: ignore[reportPrivateUsage]
+    canvas_layout,
+    lane_title_text,
+    text_width,
+)
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
 from rigidrel_app.view.scene_view import (
     CLOCK_RULE,
@@ -452,6 +463,41 @@ def test_the_canvas_layout_keeps_text_large_and_regions_apart() -> None:
         for a, b in zip(layout.charts, layout.charts[1:]):
             assert a.outer.x1 < b.outer.x0
         assert all(c.plot.width > 150 and c.plot.height > 120 for c in layout.charts), (w, h, theme.name)
+
+
+@pytest.mark.parametrize(("w", "h"), [(1280, 624), (1280, 594), (1280, 560), (936, 590)])
+def test_a_short_canvas_puts_lane_titles_on_one_line_then_steps_the_text_down(w: int, h: int) -> None:
+    """Under a lesson's caption at 1280x720 the diagrams still get MIN_PLOT_PX of height: the lanes'
+    titles take one line first, then the text takes the desk sizes (never under MIN_TEXT_PX)."""
+    for theme in (NORMAL, PRESENTER):
+        full = _canvas_layout(w, h, theme, LEGEND_ROWS, 2)
+        layout = canvas_layout(w, h, theme)
+        if full.charts[0].plot.height >= MIN_PLOT_PX:
+            assert layout == full
+            continue
+        assert layout.charts[0].plot.height >= MIN_PLOT_PX, (w, h, theme.name)
+        assert all(lane.title_lines == 1 for lane in layout.lanes)
+        assert layout.theme.text_px >= MIN_TEXT_PX and layout.theme.line_px == theme.line_px
+        assert layout.theme.name == theme.name and layout.theme.shade == theme.shade
+        lab, frame = layout.lanes
+        assert lab.band.z0 > frame.band.z1 and frame.band.z0 > max(c.outer.z1 for c in layout.charts)
+        for lane in layout.lanes:  # one title line above the dials
+            assert lane.title_z - 1.2 * layout.theme.title_px > lane.dial_z[1] + lane.clock_px
+
+
+def test_a_one_line_title_shrinks_to_fit_its_lane_and_never_under_the_smallest_text() -> None:
+    layout = canvas_layout(1280, 560, PRESENTER)
+    lane = layout.lanes[0]
+    assert lane.title_lines == 1
+    short = "lab frame:   t = +0.150\nclocks τ (left | right end)   rod: +0.843 | +0.146"
+    text, px = lane_title_text(short, lane, 16.0)
+    assert "\n" not in text and px == 16.0
+    long = "riding: comoving with rod 2 at f = 0.35:   its clock τ = +0.795\n" + "clocks τ " + "x" * 60
+    text, px = lane_title_text(long, lane, 16.0)
+    assert "\n" not in text and MIN_TEXT_PX <= px < 16.0 and text_width(text, px) <= lane.band.width + 1e-6
+    text, px = lane_title_text(long + "y" * 200, lane, 16.0)
+    assert "\n" in text and px == 16.0  # too long even at the smallest size: two lines
+    assert lane_title_text(short, canvas_layout(1920, 1080, PRESENTER).lanes[0], 21.0) == (short, 21.0)
 
 
 @pytest.mark.parametrize("settings", ALL_SETTINGS, ids=scene_id)

@@ -169,7 +169,7 @@ def test_keyboard_walk_through_the_paper_lesson(open_tab: OpenTab, lesson_app: A
     tab.press("PageDown")
     tab.wait_caption(PAPER.steps[4].title)
     assert tab.page.locator("#rigidrel-caption .rr-caption-presenter").count() == 1
-    assert tab.caption_px() >= 20  # read from the back of a hall, on a 1280x720 projector
+    assert tab.caption_px() >= 18  # read from the back of a hall, on a 1280x720 projector (the canvas text: 15-21)
     tab.screenshot(shots / "presenter-step-5-1280.png")
     tab.press("c")  # the caption band folds away, and back
     wait_until(lambda: tab.caption() == "", timeout=30)

@@ -28,7 +28,7 @@ import viser
 from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
 from ..view.lanes import Box, LanePicture, LaneState, ruler_text, segments_array
-from ..view.layout import CanvasLayout
+from ..view.layout import CanvasLayout, lane_title_text
 from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, plain_text, rgb
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
@@ -580,7 +580,7 @@ class PageRenderer:
         self._update_dials(np.concatenate([lane.dials for lane in lanes]), layout.lanes[0].clock_px, theme.shade)
         self.titles.show(
             [
-                PageText(p.band.x0, p.title_z, lane.title, theme.title_px, "top-left")
+                PageText(p.band.x0, p.title_z, *lane_title_text(lane.title, p, theme.title_px), "top-left")
                 for p, lane in zip(layout.lanes, lanes)
             ]
         )

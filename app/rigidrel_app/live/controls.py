@@ -535,14 +535,14 @@ _CAPTION_JS = (
     "band.innerHTML = m.html; band.style.display = m.shown ? 'block' : 'none'; fit(); }, 150); }"
 )
 
-#: The band's looks: dark text on a pale band, 17 px (in presenter mode 22 px on a 1280x720 screen, 30 px on
+#: The band's looks: dark text on a pale band, 17 px (in presenter mode 19 px on a 1280x720 screen, 28 px on
 #: 1920x1080), a blue rule below.
 CAPTION_CSS = (
     "<style>#rigidrel-caption { position: fixed; top: 0; left: 0; right: 0; z-index: 150; background: #FFFCEB; "
     "border-bottom: 3px solid #0072B2; padding: 6px 16px 2px; max-height: 45vh; overflow: auto; "
     "font-family: sans-serif; color: #111; } #rigidrel-caption h2 { margin: 0 0 4px; } "
     "#rigidrel-caption p { margin: 0 0 6px; } .rr-caption-normal { font-size: 17px; line-height: 1.35; } "
-    ".rr-caption-normal h2 { font-size: 20px; } .rr-caption-presenter { font-size: clamp(20px, 1.6vh + 0.8vw, 30px); "
+    ".rr-caption-normal h2 { font-size: 20px; } .rr-caption-presenter { font-size: clamp(18px, 1.3vh + 0.75vw, 30px); "
     "line-height: 1.3; } .rr-caption-presenter h2 { font-size: 1.15em; }</style>"
 )
 

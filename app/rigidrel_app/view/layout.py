@@ -9,7 +9,7 @@ arithmetic, no drawing library.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 from .vocabulary import INK, Shade
@@ -96,6 +96,9 @@ class LaneLayout:
     ruler_z: float
     """The ruler's line; its ticks hang below, their numbers below those."""
     tick_px: float
+    title_lines: int = 2
+    """The title block's lines: 2 (the frame and its time, then the clock readings) or, on a short
+    canvas, 1 (both on one line, :func:`lane_title_text`)."""
 
 
 @dataclass(frozen=True)
@@ -130,10 +133,34 @@ LEGEND_ROWS = 2
 LEGEND_ROW_EM = 1.45
 
 
-def lane_height(theme: Theme) -> float:
-    """One lane's height: title (two lines), two dial rows, the rod, the ruler and its numbers."""
+def title_block(theme: Theme, lines: int = 2) -> float:
+    """Height of a lane's title block of ``lines`` lines."""
+    return (1.25 * lines) * theme.title_px
+
+
+def lane_height(theme: Theme, title_lines: int = 2) -> float:
+    """One lane's height: title (``title_lines`` lines), two dial rows, the rod, the ruler and its numbers."""
     r = clock_radius(theme)
-    return 2.5 * theme.title_px + 4.0 + 5.0 * r + rod_height(theme) + 6.0 + 1.8 * theme.text_px + 4.0
+    return title_block(theme, title_lines) + 4.0 + 5.0 * r + rod_height(theme) + 6.0 + 1.8 * theme.text_px + 4.0
+
+
+#: The smallest text anywhere on the canvas (CSS px): what a hall reads from the back at 1280x720.
+MIN_TEXT_PX = 14.0
+#: The Minkowski diagrams' plot areas get at least this height (CSS px) when the canvas allows: on a
+#: short canvas (a projector's 1280x720 under a lesson's caption) the lanes' titles go on one line,
+#: then the text steps down to the desk theme's sizes (:func:`canvas_layout`).
+MIN_PLOT_PX = 150.0
+
+
+def lane_title_text(title: str, layout: LaneLayout, px: float) -> tuple[str, float]:
+    """A lane's title (two lines: the frame and its time, the clock readings) as ``layout`` has room
+    for, and its text size: on one line where the layout asks for one, at ``px`` or smaller down to
+    :data:`MIN_TEXT_PX` so that it fits the lane's width; two lines if even that does not fit."""
+    if layout.title_lines == 2 or "\n" not in title:
+        return title, px
+    one = "     ".join(title.split("\n"))
+    fit = px * layout.band.width / max(text_width(one, px), 1.0)
+    return (one, min(px, fit)) if fit >= MIN_TEXT_PX else (title, px)
 
 
 def clock_radius(theme: Theme) -> float:
@@ -189,9 +216,23 @@ class CanvasSize:
 
 
 def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
-    """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at the bottom."""
+    """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at
+    the bottom. On a canvas too short for the diagrams' plots to get :data:`MIN_PLOT_PX`, the lanes'
+    titles go on one line, and if that is not enough the text takes the desk theme's sizes (never
+    under :data:`MIN_TEXT_PX`; the lines keep their width): the first of these that gives the plots
+    their height, else the last."""
+    smaller = replace(theme, text_px=min(theme.text_px, NORMAL.text_px), title_px=min(theme.title_px, NORMAL.title_px))
+    layout = _canvas_layout(width, height, theme, legend_rows, 2)
+    for t, lines in ((theme, 1), (smaller, 1)):
+        if layout.charts[0].plot.height >= MIN_PLOT_PX:
+            break
+        layout = _canvas_layout(width, height, t, legend_rows, lines)
+    return layout
+
+
+def _canvas_layout(width: float, height: float, theme: Theme, legend_rows: int, title_lines: int) -> CanvasLayout:
     w, h = max(width, 320.0), max(height, 240.0)
-    lane_h = lane_height(theme)
+    lane_h = lane_height(theme, title_lines)
     lanes: list[LaneLayout] = []
     top = h - MARGIN
     gutter = text_width("x′", theme.title_px) + 12.0
@@ -200,7 +241,7 @@ def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_row
         r = clock_radius(theme)
         title_z = band.z1
         # the dial rows as :class:`~.lanes.LaneGeometry` puts them: 1.6 r above the rod, 2.4 r apart
-        dial_hi = title_z - 2.5 * theme.title_px - 4.0 - r
+        dial_hi = title_z - title_block(theme, title_lines) - 4.0 - r
         dial_lo = dial_hi - 2.4 * r
         rod_px = rod_height(theme)
         rod_z = dial_lo - 1.6 * r - 0.5 * rod_px
@@ -217,6 +258,7 @@ def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_row
                 wall_px=(dial_hi + r) - (rod_z - 0.5 * rod_px),
                 ruler_z=ruler_z,
                 tick_px=0.4 * theme.text_px,
+                title_lines=title_lines,
             )
         )
         top = band.z0 - 4.0
