@@ -110,10 +110,11 @@ def app_screenshots(normal: Path, presenter: Path, scenes: Path) -> None:
 
 
 def _scene_gallery(tab: _Tab, scenes: Path, kinds: Sequence[str]) -> None:
-    """``scenes/<kind>.png`` and ``scenes/<kind>-presenter.png``: each of ``kinds`` at its defaults."""
-    for kind in kinds:
-        for on in (False, True):
-            tab.presenter(on)
+    """``scenes/<kind>.png`` and ``scenes/<kind>-presenter.png``: each of ``kinds`` at its defaults
+    (all in one mode, then all in the other: the panel is docked back only once)."""
+    for on in (False, True):
+        tab.presenter(on)
+        for kind in kinds:
             tab.show(Settings(kind))
             tab.photograph(scenes / f"{kind}{'-presenter' if on else ''}.png")
 

@@ -256,7 +256,7 @@ def string_picture(scene: rr.BellScene, frame: rr.Frame, now: float, x: FloatArr
     else:
         boxes = (Box(x0, x1, height, color, z),)
         scale = "breaks" if scene.breaking_strain is not None else "its final"
-        text = f"string strain {100.0 * strain:.1f} % (light → dark: 0 → {percent}, {scale})"
+        text = f"string strain {100.0 * strain:.1f} % (faint → strong: 0 → {percent}, {scale})"
     return StringPicture(boxes, strain, broken, color, text)
 
 

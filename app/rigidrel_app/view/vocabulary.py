@@ -189,7 +189,8 @@ def markdown_literal(text: str) -> str:
 
 #: A string's strain, unstretched to breaking: stops of matplotlib's "magma" map from 0.8 down to 0.2
 #: (light peach to dark violet). Its lightness falls monotonically, so the order reads in every kind of
-#: colour vision and in grey; none of its stops is a rod's colour.
+#: colour vision and in grey; none of its stops is a rod's colour. The words for it are "faint → strong",
+#: true on a light ground and on a dark one, which shows every colour at the opposite lightness.
 STRAIN_RAMP = ("#FE9F6D", "#F7705C", "#DE4968", "#B73779", "#8C2981", "#641A80", "#3B0F70")
 
 
