@@ -244,11 +244,11 @@ def string_picture(scene: rr.BellScene, frame: rr.Frame, now: float, x: FloatArr
     x1 = float(x[front_rod, -1 if front_f == 1.0 else 0])
     strain = float(scene.string_strains([now], frame)[0])
     broken = bool(scene.string_broken([now], frame)[0])
-    top = scene.breaking_strain if scene.breaking_strain is not None else scene.final_strain
-    color = ramp_color(1.0 if broken else (strain / top if top > 0 else 0.0), STRAIN_RAMP)
+    full_scale = scene.breaking_strain if scene.breaking_strain is not None else scene.final_strain
+    color = ramp_color(1.0 if broken else (strain / full_scale if full_scale > 0 else 0.0), STRAIN_RAMP)
     centre, share = bar_rows(scene.rod_groups)[scene.rod_groups[rear_rod]]
     z, height = centre * geo.rod_height, STRING_THICKNESS * share * geo.rod_height
-    percent = f"{100.0 * top:.3g} %"
+    percent = f"{100.0 * full_scale:.3g} %"
     if broken:
         loose = LOOSE_END_SHARE * (x1 - x0)
         boxes = (Box(x0, x0 + loose, height, color, z), Box(x1 - loose, x1, height, color, z))
