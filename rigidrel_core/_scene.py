@@ -289,6 +289,14 @@ class Scene:
         del frame
         return ()
 
+    @property
+    def rod_groups(self) -> tuple[int, ...]:
+        """Which rods share one world, per rod (``0, 1, ...``): rods of different groups never meet,
+        because they are alternatives (two models of one body) or a comparison (a body beside others
+        it does not touch, occupying the same place); a picture draws each group apart. All ``0``
+        unless a scene says otherwise."""
+        return (0,) * len(self.rods)
+
     # ------------------------------------------------------------------- budget
     def budget(self, frame: Frame = LAB) -> FourMomentumBudget:
         """Energy and momentum of every rod before and after, in ``frame`` (c = 1)."""

@@ -14,6 +14,7 @@ and assets/lesson-step.png (a step of the built-in lesson given live, in present
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
@@ -104,11 +105,30 @@ def app_screenshots(normal: Path, presenter: Path, scenes: Path) -> None:
         tab.photograph(normal)
         tab.presenter(True)
         tab.photograph(presenter)
-        for kind in rr.scene_descriptions():
-            for on in (False, True):
-                tab.presenter(on)
-                tab.show(Settings(kind))
-                tab.photograph(scenes / f"{kind}{'-presenter' if on else ''}.png")
+        _scene_gallery(tab, scenes, list(rr.scene_descriptions()))
+        browser.close()
+
+
+def _scene_gallery(tab: _Tab, scenes: Path, kinds: Sequence[str]) -> None:
+    """``scenes/<kind>.png`` and ``scenes/<kind>-presenter.png``: each of ``kinds`` at its defaults
+    (all in one mode, then all in the other: the panel is docked back only once)."""
+    for on in (False, True):
+        tab.presenter(on)
+        for kind in kinds:
+            tab.show(Settings(kind))
+            tab.photograph(scenes / f"{kind}{'-presenter' if on else ''}.png")
+
+
+def scene_screenshots(scenes: Path, kinds: Sequence[str]) -> None:
+    """Only the gallery pictures of ``kinds`` (as :func:`app_screenshots` makes them), e.g. after a
+    change to how those scenes are drawn:
+    ``scene_screenshots(ASSETS / "scenes", ["bell-spaceships", "pole-barn"])``."""
+    from playwright.sync_api import sync_playwright
+
+    scenes.mkdir(parents=True, exist_ok=True)
+    with App(port=0) as app, sync_playwright() as p:
+        browser = launch_chromium(p)
+        _scene_gallery(_Tab(app, browser), scenes, kinds)
         browser.close()
 
 

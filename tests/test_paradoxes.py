@@ -164,6 +164,35 @@ def test_bell_string_against_the_50_digit_reference(case: dict[str, Any]) -> Non
         assert scene.string_break is None
 
 
+@pytest.mark.parametrize("case", reference_cases("bell-spaceships"), ids=lambda c: str(c["params"]))
+@pytest.mark.parametrize("frame_name", ["lab", "ships after"])
+def test_bell_string_is_broken_from_the_reference_break_event_on(case: dict[str, Any], frame_name: str) -> None:
+    """``string_broken`` flips at the 50-digit reference's break event, boosted into each frame (a
+    hair before it: intact; a hair after: broken); never, where the reference has no break."""
+    params: dict[str, Any] = {k: None if v is None else float.fromhex(v) for k, v in case["params"].items()}
+    scene = rr.bell_spaceships(**params)
+    frame = scene.frame(frame_name)
+    t0, t1 = scene.time_window(frame)
+    extra = {k: float(v) for k, v in case["extra"].items()}
+    if "break_t" not in extra:
+        assert not scene.string_broken(np.linspace(t0, t1 + 10.0, 50), frame).any()
+        return
+    t_break = float((frame @ np.array([extra["break_t"], extra["break_x"]]))[0])
+    hair = 1e-9 * (t1 - t0)
+    broken = scene.string_broken([t0, t_break - hair, t_break + hair, t1], frame)
+    assert broken.tolist() == [False, False, True, True]
+    assert scene.string_strains([t_break + hair], frame)[0] >= scene.breaking_strain
+
+
+def test_rod_groups_part_the_alternatives_and_the_comparison_rod() -> None:
+    """The ships share a group and the Born-rigid comparison rod has its own; the pole-barn's two models
+    are two groups (one with a single model); every other scene's rods share one."""
+    assert rr.bell_spaceships(0.6, 1.0, 0.5).rod_groups == (0, 0, 1)
+    assert rr.pole_barn(0.8, 1.0, 0.6, model="both").rod_groups == (0, 1)
+    assert rr.pole_barn(0.8, 1.0, 0.6, model="signal").rod_groups == (0,)
+    assert rr.build_scene("rod-collision").rod_groups == (0, 0)
+
+
 def test_bell_events_command_prints_the_string(capsys: pytest.CaptureFixture[str]) -> None:
     from rigidrel_app.cli import main
 

@@ -193,6 +193,30 @@ class BellScene(Scene):
         big_r = r + ship
         return (big_r * math.sinh(theta), -r + big_r * math.cosh(theta))
 
+    @property
+    def rod_groups(self) -> tuple[int, ...]:
+        """The ships (and their string) in group 0; the Born-rigid comparison rod, which spans the same
+        two rear ends and touches neither ship, in group 1."""
+        return (0, 0, 1)
+
+    @property
+    def string_ends(self) -> tuple[tuple[int, float], tuple[int, float]]:
+        """The material points the string joins, as ``(rod, fraction)``: its rear end the rear ship's
+        front end ``(0, 1.0)``, its front end the front ship's rear end ``(1, 0.0)``."""
+        return ((REAR_SHIP, 1.0), (FRONT_SHIP, 0.0))
+
+    def string_broken(self, t: npt.ArrayLike, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
+        """Whether the string has broken when its rear end is at frame time ``t'``: ``t' >= t'_b``,
+        ``t'_b`` the frame time of the break event :meth:`string_break_in` (its rear end, where the
+        strain reaches the breaking strain; the strain grows along that end's worldline, so this is
+        the same as ``strain(t') >= e_b``); all ``False`` if it never breaks. Shape of ``t``."""
+        frame = check_frame(frame)
+        tt = check_times("t", t)
+        event = self.string_break_in(frame)
+        if event is None:
+            return np.zeros(tt.shape, dtype=np.bool_)
+        return tt >= event[0]
+
     def notes(self, frame: Frame = LAB) -> tuple[str, ...]:
         """The string's story and the rear ends' distance in the ships' frame after, in words."""
         frame = check_frame(frame)

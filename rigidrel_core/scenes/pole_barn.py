@@ -136,6 +136,11 @@ class PoleBarnScene(Scene):
     models: tuple[Literal["born", "signal"], ...] = ("born",)
 
     @property
+    def rod_groups(self) -> tuple[int, ...]:
+        """Each pole in its own group: the models are alternatives, never in the barn together."""
+        return tuple(range(len(self.models)))
+
+    @property
     def door_closing(self) -> tuple[float, float]:
         """Lab ``(t_d, D)``: the door closes."""
         return (self.door_time, self.barn_length)

@@ -15,7 +15,18 @@ from PIL import Image, ImageDraw, ImageFont
 
 from ..view.lanes import LaneState
 from ..view.scene_view import FRAME_Z, LAB_Z, LANE_Z, Drawn, lane_states
-from ..view.vocabulary import FRAME_COLOR, INK, ROD_COLORS, WALL_COLOR, Shade, lightness_flipped, plain_text, rgb
+from ..view.vocabulary import (
+    DOOR_COLOR,
+    FRAME_COLOR,
+    INK,
+    ROD_COLORS,
+    STRAIN_RAMP,
+    WALL_COLOR,
+    Shade,
+    lightness_flipped,
+    plain_text,
+    rgb,
+)
 
 _FONTS = (
     "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
@@ -119,13 +130,16 @@ def lane_frames(
         yield shaded_frame(raster.frame(lane_states(drawn, float(now))), shade)
 
 
-#: A fixed palette for GIF frames: white, ink, the rods, the wall, the frame colour, greys.
+#: A fixed palette for GIF frames: white, ink, the rods, the wall and the door, the frame colour, the
+#: stops of a string's strain colours (a colour between two stops comes out as the nearer), greys.
 _PALETTE_COLORS = [
     (255, 255, 255),
     rgb(INK),
     *(rgb(c) for c in ROD_COLORS),
     rgb(WALL_COLOR),
+    rgb(DOOR_COLOR),
     rgb(FRAME_COLOR),
+    *(rgb(c) for c in STRAIN_RAMP),
     (128, 128, 128),
     (200, 200, 200),
     (64, 64, 64),

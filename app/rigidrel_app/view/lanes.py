@@ -4,13 +4,16 @@ Lane coordinates: ``x`` along the rods (the frame's own x, in units of the scene
 largest rest length), ``z`` up within the lane. Rods are boxes with a tick at every
 tenth of their rest length (so the uneven accelerations along a Born-rigid rod show),
 a proper-time clock dial on each end, the scene's obstacles (a wall) as bars, a ruler of
-the frame's own x, and a mark at the origin event's place.
+the frame's own x, and a mark at the origin event's place. Rods of different groups
+(:attr:`rigidrel_core.Scene.rod_groups`: Bell's comparison rod, the pole-barn's two models) get a
+row each in the rod band, one above the other; Bell's string is a thin bar between the ships,
+coloured by its strain (:data:`.vocabulary.STRAIN_RAMP`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import numpy.typing as npt
@@ -24,11 +27,13 @@ from .vocabulary import (
     INK,
     LIGHT_COLOR,
     ROD_COLORS,
+    STRAIN_RAMP,
     WALL_COLOR,
     FloatArray,
     Label,
     Segments,
     Style,
+    ramp_color,
     signed,
 )
 
@@ -95,7 +100,10 @@ class LaneState:
 
 
 def lane_geometry(scene: rr.Scene) -> LaneGeometry:
-    return LaneGeometry(unit=max(r.motion.length for r in scene.rods))
+    """The lanes' sizes for ``scene``: an obstacle's bar reaches from the rods' bottom to the top of
+    the upper dials, never into the title above them (as :mod:`.layout` has it on the canvas)."""
+    geo = LaneGeometry(unit=max(r.motion.length for r in scene.rods))
+    return replace(geo, wall_height=geo.clock_rows[1] + geo.clock_radius + 0.5 * geo.rod_height)
 
 
 def lane_state(
@@ -121,30 +129,42 @@ def lane_state(
     x_phys, tau = snapshot if snapshot is not None else scene.snapshot(now, frame, fractions=TICK_FRACTIONS)
     x = x_phys / u
     h = geo.rod_height
-    boxes = [Box(float(x[r, 0]), float(x[r, -1]), h, ROD_COLORS[r % len(ROD_COLORS)]) for r in range(scene.n_rods)]
+    rows = bar_rows(scene.rod_groups)
+    row_z = np.array([rows[g][0] * h for g in scene.rod_groups])  # each rod's row: centre and height
+    row_h = np.array([rows[g][1] * h for g in scene.rod_groups])
+    boxes = [
+        Box(float(x[r, 0]), float(x[r, -1]), float(row_h[r]), ROD_COLORS[r % len(ROD_COLORS)], float(row_z[r]))
+        for r in range(scene.n_rods)
+    ]
+    string = string_picture(scene, frame, now, x, geo) if isinstance(scene, rr.BellScene) else None
+    if string is not None:
+        boxes.extend(string.boxes)
     for obstacle in scene.obstacles:
         boxes.append(obstacle_box(obstacle, float(obstacle.positions(now, frame)) / u, geo))
     tx = x.ravel()
-    n = tx.size
+    tick_z = np.repeat(row_z, x.shape[1])
+    tick_h = np.repeat(row_h, x.shape[1])
     cx = x[:, [0, -1]].ravel()  # the ends: (rods * 2,)
     cz = np.tile(np.array(geo.clock_rows), scene.n_rods)
     phase = 2.0 * np.pi * tau.ravel() / (CLOCK_PERIOD * u)
     hand = 0.85 * geo.clock_radius
     x0 = np.concatenate([tx, cx])
-    z0 = np.concatenate([np.full(n, -0.5 * h), cz])
+    z0 = np.concatenate([tick_z - 0.5 * tick_h, cz])
     x1 = np.concatenate([tx, cx + hand * np.sin(phase)])
-    z1 = np.concatenate([np.full(n, 0.5 * h), cz + hand * np.cos(phase)])
+    z1 = np.concatenate([tick_z + 0.5 * tick_h, cz + hand * np.cos(phase)])
     dials = np.stack([cx, cz], axis=-1)
     texts: tuple[Label, ...] = ()
     if labels:  # one two-line label per lane: each label update is a message
         readings = "    ".join(
             f"{rod.name}: {signed(tau[i, 0])} | {signed(tau[i, 1])}" for i, rod in enumerate(scene.rods)
         )
+        key = "   ".join(k for k in (string.text if string is not None else "", rows_key(scene)) if k)
+        head = f"{title}   {key}" if key else title
         texts = (
             Label(
                 title_x,
                 geo.title_z - 0.05,
-                f"{title}\nclocks τ (left | right end)   {readings}",
+                f"{head}\nclocks τ (left | right end)   {readings}",
                 Style(INK),
                 anchor="left",
                 size=12,
@@ -152,6 +172,92 @@ def lane_state(
         )
     ends = x_phys[:, [0, -1]]
     return LaneState(tuple(boxes), Segments(x0, z0, x1, z1, Style(INK, 1.5)), dials, texts, ends)
+
+
+#: Rows of the rod band when a scene's rods form several groups (:attr:`rigidrel_core.Scene.rod_groups`):
+#: the share of the band between two rows, and how much thicker a row of several rods (Bell's two
+#: ships, with their string) is than a row of one (the comparison rod; each of the pole-barn's poles).
+ROW_GAP = 0.12
+SHARED_ROW_WEIGHT = 2.0
+
+
+def bar_rows(groups: Sequence[int]) -> tuple[tuple[float, float], ...]:
+    """Each group's row in the rod band, top to bottom in group order: ``(centre, height)`` as shares
+    of the band's height (its centre 0, its top 0.5). One group: the whole band. Several: stacked
+    with :data:`ROW_GAP` between them, a row of several rods :data:`SHARED_ROW_WEIGHT` times as thick
+    as a row of one."""
+    n = max(groups, default=0) + 1
+    if n == 1:
+        return ((0.0, 1.0),)
+    weights = [SHARED_ROW_WEIGHT if list(groups).count(g) > 1 else 1.0 for g in range(n)]
+    unit = (1.0 - ROW_GAP * (n - 1)) / sum(weights)
+    rows: list[tuple[float, float]] = []
+    top = 0.5
+    for w in weights:
+        rows.append((top - 0.5 * w * unit, w * unit))
+        top -= w * unit + ROW_GAP
+    return tuple(rows)
+
+
+def rows_key(scene: rr.Scene) -> str:
+    """What the rows of the rod band hold, for the lane's title (empty for a scene of one group):
+    ``"upper bar: ...; lower bar: ..."`` for two groups, ``"row 1: ...; ..."`` for more. A row of
+    several rods (Bell's ships, thicker) goes unnamed there: the clocks' line names its rods."""
+    groups = scene.rod_groups
+    n = max(groups, default=0) + 1
+    if n == 1:
+        return ""
+    heads = ("upper bar", "lower bar") if n == 2 else tuple(f"row {k + 1}" for k in range(n))
+    named = [
+        (head, [r.name for r, g in zip(scene.rods, groups, strict=True) if g == k]) for k, head in enumerate(heads)
+    ]
+    return "; ".join(f"{head}: {names[0]}" for head, names in named if len(names) == 1)
+
+
+#: The string's thickness, as a share of its row's; a broken string's loose ends, each this share of
+#: the gap between the ships.
+STRING_THICKNESS = 0.35
+LOOSE_END_SHARE = 0.2
+
+
+@dataclass(frozen=True)
+class StringPicture:
+    """Bell's string in a lane at one instant: its bar (two loose ends once broken) and its words."""
+
+    boxes: tuple[Box, ...]
+    strain: float
+    """The core's strain when the string's rear end is at the lane's time."""
+    broken: bool
+    color: str
+    text: str
+    """For the lane's title: the strain and the colour's scale, or that the string has broken."""
+
+
+def string_picture(scene: rr.BellScene, frame: rr.Frame, now: float, x: FloatArray, geo: LaneGeometry) -> StringPicture:
+    """The string between the ships at time ``now`` of ``frame`` (``x``: the snapshot in lane units,
+    ``(rods, fractions)``, whose first and last fractions are the rods' ends): a thin bar on the ships'
+    row from the rear ship's front end to the front ship's rear end, coloured by the core's strain
+    from unstretched (``0``) to the breaking strain (or, without one, to the strain it ends at); once
+    the core says it has broken, two loose ends in the breaking colour."""
+    (rear_rod, rear_f), (front_rod, front_f) = scene.string_ends
+    x0 = float(x[rear_rod, -1 if rear_f == 1.0 else 0])
+    x1 = float(x[front_rod, -1 if front_f == 1.0 else 0])
+    strain = float(scene.string_strains([now], frame)[0])
+    broken = bool(scene.string_broken([now], frame)[0])
+    full_scale = scene.breaking_strain if scene.breaking_strain is not None else scene.final_strain
+    color = ramp_color(1.0 if broken else (strain / full_scale if full_scale > 0 else 0.0), STRAIN_RAMP)
+    centre, share = bar_rows(scene.rod_groups)[scene.rod_groups[rear_rod]]
+    z, height = centre * geo.rod_height, STRING_THICKNESS * share * geo.rod_height
+    percent = f"{100.0 * full_scale:.3g} %"
+    if broken:
+        loose = LOOSE_END_SHARE * (x1 - x0)
+        boxes = (Box(x0, x0 + loose, height, color, z), Box(x1 - loose, x1, height, color, z))
+        text = f"string broken (at its breaking strain {percent})"
+    else:
+        boxes = (Box(x0, x1, height, color, z),)
+        scale = "breaks" if scene.breaking_strain is not None else "its final"
+        text = f"string strain {100.0 * strain:.1f} % (faint → strong: 0 → {percent}, {scale})"
+    return StringPicture(boxes, strain, broken, color, text)
 
 
 def obstacle_box(obstacle: rr.Obstacle, x: float, geo: LaneGeometry) -> Box:

@@ -185,3 +185,22 @@ def markdown_literal(text: str) -> str:
     """``text`` shown as it is in markdown (viser renders raw HTML in markdown, so a typed ``<b>``
     or ``**`` must not become markup): HTML characters as entities, markdown punctuation escaped."""
     return _MARKDOWN_PUNCTUATION.sub(r"\\\1", html.escape(text, quote=False))
+
+
+#: A string's strain, unstretched to breaking: stops of matplotlib's "magma" map from 0.8 down to 0.2
+#: (light peach to dark violet). Its lightness falls monotonically, so the order reads in every kind of
+#: colour vision and in grey; none of its stops is a rod's colour. The words for it are "faint → strong",
+#: true on a light ground and on a dark one, which shows every colour at the opposite lightness.
+STRAIN_RAMP = ("#FE9F6D", "#F7705C", "#DE4968", "#B73779", "#8C2981", "#641A80", "#3B0F70")
+
+
+def ramp_color(fraction: float, ramp: tuple[str, ...] = STRAIN_RAMP) -> str:
+    """The colour ``fraction`` (clipped to ``[0, 1]``) of the way along ``ramp``, mixed linearly in sRGB
+    between its neighbouring stops and rounded to 1/50 of the ramp (a colour that changes smoothly
+    during playback, yet not in every frame)."""
+    f = round(min(max(float(fraction), 0.0), 1.0) * 50.0) / 50.0 * (len(ramp) - 1)
+    k = min(int(f), len(ramp) - 2)
+    w = f - k
+    a, b = rgb(ramp[k]), rgb(ramp[k + 1])
+    r, g, bl = (round((1.0 - w) * p + w * q) for p, q in zip(a, b, strict=True))
+    return f"#{r:02X}{g:02X}{bl:02X}"
