@@ -10,7 +10,12 @@ slider-to-redraw time. A script, not a test (numbers vary with the machine's loa
   second, over ``--seconds`` of playback of the paper's Fig. 3, at the given viewport (the
   diagrams visible). Also the page's animation frames per second and messages per second.
 * slider-to-redraw: from the Enter that submits V = 0.85 in its box to the last websocket message
-  of the redraw the page handles (messages closer than 60 ms counted as one burst); median of 5.
+  of the redraw the page handles (messages closer than 60 ms counted as one burst); median of 5
+  (with the panel shown, after a presenter-mode run).
+* smallest text: the smallest text on the canvas (CSS px) as laid out for the played scene.
+
+``--theme dark`` plays in the dark projector theme (the canvas inverted by the page's style),
+``--presenter`` in presenter mode (key F).
 """
 
 from __future__ import annotations
@@ -22,6 +27,7 @@ from typing import Any
 
 from rigidrel_app.live.server import App
 from rigidrel_app.view.state import presets
+from rigidrel_app.view.vocabulary import Shade
 from tests.browser.conftest import launch_chromium
 from tests.viser_client import wait_until
 
@@ -59,10 +65,17 @@ window.__msgs = 0; window.__frames = 0; window.__ticks = 0; window.__times = [];
 """
 
 
-def measure(width: int, height: int, seconds: float) -> dict[str, float]:
+def _width(session: Any) -> float:
+    """The width the tab's page is laid out for (0 before it is)."""
+    return 0.0 if session.layout is None else float(session.layout.width)
+
+
+def measure(
+    width: int, height: int, seconds: float, shade: Shade = "light", presenter: bool = False
+) -> dict[str, float]:
     from playwright.sync_api import sync_playwright
 
-    with App(port=0) as app, sync_playwright() as p:
+    with App(port=0, shade=shade) as app, sync_playwright() as p:
         browser = launch_chromium(p)
         try:
             page = browser.new_page(viewport={"width": width, "height": height})
@@ -85,8 +98,15 @@ def measure(width: int, height: int, seconds: float) -> dict[str, float]:
             first_bytes = sum(n for _, n in received)
             for button in page.locator(".mantine-Notification-root button").all():
                 button.click()
+            if presenter:
+                page.evaluate("() => document.activeElement && document.activeElement.blur()")
+                page.keyboard.press("f")
+                wait_until(lambda: session.presenter and _width(session) > 0.9 * width, timeout=60)
             with session.lock:
                 session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
+                layout = session.layout
+                assert layout is not None
+                smallest = min([t.px for t in session.static_picture.texts] + [layout.theme.text_px])
                 session.toggle_play()
             time.sleep(2.0)  # warm
             f0, k0, m0 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")
@@ -94,6 +114,9 @@ def measure(width: int, height: int, seconds: float) -> dict[str, float]:
             f1, k1, m1 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")
             with session.lock:
                 session.toggle_play()
+            if presenter:
+                page.keyboard.press("f")
+                wait_until(lambda: not session.presenter and _width(session) < 0.9 * width, timeout=60)
             time.sleep(1.0)
             redraws = []
             uid = page.locator('label:text-is("V1")').get_attribute("for")
@@ -118,6 +141,7 @@ def measure(width: int, height: int, seconds: float) -> dict[str, float]:
                 "animation_frames_per_s": (k1 - k0) / seconds,
                 "messages_per_s": (m1 - m0) / seconds,
                 "slider_to_redraw_ms": statistics.median(redraws),
+                "smallest_text_px": smallest,
             }
         finally:
             browser.close()
@@ -128,8 +152,10 @@ def main() -> None:
     parser.add_argument("--width", type=int, default=1280)
     parser.add_argument("--height", type=int, default=720)
     parser.add_argument("--seconds", type=float, default=5.0)
+    parser.add_argument("--theme", choices=("light", "dark"), default="light", help="the tab's theme")
+    parser.add_argument("--presenter", action="store_true", help="play in presenter mode (key F)")
     args = parser.parse_args()
-    r = measure(args.width, args.height, args.seconds)
+    r = measure(args.width, args.height, args.seconds, args.theme, args.presenter)
     print(" ".join(f"{k}={v:.1f}" for k, v in r.items()), flush=True)
 
 
