@@ -115,6 +115,7 @@ def measure(
             with session.lock:
                 session.toggle_play()
             if presenter:
+                page.evaluate("() => document.activeElement && document.activeElement.blur()")
                 page.keyboard.press("f")
                 wait_until(lambda: not session.presenter and _width(session) < 0.9 * width, timeout=60)
             time.sleep(1.0)
