@@ -42,6 +42,7 @@ from rigidrel_app.view.layout import (
     canvas_layout,
     lane_title_text,
     text_width,
+    titles_fit_one_line,
 )
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
 from rigidrel_app.view.scene_view import (
@@ -498,6 +499,23 @@ def test_a_one_line_title_shrinks_to_fit_its_lane_and_never_under_the_smallest_t
     text, px = lane_title_text(long + "y" * 200, lane, 16.0)
     assert "\n" in text and px == 16.0  # too long even at the smallest size: two lines
     assert lane_title_text(short, canvas_layout(1920, 1080, PRESENTER).lanes[0], 21.0) == (short, 21.0)
+
+
+def test_titles_too_long_for_one_line_keep_two_and_the_text_steps_down_instead() -> None:
+    """The pole-barn names both poles in its titles: too long for one line at 14 px on 1260 px."""
+    layout = canvas_layout(1280, 560, PRESENTER)
+    assert layout.lanes[0].title_lines == 1
+    r = resolve(Settings.of("pole-barn"))
+    assert isinstance(r, Resolved)
+    d = build_drawing(r, areas=layout.chart_areas)
+    titles = [p.title for p in d.lane_pictures(d.window[0], layout)]
+    assert not titles_fit_one_line(titles, layout)
+    short = "lab frame:   t = +0.150\nclocks τ (left | right end)   rod: +0.843 | +0.146"
+    assert titles_fit_one_line([short, short], layout)
+    two = canvas_layout(1280, 560, PRESENTER, one_line_titles=False)
+    assert all(lane.title_lines == 2 for lane in two.lanes) and two.theme.text_px == NORMAL.text_px
+    for lane in two.lanes:  # two title lines above the dials
+        assert lane.title_z - 2.4 * two.theme.title_px > lane.dial_z[1] + lane.clock_px
 
 
 @pytest.mark.parametrize("settings", ALL_SETTINGS, ids=scene_id)

@@ -25,7 +25,15 @@ from ..lessons.tour import arrival, caption_html, clamp_step, lock_notice, lock_
 from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
 from ..view.lanes import LanePicture
 from ..view.layers import Layer
-from ..view.layout import LEGEND_ROWS, NORMAL, PRESENTER, CanvasLayout, CanvasSize, canvas_layout
+from ..view.layout import (
+    LEGEND_ROWS,
+    NORMAL,
+    PRESENTER,
+    CanvasLayout,
+    CanvasSize,
+    canvas_layout,
+    titles_fit_one_line,
+)
 from ..view.scenario import ScenarioError, format_scenario, parse_scenario
 from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, build_drawing, nice_step
 from ..view.scene_view import readout_markdown as readout
@@ -191,10 +199,10 @@ class Session:
             with self.client.atomic():
                 self._apply(self.drawn.resolved, refit=True)
 
-    def _canvas_layout(self, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
+    def _canvas_layout(self, legend_rows: int = LEGEND_ROWS, one_line_titles: bool = True) -> CanvasLayout:
         """The page for this tab's canvas size and mode."""
         theme = replace(PRESENTER if self.presenter else NORMAL, shade=self.shade)
-        return canvas_layout(self.canvas_size.width, self.canvas_size.height, theme, legend_rows)
+        return canvas_layout(self.canvas_size.width, self.canvas_size.height, theme, legend_rows, one_line_titles)
 
     # ------------------------------------------------------------------ state
     def change(self, new: Settings, refit: bool | None = None) -> None:
@@ -469,6 +477,11 @@ class Session:
         c = self.controls
         self.layout = layout = self._canvas_layout()
         self.drawn = d = build_drawing(resolved, areas=layout.chart_areas)
+        # a short canvas puts the lanes' titles on one line, unless this scene's are too long for one
+        one_line = titles_fit_one_line([p.title for p in d.lane_pictures(d.window[0], layout)], layout)
+        if layout.lanes[0].title_lines == 1 and not one_line:  # the text steps down instead
+            self.layout = layout = self._canvas_layout(one_line_titles=False)
+            self.drawn = d = build_drawing(resolved, areas=layout.chart_areas)
         c.show_settings(self.settings)
         choices = frame_choices(resolved.scene)
         if tuple(c.frame.options) != choices:
@@ -498,7 +511,7 @@ class Session:
         legend = d.legend()
         rows = legend_rows(legend, layout.legend.width, layout.theme)
         if rows != LEGEND_ROWS:  # the plots give the legend the rows it needs (their curves still fit)
-            self.layout = layout = self._canvas_layout(rows)
+            self.layout = layout = self._canvas_layout(rows, one_line)
         frames: list[ChartFrame] = []
         picture = PagePicture()
         for chart, place in zip(d.charts, layout.charts, strict=True):

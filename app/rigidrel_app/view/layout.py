@@ -9,6 +9,7 @@ arithmetic, no drawing library.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Literal
 
@@ -152,6 +153,20 @@ MIN_TEXT_PX = 14.0
 MIN_PLOT_PX = 150.0
 
 
+#: A one-line title is taken to fit only with this much room to spare (its numbers change width as
+#: they play).
+TITLE_SPARE = 1.08
+
+
+def titles_fit_one_line(titles: Sequence[str], layout: CanvasLayout) -> bool:
+    """Whether each lane's title (two lines) fits its lane on one line at :data:`MIN_TEXT_PX`, with
+    :data:`TITLE_SPARE` to spare."""
+    return all(
+        text_width("     ".join(t.split("\n")), MIN_TEXT_PX * TITLE_SPARE) <= lane.band.width
+        for t, lane in zip(titles, layout.lanes, strict=True)
+    )
+
+
 def lane_title_text(title: str, layout: LaneLayout, px: float) -> tuple[str, float]:
     """A lane's title (two lines: the frame and its time, the clock readings) as ``layout`` has room
     for, and its text size: on one line where the layout asks for one, at ``px`` or smaller down to
@@ -215,15 +230,23 @@ class CanvasSize:
         return cls(width, height, resolution, True)
 
 
-def canvas_layout(width: float, height: float, theme: Theme = NORMAL, legend_rows: int = LEGEND_ROWS) -> CanvasLayout:
+def canvas_layout(
+    width: float,
+    height: float,
+    theme: Theme = NORMAL,
+    legend_rows: int = LEGEND_ROWS,
+    one_line_titles: bool = True,
+) -> CanvasLayout:
     """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at
     the bottom. On a canvas too short for the diagrams' plots to get :data:`MIN_PLOT_PX`, the lanes'
-    titles go on one line, and if that is not enough the text takes the desk theme's sizes (never
-    under :data:`MIN_TEXT_PX`; the lines keep their width): the first of these that gives the plots
-    their height, else the last."""
+    titles go on one line (unless ``one_line_titles`` is False: a scene whose titles are too long
+    for one, :func:`titles_fit_one_line`), and if that is not enough the text takes the desk theme's
+    sizes (never under :data:`MIN_TEXT_PX`; the lines keep their width): the first of these that
+    gives the plots their height, else the last."""
     smaller = replace(theme, text_px=min(theme.text_px, NORMAL.text_px), title_px=min(theme.title_px, NORMAL.title_px))
     layout = _canvas_layout(width, height, theme, legend_rows, 2)
-    for t, lines in ((theme, 1), (smaller, 1)):
+    steps = ((theme, 1), (smaller, 1)) if one_line_titles else ((smaller, 2),)
+    for t, lines in steps:
         if layout.charts[0].plot.height >= MIN_PLOT_PX:
             break
         layout = _canvas_layout(width, height, t, legend_rows, lines)
