@@ -56,8 +56,20 @@ def test_without_the_page_a_step_of_the_clients_resolution_is_not_a_new_canvas()
     assert (fast.width, fast.height) == pytest.approx((800.0, 600.0)) and fast.resolution == pytest.approx(1.0)
     # a real resize is a new size, even one close to a step (only one side matches)
     assert first.reported(959, 900) == CanvasSize(959.0, 900.0, 1.0)
-    assert first.reported(1096, 787) == CanvasSize(1096.0, 787.0, 1.0)
     assert first.reported(1096, 900) == first
+    assert first.reported(1000, 700) == CanvasSize(1000.0, 700.0, 1.0)
+
+
+def test_the_panel_folding_away_while_the_resolution_steps_keeps_the_height() -> None:
+    """Presenter mode on a slow machine: the panel folds away (the canvas 936 -> 1240 CSS px wide,
+    the same 720 high) just as the client steps its resolution down to 0.875. Only the camera speaks
+    (the page's report box is in the folded panel): its height says which resolution it is at."""
+    docked = CanvasSize.measured_by_page(936, 720, 1.0)
+    wide = docked.reported(1085, 630)  # 1240 x 720 at 0.875
+    assert (wide.width, wide.height) == pytest.approx((1240.0, 720.0)) and wide.resolution == 0.875
+    back = wide.reported(936, 720)  # the panel back, full resolution again
+    assert (back.width, back.height) == pytest.approx((936.0, 720.0)) and back.resolution == pytest.approx(1.0)
+    assert docked.reported(1096, 630) == CanvasSize(1096.0 / 0.875, 720.0, 0.875)  # read so, not as 630 high
 
 
 def test_the_script_hides_only_its_own_box() -> None:

@@ -214,13 +214,19 @@ class CanvasSize:
         """The canvas after its camera reports ``pixels_wide`` × ``pixels_high`` rendered pixels.
 
         The same CSS size after a step of the client's adaptive resolution (:data:`RESOLUTION_STEPS`,
-        each side within 1.5 px, the browser's rounding) is a change of resolution only; anything
-        else is a new size, read at the resolution last known.
+        each side within 1.5 px, the browser's rounding) is a change of resolution only. A new width
+        with the height of the same CSS size at a step of the resolution is the panel folding away
+        or coming back (presenter mode) while the resolution stepped: the height is kept, the width
+        read at that resolution. Anything else is a new size, read at the resolution last known.
         """
         for step in RESOLUTION_STEPS:
             r = self.resolution * step
             if abs(pixels_wide - self.width * r) <= 1.5 and abs(pixels_high - self.height * r) <= 1.5:
                 return CanvasSize(self.width, self.height, r, self.measured)
+        for step in RESOLUTION_STEPS:
+            r = self.resolution * step
+            if abs(pixels_high - self.height * r) <= 1.5:
+                return CanvasSize(pixels_wide / r, self.height, r, False)
         r = self.resolution
         return CanvasSize(pixels_wide / r, pixels_high / r, r, False)
 
