@@ -14,8 +14,9 @@ import numpy as np
 import pytest
 
 from rigidrel_app.lessons import builtin_lesson
+from rigidrel_app.live.controls import CAPTION_GROUND
 from rigidrel_app.live.server import App
-from rigidrel_app.view.vocabulary import ROD_COLORS, lightness_flipped, rgb
+from rigidrel_app.view.vocabulary import ROD_COLORS, lightness_flipped, rgb, shaded
 from tests.browser.test_app_browser import AppPage
 from tests.viser_client import wait_until
 
@@ -47,6 +48,11 @@ def assert_light(canvas: np.ndarray) -> None:
     rod = rgb(ROD_COLORS[0])
     assert share_near(canvas, (255, 255, 255), 20) > GROUND_SHARE
     assert share_near(canvas, rod, ROD_TOLERANCE) > ROD_SHARE
+
+
+def css_rgb(color: str) -> str:
+    """``"#RRGGBB"`` as the browser's computed style writes it."""
+    return "rgb({}, {}, {})".format(*rgb(color))
 
 
 def still(page: Any) -> bool:
@@ -123,7 +129,7 @@ def test_a_lesson_caption_follows_the_theme(browser: Any, shots: Path) -> None:
         background = page.evaluate(
             "() => getComputedStyle(document.getElementById('rigidrel-caption')).backgroundColor"
         )
-        assert background == "rgb(23, 21, 10)"
+        assert background == css_rgb(shaded(CAPTION_GROUND, "dark"))  # the band's colour, lightness flipped
         session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=30)
         wait_until(lambda: session.layout is not None and session.canvas_size.measured, timeout=30)
         page.evaluate("() => document.activeElement && document.activeElement.blur()")
@@ -138,7 +144,7 @@ def test_a_lesson_caption_follows_the_theme(browser: Any, shots: Path) -> None:
         wait_until(
             lambda: (
                 page.evaluate("() => getComputedStyle(document.getElementById('rigidrel-caption')).backgroundColor")
-                == "rgb(255, 252, 235)"
+                == css_rgb(CAPTION_GROUND)
             ),
             timeout=30,
         )

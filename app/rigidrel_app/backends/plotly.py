@@ -14,7 +14,20 @@ from typing import Any
 
 import numpy as np
 
-from ..view.vocabulary import Area, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Shade, Style, shaded
+from ..view.vocabulary import (
+    Area,
+    Chart,
+    FloatArray,
+    Item,
+    Label,
+    Points,
+    Polyline,
+    Segments,
+    Shade,
+    Style,
+    lightness_flipped,
+    shaded,
+)
 
 #: The app's plotly config, sent with every figure: no mode bar, resize with the panel.
 APP_CONFIG: dict[str, Any] = {"displayModeBar": False, "responsive": True}
@@ -165,19 +178,18 @@ _NAMED = {"white": "#FFFFFF", "black": "#000000"}
 _RGB = re.compile(r"rgba?\(\s*(\d+)\s*,\s*(\d+)\s*,\s*(\d+)\s*(?:,\s*([\d.]+)\s*)?\)")
 
 
-def _shaded_color(value: str, shade: Shade) -> str:
-    """One plotly colour (``#RGB``, ``#RRGGBB``, ``rgb()``, ``rgba()``, white, black) on a ``shade``
-    ground; any other string is left as it is."""
+def _flipped_color(value: str) -> str:
+    """One plotly colour (``#RGB``, ``#RRGGBB``, ``rgb()``, ``rgba()``, white, black) as the dark
+    ground shows it (:func:`~rigidrel_app.view.vocabulary.shaded`); any other string is left as it is."""
     v = _NAMED.get(value.strip().lower(), value.strip())
     if re.fullmatch(r"#[0-9A-Fa-f]{3}", v):
         v = "#" + "".join(2 * ch for ch in v[1:])
     if re.fullmatch(r"#[0-9A-Fa-f]{6}", v):
-        return shaded(v, shade)
+        return shaded(v, "dark")
     m = _RGB.fullmatch(v)
     if m is None:
         return value
-    flipped = shaded("#{:02X}{:02X}{:02X}".format(*(int(g) for g in m.groups()[:3])), shade)
-    r, g, b = (int(flipped[k : k + 2], 16) for k in (1, 3, 5))
+    r, g, b = (int(c) for c in lightness_flipped([int(c) for c in m.groups()[:3]]))
     return f"rgba({r},{g},{b},{m.group(4)})" if m.group(4) is not None else f"rgb({r},{g},{b})"
 
 
@@ -189,14 +201,15 @@ def _with_defaults(target: dict[str, Any], defaults: dict[str, Any]) -> None:
             target.setdefault(key, value)
 
 
-def _shade_tree(node: Any, shade: Shade) -> Any:
+def _flipped_tree(node: Any) -> Any:
+    """A figure's JSON with every value of a key ending in "color" flipped (:func:`_flipped_color`)."""
     if isinstance(node, dict):
         return {
-            k: _shaded_color(v, shade) if isinstance(v, str) and k.endswith("color") else _shade_tree(v, shade)
+            k: _flipped_color(v) if isinstance(v, str) and k.endswith("color") else _flipped_tree(v)
             for k, v in node.items()  # pyright: ignore[reportUnknownVariableType]
         }
     if isinstance(node, list):
-        return [_shade_tree(v, shade) for v in node]  # pyright: ignore[reportUnknownVariableType]
+        return [_flipped_tree(v) for v in node]  # pyright: ignore[reportUnknownVariableType]
     return node
 
 
@@ -217,7 +230,7 @@ def shaded_figure(fig: dict[str, Any], shade: Shade) -> dict[str, Any]:
         _with_defaults(menu, _MENU_DEFAULTS)
     for slider in layout.get("sliders", []):
         _with_defaults(slider, _SLIDER_DEFAULTS)
-    return _shade_tree(fig, shade)
+    return _flipped_tree(fig)
 
 
 def _encode(obj: Any) -> Any:

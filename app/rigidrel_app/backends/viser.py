@@ -29,7 +29,7 @@ from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
 from ..view.lanes import Box, LanePicture, LaneState, ruler_text, segments_array
 from ..view.layout import CanvasLayout, lane_title_text
-from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, plain_text, rgb
+from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, lightness_flipped, plain_text, rgb
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
 _CUBE_FACES = np.array(
@@ -88,10 +88,13 @@ def sent_for_shade(colors: np.ndarray, shade: Shade) -> np.ndarray:
     the canvas' inversion turns into ``c + 255 - max(c) - min(c)``, the colour's
     :func:`~rigidrel_app.view.vocabulary.lightness_flipped` self."""
     c = np.asarray(colors, dtype=np.uint8)
-    if shade == "light":
-        return c
-    w = c.astype(np.int16)
-    return (w.max(axis=-1, keepdims=True) + w.min(axis=-1, keepdims=True) - w).astype(np.uint8)
+    return c if shade == "light" else 255 - lightness_flipped(c)
+
+
+def sent_rgb(color: str, shade: Shade) -> tuple[int, int, int]:
+    """One palette colour (``"#RRGGBB"``) as sent for a ``shade`` page (:func:`sent_for_shade`)."""
+    r, g, b = (int(v) for v in sent_for_shade(np.array(rgb(color)), shade))
+    return r, g, b
 
 
 @functools.lru_cache(maxsize=64)
@@ -108,7 +111,7 @@ def linear_rgb(color: str, shade: Shade = "light") -> tuple[int, int, int]:
         y = x / 12.92 if x <= 0.04045 else ((x + 0.055) / 1.055) ** 2.4
         return round(255.0 * y)
 
-    r, g, b = (int(v) for v in sent_for_shade(np.array(rgb(color)), shade))
+    r, g, b = sent_rgb(color, shade)
     return lin(r), lin(g), lin(b)
 
 
@@ -175,16 +178,12 @@ class LaneRenderer:
         self._dial_radius = 0.0
 
     # ------------------------------------------------------------------ per scene
-    def _rgb(self, color: str) -> tuple[int, int, int]:
-        r, g, b = (int(v) for v in sent_for_shade(np.array(rgb(color)), self._shade))
-        return r, g, b
-
     def set_static(self, rulers: Sequence[tuple[Segments, Sequence[Label]]]) -> None:
         """Per-lane static geometry (rulers, origin marks): redrawn only when the scene changes."""
         pts = np.concatenate([segments_array(seg, z, _FRONT) for (seg, _), z in zip(rulers, self.lane_z, strict=True)])
         if self._static is None:
             self._static = self._scene.add_line_segments(
-                "/lanes/static", pts, colors=self._rgb(FRAME_COLOR), thickness=1.5, thickness_units="screen"
+                "/lanes/static", pts, colors=sent_rgb(FRAME_COLOR, self._shade), thickness=1.5, thickness_units="screen"
             )
         else:
             self._static.points = pts
@@ -202,7 +201,7 @@ class LaneRenderer:
         )
         if self._dynamic is None:
             self._dynamic = self._scene.add_line_segments(
-                "/lanes/dynamic", pts, colors=self._rgb(INK), thickness=1.6, thickness_units="screen"
+                "/lanes/dynamic", pts, colors=sent_rgb(INK, self._shade), thickness=1.6, thickness_units="screen"
             )
         else:
             self._dynamic.points = pts
@@ -535,7 +534,7 @@ class PageRenderer:
         self._rulers = (_Ruler(scene, "/page/ruler0"), _Ruler(scene, "/page/ruler1"))
         self._boxes: viser.BatchedMeshHandle | None = None
         self._box_capacity = 0
-        self._box_state: tuple[bytes, bytes, tuple[str, ...]] | None = None
+        self._box_state: tuple[bytes, bytes, tuple[str, ...], Shade] | None = None
         self._dials: viser.BatchedMeshHandle | None = None
         self._dial_key: tuple[int, float, Shade] | None = None
         self.layout: CanvasLayout | None = None
@@ -602,8 +601,8 @@ class PageRenderer:
         for k, b in enumerate(boxes):
             positions[k] = (0.5 * (b.x0 + b.x1), 0.0, b.z)
             scales[k] = (max(b.x1 - b.x0, 0.5), _PAGE_ROD_DEPTH, b.height)
-        names = (*(b.color for b in boxes), *("#ffffff",) * (n - len(boxes)), shade)
-        colors = _instance_colors(names[:-1], shade)
+        names = tuple(b.color for b in boxes) + ("#ffffff",) * (n - len(boxes))
+        colors = _instance_colors(names, shade)
         if self._boxes is None:
             self._boxes = self._scene.add_batched_meshes_simple(
                 "/page/boxes", _CUBE_VERTICES, _CUBE_FACES,
@@ -611,16 +610,16 @@ class PageRenderer:
                 batched_positions=positions, batched_scales=scales, batched_colors=colors,
                 flat_shading=True, lod="off", cast_shadow=False, receive_shadow=False,
             )  # fmt: skip
-            self._box_state = (positions.tobytes(), scales.tobytes(), names)
+            self._box_state = (positions.tobytes(), scales.tobytes(), names, shade)
             return
         old = self._box_state
         if old is None or old[0] != positions.tobytes():
             self._boxes.batched_positions = positions
         if old is None or old[1] != scales.tobytes():
             self._boxes.batched_scales = scales
-        if old is None or old[2] != names:
+        if old is None or old[2:] != (names, shade):
             self._boxes.batched_colors = colors
-        self._box_state = (positions.tobytes(), scales.tobytes(), names)
+        self._box_state = (positions.tobytes(), scales.tobytes(), names, shade)
 
     def _update_dials(self, centres: np.ndarray, radius: float, shade: Shade) -> None:
         n = len(centres)

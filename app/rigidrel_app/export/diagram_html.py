@@ -373,6 +373,6 @@ def diagram_html(settings: Settings, plotly_js: Literal["inline", "beside"] = "i
         )
     )
     # centred on a wide screen (the figure has a fixed size: its labels are placed for it)
-    ground = "" if shade == "light" else " background: #000000;"
-    page = page.replace("<head>", "<head><style>html { background: #000000; }</style>", 1) if ground else page
-    return page.replace("<body>", f'<body style="margin: 8px auto; width: {PAGE_PX[0]}px;{ground}">', 1)
+    if shade == "dark":  # the page around the figure black too
+        page = page.replace("<head>", "<head><style>html, body { background: #000000; }</style>", 1)
+    return page.replace("<body>", f'<body style="margin: 8px auto; width: {PAGE_PX[0]}px">', 1)

@@ -31,7 +31,7 @@ from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, contro
 from ..view.layers import Layer
 from ..view.scene_view import CONTROL_PX
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, preset_menu
-from ..view.vocabulary import Shade
+from ..view.vocabulary import ROD_COLORS, Shade, shaded
 from .keys import HOTKEYS, LESSON_HOTKEYS, Action, Hotkey, key_line
 from .playback import Playback
 
@@ -53,6 +53,7 @@ class Actions(Protocol):
 
     settings: Settings
     playback: Playback
+    shade: Shade
 
     def change(self, new: Settings, refit: bool | None = None) -> None: ...
     def set_parameter(self, parameter: rr.Parameter, value: float) -> None: ...
@@ -402,7 +403,7 @@ class Controls:
         self.reset_view.on_click(lambda _: a.perform(Action.RESET_VIEW))
         self.presenter.on_click(lambda _: a.perform(Action.TOGGLE_PRESENTER))
         in_playback(self.dark, label="Dark theme", allowed="on or off", legal=on_or_off,
-                    current=lambda: self.dark.value, act=lambda v: a.set_shade("dark" if v else "light"))  # fmt: skip
+                    current=lambda: a.shade == "dark", act=lambda v: a.set_shade("dark" if v else "light"))  # fmt: skip
         for hotkey, command in self.commands:
             command.on_trigger(lambda _, action=hotkey.action: a.perform(action))
         for layer, box in self.layers.items():
@@ -535,12 +536,14 @@ _CAPTION_JS = (
     "band.innerHTML = m.html; band.style.display = m.shown ? 'block' : 'none'; fit(); }, 150); }"
 )
 
-#: The band's looks: dark text on a pale band, 17 px (in presenter mode 19 px on a 1280x720 screen, 28 px on
-#: 1920x1080), a blue rule below.
+#: The band's colours: dark text on a pale band, a rule in the rods' blue below it.
+CAPTION_GROUND, CAPTION_INK, CAPTION_RULE = "#FFFCEB", "#111111", ROD_COLORS[0]
+#: The band's looks: 17 px text (in presenter mode 19 px on a 1280x720 screen, 28 px on 1920x1080).
 CAPTION_CSS = (
-    "<style>#rigidrel-caption { position: fixed; top: 0; left: 0; right: 0; z-index: 150; background: #FFFCEB; "
-    "border-bottom: 3px solid #0072B2; padding: 6px 16px 2px; max-height: 45vh; overflow: auto; "
-    "font-family: sans-serif; color: #111; } #rigidrel-caption h2 { margin: 0 0 4px; } "
+    "<style>#rigidrel-caption { position: fixed; top: 0; left: 0; right: 0; z-index: 150; "
+    f"background: {CAPTION_GROUND}; border-bottom: 3px solid {CAPTION_RULE}; padding: 6px 16px 2px; "
+    f"max-height: 45vh; overflow: auto; font-family: sans-serif; color: {CAPTION_INK}; }} "
+    "#rigidrel-caption h2 { margin: 0 0 4px; } "
     "#rigidrel-caption p { margin: 0 0 6px; } .rr-caption-normal { font-size: 17px; line-height: 1.35; } "
     ".rr-caption-normal h2 { font-size: 20px; } .rr-caption-presenter { font-size: clamp(18px, 1.3vh + 0.75vw, 30px); "
     "line-height: 1.3; } .rr-caption-presenter h2 { font-size: 1.15em; }</style>"
@@ -561,8 +564,11 @@ def caption_installer(key: str) -> str:
     )
 
 
-#: The band's looks in the dark theme: light text on a dark band, the rule the rods' light blue.
-CAPTION_DARK_CSS = "body #rigidrel-caption { background: #17150A; color: #F2F2F2; border-bottom-color: #4DBFFF; } "
+#: The band in the dark theme: its colours as the dark canvas shows every colour (lightness flipped).
+CAPTION_DARK_CSS = (
+    f"body #rigidrel-caption {{ background: {shaded(CAPTION_GROUND, 'dark')}; color: {shaded(CAPTION_INK, 'dark')}; "
+    f"border-bottom-color: {shaded(CAPTION_RULE, 'dark')}; }} "
+)
 
 
 def page_style(shade: Shade) -> str:

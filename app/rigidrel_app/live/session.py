@@ -153,9 +153,8 @@ class Session:
             resolved = resolve_settings(self.settings)
             assert isinstance(resolved, Resolved)
         with client.atomic():
+            # the panel's look for ``shade`` came with the server's own (the app's theme for new tabs)
             self.controls = build_controls(client.gui, self.settings, lesson, follow, self.caption_key, shade)
-            if shade != "light":
-                configure_panel(client.gui, shade)
             self.canvas_report = add_canvas_report(client.gui)
             self.renderer = PageRenderer(client.scene)
             self.playback = Playback.start((-1.0, 1.0))
@@ -166,7 +165,7 @@ class Session:
                 self._apply(resolved, refit=True)
                 self._set_notice(self.notice, "scene")
                 if shade != "light":
-                    self._send_caption()
+                    self._send_page()
 
     # ------------------------------------------------------------------ wiring
     def _wire(self) -> None:
@@ -288,7 +287,7 @@ class Session:
                         self.go_to_step(index)
             elif action is Action.TOGGLE_CAPTION:
                 self.caption_shown = not self.caption_shown
-                self._send_caption()
+                self._send_page()
             elif action is Action.LEAD:
                 if self.hooks is not None:
                     self.hooks.lead(self)
@@ -308,7 +307,7 @@ class Session:
                 panel.expand()
             if self.drawn is not None:
                 self._apply(self.drawn.resolved, refit=True)
-            self._send_caption()
+            self._send_page()
 
     def set_shade(self, shade: Shade) -> None:
         """The tab's theme: the dark projector theme (light ink on black: the canvas inverted by the
@@ -324,7 +323,7 @@ class Session:
             self._set_notice(self.notice, self._notice_place)
             if self.drawn is not None:
                 self._apply(self.drawn.resolved, refit=False)
-            self._send_caption()
+            self._send_page()
 
     # ------------------------------------------------------------------ a lesson
     def go_to_step(self, index: int, report: bool = True) -> None:
@@ -367,7 +366,7 @@ class Session:
                 c.locks.visible = bool(reason)
         if c.lesson is not None:
             c.lesson.show_step(index)
-        self._send_caption()
+        self._send_page()
 
     def show_leader(self, leads: bool | None) -> None:
         """The Lesson folder's line on who leads (``None``: no tab leads)."""
@@ -383,7 +382,7 @@ class Session:
             if self.controls.lesson.status.content != text:
                 self.controls.lesson.status.content = text
 
-    def _send_caption(self) -> None:
+    def _send_page(self) -> None:
         """The caption band over the lanes and the page's style (the theme), through the tab's
         localStorage (the panel may be folded away)."""
         if self.lesson is None:
@@ -477,11 +476,6 @@ class Session:
         c = self.controls
         self.layout = layout = self._canvas_layout()
         self.drawn = d = build_drawing(resolved, areas=layout.chart_areas)
-        # a short canvas puts the lanes' titles on one line, unless this scene's are too long for one
-        one_line = titles_fit_one_line([p.title for p in d.lane_pictures(d.window[0], layout)], layout)
-        if layout.lanes[0].title_lines == 1 and not one_line:  # the text steps down instead
-            self.layout = layout = self._canvas_layout(one_line_titles=False)
-            self.drawn = d = build_drawing(resolved, areas=layout.chart_areas)
         c.show_settings(self.settings)
         choices = frame_choices(resolved.scene)
         if tuple(c.frame.options) != choices:
@@ -511,7 +505,13 @@ class Session:
         legend = d.legend()
         rows = legend_rows(legend, layout.legend.width, layout.theme)
         if rows != LEGEND_ROWS:  # the plots give the legend the rows it needs (their curves still fit)
-            self.layout = layout = self._canvas_layout(rows, one_line)
+            self.layout = layout = self._canvas_layout(rows)
+        if layout.lanes[0].title_lines == 1 and not titles_fit_one_line(
+            [p.title for p in d.lane_pictures(d.window[0], layout)], layout
+        ):
+            # this scene's lane titles are too long for one line: they keep two, the text steps down
+            self.layout = layout = self._canvas_layout(rows, one_line_titles=False)
+            self.drawn = d = build_drawing(resolved, areas=layout.chart_areas)
         frames: list[ChartFrame] = []
         picture = PagePicture()
         for chart, place in zip(d.charts, layout.charts, strict=True):
@@ -528,7 +528,7 @@ class Session:
         if self.lesson is not None and self.caption_off_step != (
             resolved.scene.kind != self.lesson.steps[self.step_index].scenario.settings.scene
         ):
-            self._send_caption()
+            self._send_page()
 
     def fit_camera(self) -> None:
         if self.layout is None:

@@ -158,11 +158,16 @@ MIN_PLOT_PX = 150.0
 TITLE_SPARE = 1.08
 
 
+def one_line(title: str) -> str:
+    """A lane's two-line title (the frame and its time, the clock readings) on one line."""
+    return "     ".join(title.split("\n"))
+
+
 def titles_fit_one_line(titles: Sequence[str], layout: CanvasLayout) -> bool:
     """Whether each lane's title (two lines) fits its lane on one line at :data:`MIN_TEXT_PX`, with
     :data:`TITLE_SPARE` to spare."""
     return all(
-        text_width("     ".join(t.split("\n")), MIN_TEXT_PX * TITLE_SPARE) <= lane.band.width
+        text_width(one_line(t), MIN_TEXT_PX * TITLE_SPARE) <= lane.band.width
         for t, lane in zip(titles, layout.lanes, strict=True)
     )
 
@@ -173,7 +178,7 @@ def lane_title_text(title: str, layout: LaneLayout, px: float) -> tuple[str, flo
     :data:`MIN_TEXT_PX` so that it fits the lane's width; two lines if even that does not fit."""
     if layout.title_lines == 2 or "\n" not in title:
         return title, px
-    one = "     ".join(title.split("\n"))
+    one = one_line(title)
     fit = px * layout.band.width / max(text_width(one, px), 1.0)
     return (one, min(px, fit)) if fit >= MIN_TEXT_PX else (title, px)
 
