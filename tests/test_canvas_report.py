@@ -39,9 +39,13 @@ def test_the_page_measures_a_high_density_screen() -> None:
     assert (measured.width, measured.height, measured.measured) == (1096, 720, True)
     slow = measured.reported(1918, 1260)  # the client renders at 0.875 for a while: the page is the same
     assert (slow.width, slow.height, slow.measured) == (1096, 720, True) and slow.resolution == 1.75
-    # the panel minimised (presenter mode): only the camera speaks, read at the ratio last known
-    wide = slow.reported(2240, 1260)
-    assert (wide.width, wide.height, wide.resolution, wide.measured) == (1280, 720, 1.75, False)
+    # a new size in the camera's pixels waits for the page's own report: pixels cannot tell a new
+    # size at the same resolution (1280 x 720 at 1.75) from another at another (1120 x 630 at 2)
+    assert slow.reported(2240, 1260) == slow
+    # and a camera report that arrives after the page's (the canvas before the panel folded away)
+    wide = CanvasSize.measured_by_page(1280, 720, 2.0)
+    assert wide.reported(2192, 1440) == wide
+    assert wide.reported(2240, 1260) == CanvasSize(1280, 720, 1.75, True)  # only a step of the resolution
 
 
 def test_without_the_page_a_step_of_the_clients_resolution_is_not_a_new_canvas() -> None:
@@ -61,10 +65,10 @@ def test_without_the_page_a_step_of_the_clients_resolution_is_not_a_new_canvas()
 
 
 def test_the_panel_folding_away_while_the_resolution_steps_keeps_the_height() -> None:
-    """Presenter mode on a slow machine: the panel folds away (the canvas 936 -> 1240 CSS px wide,
-    the same 720 high) just as the client steps its resolution down to 0.875. Only the camera speaks
-    (the page's report box is in the folded panel): its height says which resolution it is at."""
-    docked = CanvasSize.measured_by_page(936, 720, 1.0)
+    """Presenter mode on a slow machine, on a page that cannot run its script: the panel folds away
+    (the canvas 936 -> 1240 CSS px wide, the same 720 high) just as the client steps its resolution
+    down to 0.875. Only the camera speaks: its height says which resolution it is at."""
+    docked = CanvasSize(936.0, 720.0, 1.0)
     wide = docked.reported(1085, 630)  # 1240 x 720 at 0.875
     assert (wide.width, wide.height) == pytest.approx((1240.0, 720.0)) and wide.resolution == 0.875
     back = wide.reported(936, 720)  # the panel back, full resolution again

@@ -8,9 +8,10 @@ No viser message carries the pixel ratio, so the page measures its own canvas: a
 of the panel receives ``(width * SIZE_BASE + height) * RATIO_BASE + ratio`` (CSS px, rounded, and
 the rendered pixels per CSS px in thousandths, measured at the same instant) whenever that changes,
 written by a small script (viser's HTML element runs no ``<script>``; an image that fails to load
-runs its ``onerror``). Until it has spoken, or if it never does, and while the panel is minimised
-(presenter mode: the box is not on the page), the server infers the size from the camera's pixels
-(:meth:`~rigidrel_app.view.layout.CanvasSize.reported`) at the ratio it last heard of.
+runs its ``onerror``). The box lives in a panel of its own, floating and hidden, not in the control
+panel: viser unmounts a minimised panel's content, and presenter mode minimises the control panel
+just as it changes the canvas' size. Until the page has spoken, or if it never does, the server
+infers the size from the camera's pixels (:meth:`~rigidrel_app.view.layout.CanvasSize.reported`).
 """
 
 from __future__ import annotations
@@ -60,7 +61,8 @@ def decode(value: float) -> CssSize | None:
 
 
 def script(uuid: str) -> str:
-    """The HTML that hides the box (its whole row) and keeps it up to date with the canvas."""
+    """The HTML that hides the box's panel (its whole window) and keeps the box up to date with the
+    canvas."""
     js = (
         "(function () { var last = ''; setInterval(function () { "
         f"var box = document.getElementById('{uuid}'); "
@@ -74,12 +76,17 @@ def script(uuid: str) -> str:
         "set.call(box, v); box.dispatchEvent(new Event('input', { bubbles: true })); "
         f"}}, {POLL_MS}); }})()"
     )
-    style = f'<style>div:has(> .mantine-Flex-root [for="{uuid}"]) {{ display: none !important; }}</style>'
+    style = f'<style>div:has(> [data-dock-group] [for="{uuid}"]) {{ display: none !important; }}</style>'
     return f'{style}<img alt="" src="data:," style="display: none" onerror="{js}">'
 
 
 def add_canvas_report(gui: viser.GuiApi) -> viser.GuiNumberHandle[float]:
-    """The hidden box the page writes its canvas' CSS size into (read it with :func:`decode`)."""
-    box = gui.add_number(LABEL, 0.0, step=1.0, order=1e9)
-    gui.add_html(script(box._impl.uuid), order=1e9 + 1)  # viser has no public id of a handle
+    """The hidden box the page writes its canvas' CSS size into (read it with :func:`decode`), in a
+    floating panel of its own that the page never shows and that stays mounted while the control
+    panel is minimised."""
+    panel = gui.add_panel()
+    with panel.add_tab(LABEL):
+        box = gui.add_number(LABEL, 0.0, step=1.0)
+        gui.add_html(script(box._impl.uuid))  # viser has no public id of a handle
+    panel.float(x=-1, y=-1, width=1, height=1)
     return box

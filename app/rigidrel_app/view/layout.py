@@ -219,7 +219,12 @@ class CanvasSize:
         """The canvas after its camera reports ``pixels_wide`` × ``pixels_high`` rendered pixels.
 
         The same CSS size after a step of the client's adaptive resolution (:data:`RESOLUTION_STEPS`,
-        each side within 1.5 px, the browser's rounding) is a change of resolution only. A new width
+        each side within 1.5 px, the browser's rounding) is a change of resolution only. Any other
+        report leaves a size the page measured as it is: pixels cannot tell a new size from a new
+        size at a new resolution, the page reports a new size itself (it looks four times a
+        second), and a camera report may arrive after the page's.
+
+        Without the page (before it has spoken, or a page that cannot run its script): a new width
         with the height of the same CSS size at a step of the resolution is the panel folding away
         or coming back (presenter mode) while the resolution stepped: the height is kept, the width
         read at that resolution. Anything else is a new size, read at the resolution last known.
@@ -228,6 +233,8 @@ class CanvasSize:
             r = self.resolution * step
             if abs(pixels_wide - self.width * r) <= 1.5 and abs(pixels_high - self.height * r) <= 1.5:
                 return CanvasSize(self.width, self.height, r, self.measured)
+        if self.measured:
+            return self
         for step in RESOLUTION_STEPS:
             r = self.resolution * step
             if abs(pixels_high - self.height * r) <= 1.5:
