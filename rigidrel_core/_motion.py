@@ -55,18 +55,21 @@ from ._validate import non_decreasing
 FloatArray = npt.NDArray[np.float64]
 
 #: From this many sorted times on, rows are sampled piece by piece (measured crossover with the
-#: branch-free form: 1024 to 2048 times for 4 or 22 rows).
-PIECEWISE_MIN = 2048
-#: From this many unsorted times on, rows are sampled by blocks (measured crossover: 2048 to 4096).
-_SHUFFLED_MIN = 4096
+#: branch-free form, quiet machine: about 750 times for 4 rows, 1200 for 22; at 1024 times the
+#: piecewise path took 0.86 and 1.13 times the branch-free form's time).
+PIECEWISE_MIN = 1024
+#: From this many unsorted times on, rows are sampled by blocks (measured crossover: about 2048
+#: times for 4 and for 22 rows).
+_SHUFFLED_MIN = 2048
 #: Times per block on the piecewise paths: a block's work arrays (256 KiB each) stay in the
 #: caches, and numpy's cost per call (0.5 to 2 us on a shared 2-core machine) is spread over
 #: enough samples: on such a machine 4096 was 1.3 times slower than 32768 on sorted curved
 #: pieces, 65536 a few percent faster.
 _BLOCK = 32768
 #: Up to this many samples (rows x times) are computed in Python floats, one at a time (measured
-#: crossover with the branch-free form's numpy calls: 150 to 200 samples for 4 rows).
-_SCALAR_MAX = 128
+#: crossover with the branch-free form's numpy calls, quiet machine: about 90 samples for 2 rows,
+#: 120 for 4).
+_SCALAR_MAX = 96
 #: The three pieces of a row, in time order (see :func:`_piece`).
 _BEFORE, _CURVED, _AFTER = 0, 1, 2
 #: Stand-in for a zero radius in a denominator that is then multiplied by zero.
@@ -644,7 +647,7 @@ class MotionPlan:
 
     def __getattr__(self, name: str) -> FloatArray:
         """A field not yet looked up: its column of the plan's table, kept (a view each; the
-        branch-free form reads none of them, only :attr:`_columns`)."""
+        branch-free form reads none of them, only the table)."""
         index = _FIELD_INDEX.get(name)
         table = self.__dict__.get("_table")
         if index is None or table is None:
@@ -665,32 +668,6 @@ class MotionPlan:
 
     def column(self, name: str) -> FloatArray:
         return getattr(self, name)[:, None]
-
-    @property
-    def _columns(self) -> tuple[FloatArray, ...]:
-        """The branch-free form's constants as ``(rows, 1)`` columns: sign, radius squared, q0,
-        t_vertex, 2 t_vertex, x_hyp, t_start, t_stop; then the two lines' slopes and intercepts as
-        ``(2, rows, 1)`` (before the start, after the stop). Views of the plan's table: no arithmetic;
-        made once (kept in the instance's dict: ``functools.cached_property`` takes a lock each time)."""
-        columns = self.__dict__.get("_columns_kept")
-        if columns is None:
-            columns = self.__dict__["_columns_kept"] = self._make_columns()
-        return columns
-
-    def _make_columns(self) -> tuple[FloatArray, ...]:
-        c = self._table.T[:, :, None]
-        return (
-            c[_SIGN],
-            c[_RADIUS2],
-            c[_Q0],
-            c[_T_VERTEX],
-            c[_TWO_T_VERTEX],
-            c[_X_HYP],
-            c[_T_START],
-            c[_T_STOP],
-            c[_W_START : _W_STOP + 1 : _W_STOP - _W_START],
-            c[_X0_START : _X0_STOP + 1 : _X0_STOP - _X0_START],
-        )
 
     @property
     def _rows(self) -> list[_Row]:
@@ -778,24 +755,36 @@ class MotionPlan:
             return self._positions_block_unchecked(t)
 
     def _positions_block_unchecked(self, t: FloatArray) -> FloatArray:
-        """Every piece at every time for all rows at once, then the piece each time is on."""
-        sign, r2, q0, tv, two_tv, x_hyp, t_start, t_stop, slopes, intercepts = self._columns
+        """Every piece at every time for all rows at once, then the piece each time is on.
+
+        The constants and the times are first spread over ``(rows, times)`` in two copies: an
+        operation between two arrays of one shape costs numpy about a third of one that broadcasts
+        a ``(rows, 1)`` column against the times, and a few hundred samples cost little more than
+        the call. The same operations on the same values: bitwise the broadcast form.
+        """
+        grid = np.empty((_BLOCK_COLUMNS.size + 1, self.rows, t.shape[0]))
+        np.copyto(grid[:-1], self._table.T[_BLOCK_COLUMNS, :, None])
+        tv, r2, q0, two_tv, sign, x_hyp, w_start, x0_start, w_stop, x0_stop, t_start, t_stop, tt = grid
+        np.copyto(tt, t)
         # hyperbola, anchored at t' = 0
-        s = np.subtract(t, tv)
-        np.multiply(s, s, s)
-        np.add(s, r2, s)
-        np.sqrt(s, s)
-        np.add(s, q0, s)
-        h = np.subtract(t, two_tv)
-        np.multiply(h, t, h)
-        np.divide(h, s, h)
+        np.subtract(tt, tv, tv)
+        np.multiply(tv, tv, tv)
+        np.add(tv, r2, tv)
+        np.sqrt(tv, tv)
+        np.add(tv, q0, tv)
+        h = np.subtract(tt, two_tv)  # the result: not a view that would keep the grid alive
+        np.multiply(h, tt, h)
+        np.divide(h, tv, h)
         np.multiply(h, sign, h)
         np.add(h, x_hyp, h)
-        # inertial pieces, both at once: (before, after)
-        lines = np.multiply(slopes, t)
-        np.add(lines, intercepts, lines)
-        h = np.where(t < t_start, lines[0], h)
-        return np.where(t > t_stop, lines[1], h)
+        # the inertial pieces, before the start and after the stop
+        np.multiply(w_start, tt, w_start)
+        np.add(w_start, x0_start, w_start)
+        np.multiply(w_stop, tt, w_stop)
+        np.add(w_stop, x0_stop, w_stop)
+        np.copyto(h, w_start, where=np.less(tt, t_start))
+        np.copyto(h, w_stop, where=np.greater(tt, t_stop))
+        return h
 
     def _positions_sorted(self, t: FloatArray) -> FloatArray:
         """Sorted times: each row's pieces are runs of ``t`` (two binary searches), each evaluated
@@ -967,3 +956,7 @@ _SIGN, _RADIUS, _RADIUS2, _Q0, _T_VERTEX, _TWO_T_VERTEX, _X_HYP, _T_START, _T_ST
     for name in ("sign", "radius", "radius2", "q0", "t_vertex", "two_t_vertex", "x_hyp", "t_start", "t_stop")
 )
 _W_START, _W_STOP, _X0_START, _X0_STOP = (_PLAN_FIELDS.index(n) for n in ("w_start", "w_stop", "x0_start", "x0_stop"))
+#: The branch-free form's constants, in the order its arithmetic takes them (columns of the table).
+_BLOCK_COLUMNS = np.array(
+    [_T_VERTEX, _RADIUS2, _Q0, _TWO_T_VERTEX, _SIGN, _X_HYP, _W_START, _X0_START, _W_STOP, _X0_STOP, _T_START, _T_STOP]
+)
