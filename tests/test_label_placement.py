@@ -11,6 +11,7 @@ import pytest
 import rigidrel_core as rr
 from rigidrel_app.backends.plotly import label_to_annotation
 from rigidrel_app.export.diagram_html import DIAGRAM_PX, LENGTH_PX
+from rigidrel_app.view.canvas import legend_rows
 from rigidrel_app.view.diagrams import (
     ENDS_NOW_NAME,
     ENDS_NOW_SYMBOL,
@@ -20,9 +21,11 @@ from rigidrel_app.view.diagrams import (
     minkowski_in_frame,
     minkowski_now,
 )
+from rigidrel_app.view.layout import LEGEND_ROWS, MIN_TEXT_PX, NORMAL, PRESENTER, canvas_layout
 from rigidrel_app.view.placement import (
     Box,
     Obstacles,
+    axis_name_boxes,
     label_box,
     obstacles,
     overlaps,
@@ -79,15 +82,19 @@ def app_and_page_charts(s: Settings) -> list[Chart]:
 
 
 def assert_placed_clear(chart: Chart) -> None:
-    """No two label boxes meet; every moved label lies in the plot area, off every marker."""
+    """No two label boxes meet; every moved label lies in the plot area, off every marker and off
+    the axis names the canvas writes inside the plot."""
     assert chart.area_px is not None
     assert overlaps(chart) == [], chart.title
     w, h = chart.area_px
     obs = obstacles(chart, chart.area_px)
-    for label in (i for i in chart.items if isinstance(i, Label) and i.offset_px is not None):
+    moved = [i for i in chart.items if isinstance(i, Label) and i.offset_px is not None]
+    names = axis_name_boxes(chart, chart.area_px, max(i.size for i in moved)) if moved else []
+    for label in moved:
         box = label_box(chart, chart.area_px, label)
         assert box.inside(w, h), (label.text, box)
         assert not any(box.meets(m) for m in obs.markers), label.text
+        assert not any(box.meets(n) for n in names), (label.text, "an axis name")
 
 
 @pytest.mark.parametrize("settings", SETTINGS + HALL, ids=setting_id)
@@ -211,3 +218,42 @@ def test_rod_ends_now_are_not_drawn_as_events() -> None:
     chart = minkowski_in_frame(scene, rr.LAB, DIAGRAM_PX)
     events = next(i for i in chart.items if isinstance(i, Points))
     assert events.style.name == "events" and events.symbol == "circle"
+
+
+def placed_on_the_canvas(s: Settings, width: float, height: float, presenter: bool) -> list[Chart]:
+    """The app's three charts as the live canvas places them: for its plot areas (the legend given
+    the rows it needs, as the session does), and for labels of the size it draws them at (the
+    presenter theme's are larger; in a crowded plot they step down, never under MIN_TEXT_PX)."""
+    r = resolve(s)
+    assert isinstance(r, Resolved)
+    theme = PRESENTER if presenter else NORMAL
+    layout = canvas_layout(width, height, theme)
+    d = build_drawing(r, areas=layout.chart_areas, label_px=layout.theme.text_px)
+    rows = legend_rows(d.legend(), layout.legend.width, layout.theme)
+    if rows != LEGEND_ROWS:
+        layout = canvas_layout(width, height, theme, rows)
+        d = build_drawing(r, areas=layout.chart_areas, label_px=layout.theme.text_px)
+    for chart in d.charts:
+        labels = [i for i in chart.items if isinstance(i, Label) and i.movable]
+        assert all(MIN_TEXT_PX <= label.size <= layout.theme.text_px for label in labels)
+    return list(d.charts)
+
+
+@pytest.mark.parametrize("settings", SETTINGS + HALL, ids=setting_id)
+@pytest.mark.parametrize("canvas", [(1240.0, 720.0 - 100.0), (1880.0, 1080.0 - 120.0)], ids=["1280x720", "1920x1080"])
+def test_labels_drawn_at_the_presenter_size_overprint_nothing(settings: Settings, canvas: tuple[float, float]) -> None:
+    """Presenter mode on a projector (the panel folded away, a lesson's caption above): the labels'
+    boxes are reserved at the size the canvas draws them at, smaller only where the plot is crowded."""
+    for chart in placed_on_the_canvas(settings, *canvas, presenter=True):
+        assert_placed_clear(chart)
+
+
+def test_a_crowded_plot_steps_its_labels_down() -> None:
+    """Bell's spaceships' length panel on a 1280 x 720 projector in presenter mode: ten labels in a
+    plot about 320 x 180 px do not all fit at 19 px; they step down, and no further than needed."""
+    charts = placed_on_the_canvas(Settings("bell-spaceships"), 1240.0, 720.0, presenter=True)
+    sizes = {i.size for i in charts[2].items if isinstance(i, Label) and i.movable}
+    assert len(sizes) == 1 and MIN_TEXT_PX <= min(sizes) < PRESENTER.text_px
+    assert_placed_clear(charts[2])
+    roomy = placed_on_the_canvas(Settings("bell-spaceships"), 1880.0, 1080.0, presenter=True)
+    assert {i.size for i in roomy[2].items if isinstance(i, Label) and i.movable} == {PRESENTER.text_px}

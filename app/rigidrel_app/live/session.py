@@ -136,6 +136,8 @@ class Session:
         self.drawn: Drawn | None = None
         self.presenter = False
         """Presenter mode (key F): the control panel minimized, the projector theme."""
+        self.legend_rows = LEGEND_ROWS
+        """The legend's rows in the page last laid out (the first guess for the next drawing's)."""
         self.layout: CanvasLayout | None = None
         camera = client.camera
         self.canvas_size = CanvasSize(float(camera.image_width), float(camera.image_height))
@@ -474,8 +476,10 @@ class Session:
     # ------------------------------------------------------------------ drawing
     def _apply(self, resolved: Resolved, refit: bool) -> None:
         c = self.controls
-        self.layout = layout = self._canvas_layout()
-        self.drawn = d = build_drawing(resolved, areas=layout.chart_areas)
+        # the legend's rows as the last drawing needed them: a slider's redraw then lays out once,
+        # and its labels are placed for the plots' areas once (not again by chart_picture)
+        self.layout = layout = self._canvas_layout(self.legend_rows)
+        self.drawn = d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
         c.show_settings(self.settings)
         choices = frame_choices(resolved.scene)
         if tuple(c.frame.options) != choices:
@@ -504,14 +508,15 @@ class Session:
         c.time.retarget(time_entry(window, nice_step(window[1] - window[0])))
         legend = d.legend()
         rows = legend_rows(legend, layout.legend.width, layout.theme)
-        if rows != LEGEND_ROWS:  # the plots give the legend the rows it needs (their curves still fit)
+        if rows != self.legend_rows:  # the plots give the legend the rows it needs (their curves still fit)
+            self.legend_rows = rows
             self.layout = layout = self._canvas_layout(rows)
         if layout.lanes[0].title_lines == 1 and not titles_fit_one_line(
             [p.title for p in d.lane_pictures(d.window[0], layout)], layout
         ):
             # this scene's lane titles are too long for one line: they keep two, the text steps down
             self.layout = layout = self._canvas_layout(rows, one_line_titles=False)
-            self.drawn = d = build_drawing(resolved, areas=layout.chart_areas)
+            self.drawn = d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
         frames: list[ChartFrame] = []
         picture = PagePicture()
         for chart, place in zip(d.charts, layout.charts, strict=True):

@@ -18,8 +18,8 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
-from .layout import LEGEND_ROW_EM, ChartLayout, Rect, Theme, text_width
-from .placement import place_labels
+from .layout import LEGEND_ROW_EM, MIN_TEXT_PX, ChartLayout, Rect, Theme, text_width
+from .placement import AXIS_NAME_DROP_EM, AXIS_NAME_INSET_PX, place_labels
 from .vocabulary import Area, Chart, Dash, Item, Label, Points, Polyline, Segments, Style, rgb
 
 FloatArray = npt.NDArray[np.float64]
@@ -380,7 +380,9 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
                     xv, zv = xv + dx, zv + dz
                 offset = {"left": 0.4 * theme.text_px, "right": -0.4 * theme.text_px, "center": 0.0}[it.anchor]
                 anchor: Anchor = {"left": "center-left", "right": "center-right", "center": "center-center"}[it.anchor]  # type: ignore[assignment]
-                texts.append(PageText(xv + offset, zv, page_text(it.text), theme.text_px, anchor))
+                # a placed label at its own size: smaller than the theme's in a crowded plot
+                px = min(it.size, theme.text_px) if it.movable else theme.text_px
+                texts.append(PageText(xv + offset, zv, page_text(it.text), px, anchor))
     return PagePicture(tuple(lines), tuple(dots), tuple(texts))
 
 
@@ -456,13 +458,11 @@ def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme)
         texts.append(PageText(float(x), p.z0 - tick - 0.1 * theme.text_px, s, theme.text_px, "top-center"))
     for z, s in zip(zs, tick_text(yt), strict=True):
         texts.append(PageText(p.x0 - tick - 3.0, float(z), s, theme.text_px, "center-right"))
-    # axis names at the axes' far ends, inside the plot (where a physicist writes them)
-    texts.append(
-        PageText(p.x1 - 4.0, p.z0 + 0.8 * theme.text_px, page_text(chart.x_title), theme.text_px, "center-right")
-    )
-    texts.append(
-        PageText(p.x0 + 4.0, p.z1 - 0.8 * theme.text_px, page_text(chart.y_title), theme.text_px, "center-left")
-    )
+    # axis names at the axes' far ends, inside the plot (where a physicist writes them; the event
+    # labels are placed clear of them, placement.axis_name_boxes)
+    inset, drop = AXIS_NAME_INSET_PX, AXIS_NAME_DROP_EM * theme.text_px
+    texts.append(PageText(p.x1 - inset, p.z0 + drop, page_text(chart.x_title), theme.text_px, "center-right"))
+    texts.append(PageText(p.x0 + inset, p.z1 - drop, page_text(chart.y_title), theme.text_px, "center-left"))
     texts.append(title)
     return PagePicture(lines, (), tuple(texts))
 
@@ -473,7 +473,7 @@ def chart_picture(chart: Chart, layout: ChartLayout, theme: Theme) -> tuple[Char
     area = (f.plot.width, f.plot.height)
     if chart.area_px != area and any(isinstance(i, Label) and i.movable for i in chart.items):
         # the event labels placed again for this plot area (unless they were placed for it already)
-        chart = place_labels(chart, area)
+        chart = place_labels(chart, area, MIN_TEXT_PX)
     return f, axes_picture(chart, f, layout, theme) + items_picture(chart.items, f, theme)
 
 

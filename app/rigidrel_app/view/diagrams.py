@@ -15,6 +15,7 @@ import numpy as np
 import rigidrel_core as rr
 
 from .layers import DEFAULT_LAYERS, Layer
+from .layout import MIN_TEXT_PX
 from .placement import place_labels
 from .sampling import ADAPTIVE, Sampler
 from .signals import Signals, signal_items
@@ -159,6 +160,7 @@ def minkowski_static(
     area_px: tuple[float, float] | None = None,
     layers: frozenset[Layer] = DEFAULT_LAYERS,
     signals: Signals | None = None,
+    label_px: float = EVENT_LABEL_PX,
 ) -> Chart:
     """Everything in a Minkowski diagram that does not move with playback.
 
@@ -168,7 +170,8 @@ def minkowski_static(
     what is drawn (:class:`~.layers.Layer`): the origin's light cone, the other frame's axes, the
     world tubes and end worldlines, the interior worldlines. ``signals``: the light signals of
     :mod:`.signals` in this diagram's frame, drawn if given (their arrivals named and placed with
-    the events' labels, so none overprints).
+    the events' labels, so none overprints). ``label_px``: the size the labels are drawn at (CSS px),
+    which their placement reserves.
     """
     frame = view.frame
     px_per_x = panel_px / max(x_range[1] - x_range[0], 1e-300)
@@ -203,7 +206,7 @@ def minkowski_static(
         # name the other frame's time axis where it leaves the top of the window
         t_label = t0 + 0.92 * (t1 - t0)
         x_label = float(np.interp(t_label, both[0, :, 0], both[0, :, 1]))
-        items.append(Label(x_label, t_label, f"t{other}", Style(FRAME_COLOR), size=EVENT_LABEL_PX, movable=True))
+        items.append(Label(x_label, t_label, f"t{other}", Style(FRAME_COLOR), size=label_px, movable=True))
     # obstacles (a wall): straight worldlines
     tt = np.array([t0, t1])
     for obstacle in scene.obstacles:
@@ -245,10 +248,10 @@ def minkowski_static(
         ex = np.array([e[1] for e in events.values()])
         items.append(Points(ex, et, Style(INK, name="events", group="events"), size=7))
         for name, (t, x) in events.items():
-            items.append(Label(x, t, event_label(name), Style(INK), size=EVENT_LABEL_PX, movable=True))
+            items.append(Label(x, t, event_label(name), Style(INK), size=label_px, movable=True))
     for it in signal_layer:  # the rays and arrivals over the worldlines; their names placed with the events'
         if isinstance(it, Label):
-            items.append(replace(it, size=EVENT_LABEL_PX, movable=True))
+            items.append(replace(it, size=label_px, movable=True))
         elif not isinstance(it, Area):
             items.append(it)
     chart = Chart(
@@ -262,7 +265,7 @@ def minkowski_static(
     )
     if area_px is None:
         area_px = (panel_px, panel_px * (t1 - t0) / max(x_range[1] - x_range[0], 1e-300))
-    return place_labels(chart, area_px)
+    return place_labels(chart, area_px, MIN_TEXT_PX)
 
 
 def minkowski_now(view: View, now: float, span: float, ends: FloatArray) -> tuple[Item, ...]:
@@ -295,6 +298,7 @@ def length_static(
     panel_px: tuple[float, float],
     sampler: Sampler = ADAPTIVE,
     comoving: tuple[FloatArray, FloatArray, str] | None = None,
+    label_px: float = EVENT_LABEL_PX,
 ) -> Chart:
     """Equal-time length of each rod against time, in the lab and in the chosen frame (Fig. 2).
 
@@ -317,6 +321,7 @@ def length_static(
             style = Style(color, 2.0, "dash", name=f"{rod.name}, {comoving[2]}")
             items.append(Polyline(comoving[0], comoving[1][r], style))
     px_per_length = panel_px[1] / (LENGTH_HEADROOM * top)
+    half_px_t, half_px_length = 0.5 * (t_range[1] - t_range[0]) / panel_px[0], 0.5 / px_per_length
     for frame, prime, dash in frames:
         curves = sampler.lengths(scene, frame, t_range, px_per_length)
         for r, rod in enumerate(scene.rods):
@@ -324,14 +329,21 @@ def length_static(
             short = "lab" if not prime else (frame.name or "custom")  # the chart's title gives β
             name = f"{rod.name}, {short} (t{typeset_prime(prime)})"
             items.append(Polyline(curves[r].t, curves[r].x, Style(color, 2.5 if not prime else 2.0, dash, name=name)))
-        # the named events on the curves
+        # the named events on the curves; events on one spot (within half a pixel: Bell's two ships
+        # have one length curve in the lab) share one dot and one label
+        marks: list[tuple[float, float, list[str]]] = []
         for name, (te, _) in scene.events_in(frame).items():
             if t_range[0] <= te <= t_range[1]:
-                le = scene.lengths(np.array([te]), frame)[:, 0]
-                rod = scene.event_rod(name)
-                items.append(Points(np.array([te]), le[rod : rod + 1], Style(INK), size=7))
-                text = event_label(name) + (" (t′)" if prime else "")
-                items.append(Label(te, float(le[rod]), text, Style(INK), size=EVENT_LABEL_PX, movable=True))
+                le = float(scene.lengths(np.array([te]), frame)[scene.event_rod(name), 0])
+                same = [m for m in marks if abs(m[0] - te) <= half_px_t and abs(m[1] - le) <= half_px_length]
+                if same:
+                    same[0][2].append(name)
+                else:
+                    marks.append((te, le, [name]))
+        for te, le, names in marks:
+            items.append(Points(np.array([te]), np.array([le]), Style(INK), size=7))
+            text = ", ".join(event_label(name) for name in names) + (" (t′)" if prime else "")
+            items.append(Label(te, le, text, Style(INK), size=label_px, movable=True))
     chart = Chart(
         items=tuple(items),
         x_title="time in its own frame (t or t′)",
@@ -340,7 +352,7 @@ def length_static(
         y_range=(0.0, top * LENGTH_HEADROOM if top > 0 else 1.0),
         title="Equal-time length (Fig. 2)",
     )
-    return place_labels(chart, panel_px)
+    return place_labels(chart, panel_px, MIN_TEXT_PX)
 
 
 def length_now(now: float, y_top: float, lengths: FloatArray) -> tuple[Item, ...]:

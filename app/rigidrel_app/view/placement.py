@@ -33,7 +33,7 @@ LINE_EM = 1.45
 #: Clear space between a point and the nearest edge of its label, CSS pixels (beyond half a marker).
 GAP_PX = 6.0
 #: Room kept around a box when testing it against curves and other boxes, CSS pixels.
-MARGIN_PX = 1.5
+MARGIN_PX = 3.0
 #: A marker's box per its size: the app's canvas draws markers this much larger than plotly does
 #: (:func:`rigidrel_app.view.canvas.items_picture`: size x line scale 4/3 x 1.2), so text clear of
 #: the larger one is clear of both.
@@ -42,6 +42,11 @@ MARKER_SCALE = 1.6
 RINGS = 6
 #: Rings tried when none of the first :data:`RINGS` has a spot clear of labels and markers.
 FAR_RINGS = 12
+#: The canvas writes each axis's name inside the plot, at the axis's far end
+#: (:func:`rigidrel_app.view.canvas.axes_picture`): x's at the bottom right, y's at the top left,
+#: this far in from the plot's side (px), its middle this many font sizes from the bottom or top.
+AXIS_NAME_INSET_PX = 4.0
+AXIS_NAME_DROP_EM = 0.8
 
 
 @dataclass(frozen=True)
@@ -480,27 +485,107 @@ def _nearer_marker_any(ax: float, ay: float, boxes: _Boxes, markers: _Boxes) -> 
     return np.any(dist < own[:, None], axis=1)
 
 
-def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
+def place_labels(chart: Chart, area_px: tuple[float, float], smallest: float | None = None) -> Chart:
     """``chart`` with every movable label moved to a free spot (see the module docstring), for a plot
     area of ``area_px`` CSS pixels (width, height). Deterministic: the same chart and area always give
-    the same placement. Labels whose point lies outside the chart's ranges are left alone."""
+    the same placement. Labels whose point lies outside the chart's ranges are left alone.
+
+    The axes' names, written inside the plot by the canvas at the movable labels' size, are kept
+    clear too (:func:`axis_name_boxes`). The labels are placed in the chart's order; when some
+    label finds no spot clear of the others (a crowded plot, where the order decides), the
+    placement is made again with the labels that found none placed first, up to
+    :data:`REORDERINGS` times, and the first placement with the fewest such labels is kept. If some
+    are still left and ``smallest`` (CSS px) is given, the labels step down in size towards it
+    (:data:`LABEL_STEP_PX`) until none is: the labels keep their size where the plot has room."""
     area = (float(area_px[0]), float(area_px[1]))
     if not (area[0] > 0 and area[1] > 0):
         raise ValueError(f"area_px must be two positive pixel sizes, got {area_px!r}")
     obs = obstacles(chart, area)
+    movable = [i for i, item in enumerate(chart.items) if isinstance(item, Label) and item.movable]
+    if not movable:
+        return replace(chart, area_px=area)
+    size = max(chart.items[i].size for i in movable)  # type: ignore[union-attr]
+    names = axis_name_boxes(chart, area, size)
+    best: tuple[dict[int, Item], list[int]] | None = None
+    for step in _label_sizes(size, smallest):
+        sized = chart if step == size else _labels_at(chart, movable, step)
+        order = movable
+        for _ in range(REORDERINGS + 1):
+            placed, stuck = _place_in_order(sized, area, obs, order, names)
+            if best is None or len(stuck) < len(best[1]):
+                best = (placed, stuck)
+            if not stuck:
+                break
+            order = stuck + [i for i in order if i not in stuck]
+        if best is not None and not best[1]:
+            break
+    assert best is not None
+    items = tuple(best[0].get(i, item) for i, item in enumerate(chart.items))
+    return replace(chart, items=items, area_px=area)
+
+
+#: How many times a crowded plot's labels are placed again in another order (see :func:`place_labels`).
+REORDERINGS = 3
+#: The steps (CSS px) a crowded plot's labels take down towards the smallest size allowed.
+LABEL_STEP_PX = 2.0
+
+
+def _label_sizes(size: float, smallest: float | None) -> list[float]:
+    """``size``, then down by :data:`LABEL_STEP_PX` to ``smallest`` (itself the last) if it is smaller."""
+    sizes = [size]
+    if smallest is not None:
+        while sizes[-1] - LABEL_STEP_PX > smallest:
+            sizes.append(sizes[-1] - LABEL_STEP_PX)
+        if smallest < sizes[-1]:
+            sizes.append(smallest)
+    return sizes
+
+
+def _labels_at(chart: Chart, movable: list[int], size: float) -> Chart:
+    """``chart`` with its movable labels (indices ``movable``) at font ``size``."""
+    items = list(chart.items)
+    for i in movable:
+        items[i] = replace(items[i], size=size)  # type: ignore[type-var]
+    return replace(chart, items=tuple(items))
+
+
+def axis_name_boxes(chart: Chart, area: tuple[float, float], size: float) -> list[Box]:
+    """Where the canvas writes the chart's axis names inside its plot area (``size`` px text): the
+    x axis's at the bottom right, the y axis's at the top left (see :data:`AXIS_NAME_INSET_PX`)."""
+    width, height = area
+    boxes: list[Box] = []
+    if chart.x_title:
+        w, h = text_box_px(chart.x_title, size)
+        middle = height - AXIS_NAME_DROP_EM * size
+        boxes.append(
+            Box(width - AXIS_NAME_INSET_PX - w, middle - 0.5 * h, width - AXIS_NAME_INSET_PX, middle + 0.5 * h)
+        )
+    if chart.y_title:
+        w, h = text_box_px(chart.y_title, size)
+        middle = AXIS_NAME_DROP_EM * size
+        boxes.append(Box(AXIS_NAME_INSET_PX, middle - 0.5 * h, AXIS_NAME_INSET_PX + w, middle + 0.5 * h))
+    return boxes
+
+
+def _place_in_order(
+    chart: Chart, area: tuple[float, float], obs: Obstacles, order: list[int], reserved: list[Box]
+) -> tuple[dict[int, Item], list[int]]:
+    """The movable labels ``order`` (indices into the chart's items) placed one after the other,
+    clear of the ``reserved`` boxes too: each one's placed item by index, and the indices of those
+    that found no spot clear of labels and markers (kept at their point, with a leader line)."""
     no_curves = _Curves.of(Obstacles(np.empty(0), np.empty(0), np.empty(0), np.empty(0), ()))
     field = _Field(_Curves.of(obs), _Boxes.of(obs.markers), no_curves)
     taken: list[Box] = [label_box(chart, area, i) for i in chart.items if isinstance(i, Label) and not i.movable]
+    taken += reserved
     leaders: list[tuple[float, float, float, float]] = []
-    out: list[Item] = []
-    for item in chart.items:
-        if not (isinstance(item, Label) and item.movable):
-            out.append(item)
-            continue
+    out: dict[int, Item] = {}
+    stuck: list[int] = []
+    for index in order:
+        item = chart.items[index]
+        assert isinstance(item, Label)
         px, py = _to_px(chart, area, np.array([item.x]), np.array([item.y]))
         ax, ay = float(px[0]), float(py[0])
         if not (0.0 <= ax <= area[0] and 0.0 <= ay <= area[1]):
-            out.append(item)
             continue
         w, h = text_box_px(item.text, item.size)
         boxes = _Boxes.of(taken)
@@ -510,7 +595,8 @@ def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
         if best is None:
             best = _best_spot(ax, ay, w, h, item, area, boxes, field, False, FAR_RINGS)
         if best is None:  # nowhere free of labels and markers: keep the old spot, with a leader line
-            out.append(replace(item, leader=True))
+            out[index] = replace(item, leader=True)
+            stuck.append(index)
             continue
         _, _, dx, dy, leader = best
         placed = replace(item, anchor="center", offset_px=(dx, dy), leader=leader)
@@ -520,8 +606,8 @@ def place_labels(chart: Chart, area_px: tuple[float, float]) -> Chart:
             leaders.append((ax, ay, *_leader_end(ax, ay, box)))
             a = np.array(leaders, float)
             field = replace(field, leaders=_Curves.of(Obstacles(a[:, 0], a[:, 1], a[:, 2], a[:, 3], ())))
-        out.append(placed)
-    return replace(chart, items=tuple(out), area_px=area)
+        out[index] = placed
+    return out, stuck
 
 
 def overlaps(chart: Chart) -> list[tuple[str, str]]:

@@ -18,6 +18,7 @@ from . import camera as cam
 from .canvas import LegendEntry, legend_entries
 from .comoving import HORIZON_NAME, HORIZON_SYMBOL, ComovingInstant, RideTrack, ride_at, ride_track, simultaneity_items
 from .diagrams import (
+    EVENT_LABEL_PX,
     View,
     equal_scale_ranges,
     frame_title,
@@ -267,11 +268,13 @@ def build_drawing(
     resolved: Resolved,
     sampler: Sampler = ADAPTIVE,
     areas: tuple[tuple[float, float], tuple[float, float]] = (PLOT_AREA_PX, LENGTH_AREA_PX),
+    label_px: float = EVENT_LABEL_PX,
 ) -> Drawn:
     """Everything that depends only on the scene and frame (not on playback time).
 
     ``sampler`` samples the diagrams' curves (the app's adaptive one unless a benchmark swaps it);
-    ``areas`` are the plot areas (px) of the Minkowski diagrams and of the lengths chart.
+    ``areas`` are the plot areas (px) of the Minkowski diagrams and of the lengths chart;
+    ``label_px`` the size (CSS px) the diagrams' labels are drawn at, which their placement reserves.
     """
     plot_area, length_area = areas
     scene, frame = resolved.scene, resolved.frame
@@ -298,11 +301,13 @@ def build_drawing(
     layers = resolved.layers
     lab_signals, frame_signals = signals if signals is not None else (None, None)
     lab_chart = minkowski_static(
-        scene, lab_view, lab_t, lab_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers, lab_signals
-    )
+        scene, lab_view, lab_t, lab_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers, lab_signals,
+        label_px,
+    )  # fmt: skip
     frame_chart = minkowski_static(
-        scene, frame_view, fr_t, fr_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers, frame_signals
-    )
+        scene, frame_view, fr_t, fr_x, plot_area[0], resolved.overlay, sampler, label, plot_area, layers,
+        frame_signals, label_px,
+    )  # fmt: skip
     if resolved.cone is not None:  # the chosen event's light cone, in both diagrams
         lab_chart = _with_cone(lab_chart, scene, resolved.cone, lab)
         frame_chart = _with_cone(frame_chart, scene, resolved.cone, frame)
@@ -315,7 +320,7 @@ def build_drawing(
         frame_chart = _with_horizon(frame_chart, scene.horizon_event(resolved.ride.rod, frame))
     if Layer.LENGTH_PANEL in layers:
         comoving = None if track is None else (track.t, track.lengths, RIDE_LENGTH_NAME)
-        length_chart = length_static(scene, lab, frame, window, length_area, sampler, comoving)
+        length_chart = length_static(scene, lab, frame, window, length_area, sampler, comoving, label_px)
     else:
         length_chart = hidden_chart(LENGTH_HIDDEN_TITLE, LENGTH_HIDDEN_NOTE)
     return Drawn(
