@@ -31,6 +31,7 @@ from rigidrel_app.view.canvas import (
 )
 from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from rigidrel_app.view.lanes import ROD_SHARE, TICK_FRACTIONS, lane_geometry, lane_state
+from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.layout import (
     LEGEND_ROWS,
     MIN_PLOT_PX,
@@ -592,3 +593,87 @@ def test_lines_show_their_colour_through_the_tone_mapping() -> None:
     for color in (*ROD_COLORS, FRAME_COLOR, LIGHT_COLOR, WALL_COLOR, INK, "#000000"):
         target = np.array(rgb(color))
         assert np.abs(shown(line_rgb(tuple(int(c) for c in target))) - target).max() <= 25.0, color  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("kind", sorted(rr.scene_descriptions()))
+def test_separate_segments_are_stroked_as_one_by_one(kind: str) -> None:
+    """A chart's Segments item (the signals' rays, the interior lines...) is stroked in one go, each
+    segment clipped and dashed from its own start: the same lines as stroking them one at a time."""
+    from rigidrel_app.view import canvas
+    from rigidrel_app.view.vocabulary import Segments
+
+    r = resolve(Settings(kind, layers=frozenset(Layer)))
+    assert isinstance(r, Resolved)
+    layout = canvas_layout(936, 720)
+    d = build_drawing(r, areas=layout.chart_areas)
+    checked = 0
+    for chart, place in zip(d.charts, layout.charts, strict=True):
+        f = canvas.chart_frame(chart, place.plot)
+        for it in chart.items:
+            if not isinstance(it, Segments):
+                continue
+            x0, z0 = f.px(it.x0, it.y0)
+            x1, z1 = f.px(it.x1, it.y1)
+            whole = canvas._stroke_apart(np.stack([x0, z0], -1), np.stack([x1, z1], -1), it.style, f, NORMAL, CURVES)
+            one_by_one = [
+                canvas._stroke(np.array([x0[k], x1[k]]), np.array([z0[k], z1[k]]), it.style, f, NORMAL, CURVES)
+                for k in range(x0.size)
+            ]
+            parts = [s.points for s in one_by_one if s is not None]
+            if whole is None:
+                assert parts == []
+                continue
+            np.testing.assert_allclose(whole.points, np.concatenate(parts), rtol=0, atol=1e-9)
+            checked += 1
+    assert checked > 0 or kind in {"impulsive-start"}
+
+
+def test_dashed_separate_segments_each_start_their_pattern() -> None:
+    """Two dashed segments stroked in one go: each starts its pattern at its own start, as when
+    stroked alone (measured along a line through both, the second would start mid-pattern)."""
+    from rigidrel_app.view import canvas
+    from rigidrel_app.view.vocabulary import Chart
+
+    chart = Chart((), "x", "t", (0.0, 100.0), (0.0, 100.0))
+    f = canvas.chart_frame(chart, canvas.Rect(0.0, 0.0, 100.0, 100.0))
+    style = Style(width=2.0, dash="dash")
+    p0, p1 = np.array([[10.0, 10.0], [10.0, 50.0]]), np.array([[47.0, 10.0], [47.0, 50.0]])
+    whole = canvas._stroke_apart(p0, p1, style, f, NORMAL, CURVES)
+    parts = [
+        canvas._stroke(np.array([a[0], b[0]]), np.array([a[1], b[1]]), style, f, NORMAL, CURVES) for a, b in zip(p0, p1)
+    ]
+    assert whole is not None and all(p is not None for p in parts)
+    np.testing.assert_allclose(whole.points, np.concatenate([p.points for p in parts if p is not None]), atol=1e-9)
+    assert len(whole.points) > 2  # dashed: cut into pieces
+
+
+@pytest.mark.parametrize("kind", sorted(rr.scene_descriptions()))
+def test_a_run_of_solid_curves_is_stroked_as_each_alone(kind: str) -> None:
+    """Consecutive solid curves of one style (a rod's interior lines) are stroked in one go: the
+    same segments, colours, widths and layers, in the same order, as stroking each item alone."""
+    from rigidrel_app.view import canvas
+
+    r = resolve(Settings(kind, layers=frozenset(Layer)))
+    assert isinstance(r, Resolved)
+    layout = canvas_layout(936, 720)
+    d = build_drawing(r, areas=layout.chart_areas)
+
+    def flat(lines: tuple[canvas.PageLines, ...]) -> tuple[np.ndarray, np.ndarray, list[tuple[float, int]]]:
+        pts = np.concatenate([ln.points for ln in lines]) if lines else np.zeros((0, 2, 2))
+        colors = np.concatenate([ln.colors for ln in lines]) if lines else np.zeros((0, 3))
+        keys = [(ln.width, ln.layer) for ln in lines for _ in range(len(ln.points))]
+        return pts, colors, keys
+
+    runs = 0
+    for chart, place in zip(d.charts, layout.charts, strict=True):
+        f = canvas.chart_frame(chart, place.plot)
+        together = canvas.items_picture(chart.items, f, NORMAL)
+        alone = [canvas.items_picture((it,), f, NORMAL) for it in chart.items]
+        a_pts, a_col, a_keys = flat(together.lines)
+        b_pts, b_col, b_keys = flat(tuple(ln for p in alone for ln in p.lines))
+        assert a_keys == b_keys
+        np.testing.assert_array_equal(a_pts, b_pts)
+        np.testing.assert_array_equal(a_col, b_col)
+        assert together.texts == tuple(t for p in alone for t in p.texts)
+        runs += len(together.lines) < sum(len(p.lines) for p in alone)
+    assert runs > 0  # some chart has a run of more than one curve

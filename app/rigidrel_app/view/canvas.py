@@ -191,11 +191,12 @@ def polyline_segments(x: FloatArray, z: FloatArray) -> tuple[FloatArray, FloatAr
 
 
 def dash_segments(
-    a: FloatArray, b: FloatArray, pattern: tuple[float, ...], scale: float
+    a: FloatArray, b: FloatArray, pattern: tuple[float, ...], scale: float, apart: bool = False
 ) -> tuple[FloatArray, FloatArray]:
     """Segments ``a -> b`` (in order along a line) as they are drawn with a dash ``pattern``: all of
     them if it is empty, else cut into pieces of at most 1.5 px whose middles fall on the pattern's
-    "on" parts (its lengths scaled by ``scale``, the line width over 2), measured along the line."""
+    "on" parts (its lengths scaled by ``scale``, the line width over 2), measured along the line;
+    ``apart``: each segment a line of its own, its pattern starting at its start."""
     if not pattern or len(a) == 0:
         return a, b
     seg_len = np.hypot(*(b - a).T)
@@ -204,7 +205,7 @@ def dash_segments(
     k = np.arange(idx.size) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     f0 = k / pieces[idx]
     f1 = (k + 1) / pieces[idx]
-    start = np.concatenate([[0.0], np.cumsum(seg_len)[:-1]])
+    start = np.zeros(len(a)) if apart else np.concatenate([[0.0], np.cumsum(seg_len)[:-1]])
     mid = start[idx] + 0.5 * (f0 + f1) * seg_len[idx]
     pat = np.asarray(pattern) * scale
     phase = np.mod(mid, pat.sum())
@@ -295,6 +296,20 @@ def _stroke(x: FloatArray, z: FloatArray, style: Style, f: ChartFrame, theme: Th
     return _lines(a, b, color_rgb(style.color, style.opacity), width, layer)
 
 
+def _stroke_apart(
+    p0: FloatArray, p1: FloatArray, style: Style, f: ChartFrame, theme: Theme, layer: int
+) -> PageLines | None:
+    """Separate segments ``p0 -> p1`` (``(n, 2)`` px) as one stroke: each clipped to the plot, then
+    dashed from its own start (as :func:`_stroke` draws a polyline of one segment); NaN ends left out."""
+    ok = np.isfinite(p0).all(axis=-1) & np.isfinite(p1).all(axis=-1)
+    width = line_width(style, theme)
+    a, b = clip_segments(p0[ok], p1[ok], f.plot)
+    a, b = dash_segments(a, b, DASHES[style.dash], width / 2.0, apart=True)
+    if len(a) == 0:
+        return None
+    return _lines(a, b, color_rgb(style.color, style.opacity), width, layer)
+
+
 _SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
 
 
@@ -320,7 +335,23 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
     lines: list[PageLines] = []
     dots: list[PageDots] = []
     texts: list[PageText] = []
+    run: list[Polyline] = []  # consecutive solid curves of one style (a rod's interior lines): one stroke
+
+    def stroke_run() -> None:
+        if run:
+            x, z = _joined([f.px(p.x, p.y) for p in run])
+            s = _stroke(x, z, run[0].style, f, theme, CURVES if layer is None else layer)
+            if s is not None:
+                lines.append(s)
+            run.clear()
+
     for it in items:
+        if isinstance(it, Polyline) and DASHES[it.style.dash] == ():
+            if run and it.style != run[0].style:
+                stroke_run()
+            run.append(it)
+            continue
+        stroke_run()
         if isinstance(it, Polyline):
             x, z = f.px(it.x, it.y)
             s = _stroke(x, z, it.style, f, theme, CURVES if layer is None else layer)
@@ -329,17 +360,10 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
         elif isinstance(it, Segments):
             x0, z0 = f.px(it.x0, it.y0)
             x1, z1 = f.px(it.x1, it.y1)
-            for k in range(x0.size):
-                s = _stroke(
-                    np.array([x0[k], x1[k]]),
-                    np.array([z0[k], z1[k]]),
-                    it.style,
-                    f,
-                    theme,
-                    CURVES if layer is None else layer,
-                )
-                if s is not None:
-                    lines.append(s)
+            s = _stroke_apart(np.stack([x0, z0], -1), np.stack([x1, z1], -1), it.style, f, theme,
+                              CURVES if layer is None else layer)  # fmt: skip
+            if s is not None:
+                lines.append(s)
         elif isinstance(it, Area):
             x, z = f.px(it.x, it.y)
             xy = fill_grid(x, z, f.plot)
@@ -383,7 +407,22 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
                 # a placed label at its own size: smaller than the theme's in a crowded plot
                 px = min(it.size, theme.text_px) if it.movable else theme.text_px
                 texts.append(PageText(xv + offset, zv, page_text(it.text), px, anchor))
+    stroke_run()
     return PagePicture(tuple(lines), tuple(dots), tuple(texts))
+
+
+def _joined(curves: list[tuple[FloatArray, FloatArray]]) -> tuple[FloatArray, FloatArray]:
+    """Polylines (px) as one, a NaN between each two: no segment joins them, and a solid stroke
+    of it is the strokes of each, in order."""
+    if len(curves) == 1:
+        return curves[0]
+    gap = np.array([np.nan])
+    xs: list[FloatArray] = []
+    zs: list[FloatArray] = []
+    for x, z in curves:
+        xs += [x, gap]
+        zs += [z, gap]
+    return np.concatenate(xs[:-1]), np.concatenate(zs[:-1])
 
 
 def nice_ticks(lo: float, hi: float, count: float) -> FloatArray:
