@@ -76,7 +76,9 @@ def script(uuid: str) -> str:
         "set.call(box, v); box.dispatchEvent(new Event('input', { bubbles: true })); "
         f"}}, {POLL_MS}); }})()"
     )
-    style = f'<style>div:has(> [data-dock-group] [for="{uuid}"]) {{ display: none !important; }}</style>'
+    # the floating window on a desktop; the panel's section of the bottom sheet on a phone
+    hidden = f'div:has(> [data-dock-group] [for="{uuid}"]), .mantine-Tabs-root:has([for="{uuid}"])'
+    style = f"<style>{hidden} {{ display: none !important; }}</style>"
     return f'{style}<img alt="" src="data:," style="display: none" onerror="{js}">'
 
 
