@@ -191,17 +191,18 @@ def test_presenter_caption_at_1920(open_tab: OpenTab, lesson_app: App, shots: Pa
     assert band is not None and canvas is not None
     assert canvas["y"] >= band["y"] + band["height"] - 1  # the lanes start below the caption
 
-    def laid_out_for_the_canvas() -> bool:  # as the page measured it, the panel minimised
+    def laid_out_for_the_canvas() -> bool:  # as the page measured it, once the panel has folded away
         box = tab.page.locator("canvas[data-engine]").bounding_box()
+        band = tab.page.locator("#rigidrel-caption").bounding_box()
         size, layout = tab.session.canvas_size, tab.session.layout
         return (
-            box is not None and layout is not None and size.measured
+            box is not None and band is not None and layout is not None and size.measured
+            and box["width"] > 1800 and box["height"] < 1080 - band["height"] + 2
             and (size.width, size.height) == (round(box["width"]), round(box["height"]))
             and (layout.width, layout.height) == (size.width, size.height)
         )  # fmt: skip
 
     wait_until(laid_out_for_the_canvas, timeout=30)
-    assert tab.session.canvas_size.height < 1080 - band["height"] + 2 and tab.session.canvas_size.width > 1800
     assert tab.caption_px() >= 28
     tab.screenshot(shots / "presenter-step-6-1920.png")
 
