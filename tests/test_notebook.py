@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import re
 import sys
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -14,11 +15,14 @@ import pytest
 
 import rigidrel_core as rr
 from rigidrel_app.backends.plotly import dumps
-from rigidrel_app.notebook import explore
+from rigidrel_app.backends.viser import DARK_CANVAS_CSS
+from rigidrel_app.lessons import lesson_from
+from rigidrel_app.notebook import diagram, explore, inline, lesson, recording
 from rigidrel_app.notebook.live_state import (
     at_time,
     figure_arrays,
     live_figure,
+    moving_traces,
     slider_parameters,
     start,
     static_trace_count,
@@ -28,6 +32,7 @@ from rigidrel_app.notebook.live_state import (
 from rigidrel_app.notebook.widget import LiveView
 from rigidrel_app.view.comoving import RIDE_LINE_NAME
 from rigidrel_app.view.state import CUSTOM_FRAME, DEFAULT_RIDE, RIDE_FRAME
+from rigidrel_app.view.vocabulary import lightness_flipped, rgb
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 
@@ -181,7 +186,7 @@ def test_sliders_are_the_registry_parameters(kind: str) -> None:
     [({"v1": 0.99}, 0.99), ({"v1": 0.99, "v2": -0.99}, -0.99), ({"m2": 0.01}, "barycentric"), ({"m2": 100.0}, None)],
 )
 def test_extremes_draw_finite_figures(values: dict[str, float], frame: float | str | None) -> None:
-    s = start("rod-collision", frame, **values)
+    s = start("rod-collision", frame, theme="light", **values)
     fig = live_figure(s)
     dumps(fig["layout"])  # allow_nan=False: no NaN or infinity in any range, label place or title
     for ax in ("xaxis", "yaxis", "xaxis2", "yaxis2", "xaxis3", "yaxis3"):
@@ -203,3 +208,121 @@ def test_a_time_that_comes_back_with_float_noise_is_the_same_time() -> None:
     s = at_time(start("rod-collision", v1=0.6), 0.3)
     noisy = at_time(s, 0.29999999999999977)
     assert noisy.now == s.now == 0.3 and same_arrays(figure_arrays(live_figure(noisy)), figure_arrays(live_figure(s)))
+
+
+# ---------------------------------------------------------------------------------- the dark theme
+# theme="dark" is the app's projector theme: every colour of a figure lightness-flipped, nothing else changed.
+
+
+Color = tuple[int, int, int, str]
+"""A plotly colour as (r, g, b, alpha as written, "" if none)."""
+
+
+def color_of(text: str) -> Color:
+    """A plotly colour string (``#RGB``, ``#RRGGBB``, ``rgb()``, ``rgba()``, white, black) as a :data:`Color`."""
+    c = {"white": "#FFFFFF", "black": "#000000"}.get(text, text)
+    if m := re.fullmatch(r"rgba?\((\d+),\s*(\d+),\s*(\d+)(?:,\s*([\d.]+))?\)", c):
+        return int(m[1]), int(m[2]), int(m[3]), m[4] or ""
+    c = "#" + "".join(2 * ch for ch in c[1:]) if len(c) == 4 else c
+    return (*rgb(c), "")
+
+
+def colors(node: object, key: str = "") -> list[Color]:
+    """Every colour in a plotly figure (dict, or a figure's ``to_plotly_json()``), in order:
+    the values of keys ending in "color"."""
+    if isinstance(node, dict):
+        return [c for k, v in node.items() for c in colors(v, str(k))]
+    if isinstance(node, list | tuple):
+        return [c for v in node for c in colors(v, key)]
+    return [color_of(node)] if isinstance(node, str) and key.endswith("color") else []
+
+
+def flipped(color: Color) -> Color:
+    r, g, b = (int(v) for v in lightness_flipped(color[:3]))
+    return r, g, b, color[3]
+
+
+def trace_colors(data: list[Any]) -> list[Color]:
+    """Each trace's line, marker and fill colours, in order."""
+    return colors([{k: t[k] for k in ("line", "marker", "fillcolor") if k in t} for t in data])
+
+
+def assert_flipped(light: dict[str, Any], dark: dict[str, Any]) -> None:
+    """``dark`` is ``light`` with every trace and annotation colour lightness-flipped, on black."""
+    assert dark["layout"]["paper_bgcolor"] == dark["layout"]["plot_bgcolor"] == "#000000"
+    lt, dt = trace_colors(light["data"]), trace_colors(dark["data"])
+    assert lt and dt == [flipped(c) for c in lt] and dt != lt
+    la, da = colors(light["layout"]["annotations"]), colors(dark["layout"]["annotations"])
+    assert la and da == [flipped(c) for c in la]
+
+
+def shown_colors(view: LiveView) -> list[Color]:
+    """The colours of the FigureWidget's traces, as :func:`trace_colors` reads a figure dict's."""
+    return trace_colors([t.to_plotly_json() for t in traces(view)])
+
+
+def test_a_dark_diagram_and_lesson_flip_every_colour(monkeypatch: pytest.MonkeyPatch) -> None:
+    scene = rr.rod_collision(v1=0.6, v2=0.0, m1=1.0, m2=2.0, l1=1.0, l2=1.0, eps=1.0)
+    light = diagram(scene, scene.frame("barycentric")).to_plotly_json()
+    dark = diagram(scene, scene.frame("barycentric"), theme="dark").to_plotly_json()
+    assert_flipped(light, dark)
+    assert [t["name"] for t in dark["data"] if "name" in t] == [t["name"] for t in light["data"] if "name" in t]
+    light_page, dark_page = lesson("paper").html, lesson("paper", theme="dark").html
+    assert dark_page != light_page and dark_page.count("<h3>") == light_page.count("<h3>")
+    assert '"paper_bgcolor":"#000000"' in dark_page.replace(" ", "")
+    assert '"paper_bgcolor":"#000000"' not in light_page.replace(" ", "")
+    shown: list[dict[str, Any]] = []  # each step's figure, as the lesson puts it into its page
+    monkeypatch.setattr(inline, "offline_html", lambda fig: shown.append(fig.to_plotly_json()) or "")
+    lesson("paper")
+    n = len(shown)
+    lesson("paper", theme="dark")
+    assert n == len(shown) - n == len(lesson_from("paper").steps)
+    for light_step, dark_step in zip(shown[:n], shown[n:]):
+        assert_flipped(light_step, dark_step)
+
+
+def test_a_dark_recording_is_the_exports_dark_recording() -> None:
+    scene = rr.build_scene("wall-collision", v=0.6)
+    dark, light = recording(scene, seconds=0.2, fps=10.0, theme="dark"), recording(scene, seconds=0.2, fps=10.0)
+    assert DARK_CANVAS_CSS in dark.html and DARK_CANVAS_CSS not in light.html
+
+
+def test_the_dark_live_view_flips_every_colour_and_keeps_them_through_changes() -> None:
+    light = live_figure(start("rod-collision", "barycentric", 0.5, v1=0.6))
+    dark_state = start("rod-collision", "barycentric", 0.5, theme="dark", v1=0.6)
+    dark = live_figure(dark_state)
+    assert_flipped(light, dark)
+    assert same_arrays(figure_arrays(dark), figure_arrays(light))  # the same curves, as numpy arrays
+    # the time slider's traces are coloured as the same traces of the whole dark figure
+    n = static_trace_count(dark_state.drawn)
+    assert trace_colors(moving_traces(dark_state)) == trace_colors(dark["data"][n:])
+    view = explore("rod-collision", v1=0.6, frame="barycentric", t=0.5, theme="dark")
+    assert shown_colors(view) == trace_colors(dark["data"]) and view.figure.layout.paper_bgcolor == "#000000"
+    view.set("v1", 0.8)  # a new scene: redrawn, still dark
+    redrawn = live_figure(start("rod-collision", "barycentric", 0.5, v1=0.8))
+    assert view.state.shade == "dark" and view.figure.layout.paper_bgcolor == "#000000"
+    assert shown_colors(view) == [flipped(c) for c in trace_colors(redrawn["data"])]
+    view.frame.value = "lab"
+    assert view.state.shade == "dark" and view.figure.layout.paper_bgcolor == "#000000"
+    t0, t1 = view.state.drawn.window
+    view.time.value = round(0.5 * (t0 + t1), 3)  # the moving traces follow, in their dark colours
+    assert view.state.shade == "dark"
+    assert shown_colors(view) == trace_colors(live_figure(view.state)["data"])
+    assert same_arrays(widget_arrays(view), figure_arrays(live_figure(view.state)))
+    assert trace_colors(moving_traces(view.state)) == [
+        flipped(c) for c in trace_colors(moving_traces(replace(view.state, shade="light")))
+    ]
+
+
+@pytest.mark.parametrize("theme", ["blue", "Dark", "", None, 1])
+def test_a_bad_theme_is_refused_naming_it(theme: Any) -> None:
+    scene = rr.build_scene("wall-collision", v=0.6)
+    for show in (
+        lambda: diagram(scene, theme=theme),
+        lambda: recording(scene, seconds=0.2, fps=10.0, theme=theme),
+        lambda: lesson("paper", theme=theme),
+        lambda: explore("wall-collision", theme=theme),
+    ):
+        with pytest.raises(rr.ParameterError, match=r"^theme must be 'light' or 'dark'; got ") as err:
+            show()
+        assert err.value.parameter == "theme"

@@ -8,6 +8,8 @@
     lesson("paper")                                 # the built-in lesson's steps, captions and diagrams
     explore("rod-collision", v1=0.6, frame="barycentric")   # live: sliders, the core runs in the kernel
 
+Each takes ``theme="dark"``: its figures in the app's dark projector theme (as ``--theme dark``).
+
 ``diagram``, ``recording`` and ``lesson`` are static HTML (:mod:`.inline`): plotly.js comes from
 the installed plotly package, never from a CDN. ``explore`` (:mod:`.widget`, needs the
 ``notebook`` extra: ``pip install 'rigidrel[notebook]'``) is a live widget: its sliders are the
@@ -24,6 +26,7 @@ from typing import TYPE_CHECKING
 from .inline import LessonView, OfflineFigure, Recording, diagram, lesson, offline_html, recording
 
 if TYPE_CHECKING:
+    from ..view.vocabulary import Shade
     from .widget import LiveView
 
 
@@ -32,17 +35,20 @@ def explore(
     frame: str | float | None = None,
     t: float | None = None,
     continuous: bool = False,
+    *,
+    theme: Shade = "light",
     **values: float | None,
 ) -> LiveView:
     """The live view of scene ``kind`` with sliders (see :func:`.widget.explore`), e.g.
-    ``explore("rod-collision", v1=0.6, frame="barycentric")``. Needs the ``notebook`` extra."""
+    ``explore("rod-collision", v1=0.6, frame="barycentric")``; ``theme="dark"`` draws it in the
+    app's dark projector theme. Needs the ``notebook`` extra."""
     try:
         from .widget import explore as live
     except ImportError as exc:  # ipywidgets or anywidget missing: say how to get them
         raise ImportError(
             f"explore() needs the notebook extra ({exc.name} is missing): pip install 'rigidrel[notebook]'"
         ) from exc
-    return live(kind, frame, t, continuous, **values)
+    return live(kind, frame, t, continuous, theme=theme, **values)
 
 
 __all__ = ["LessonView", "OfflineFigure", "Recording", "diagram", "explore", "lesson", "offline_html", "recording"]

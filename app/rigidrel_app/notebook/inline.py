@@ -10,7 +10,8 @@ plotly package, never from a CDN.
     lesson("paper")                                 # the built-in lesson's steps, captions and diagrams
 
 Outside a notebook they return ordinary objects (a plotly ``Figure``; a :class:`Recording`
-with ``html`` and ``save``; a :class:`LessonView` with ``html``).
+with ``html`` and ``save``; a :class:`LessonView` with ``html``). Each takes ``theme="dark"``: the
+app's dark projector theme, as ``rigidrel export --theme dark``.
 """
 
 from __future__ import annotations
@@ -26,11 +27,14 @@ from markdown_it import MarkdownIt
 
 import rigidrel_core as rr
 
+from ..backends.plotly import shaded_figure
 from ..export.diagram import diagram_figure
 from ..export.recording import record_lanes_html
 from ..lessons import Lesson, lesson_from
 from ..view.scene_view import build_drawing
 from ..view.state import Resolved
+from ..view.vocabulary import Shade
+from .live_state import checked_theme
 
 
 class _PlotlyInPage:
@@ -67,15 +71,23 @@ class OfflineFigure(go.Figure):
 
 
 def diagram(
-    scene: rr.Scene, frame: rr.Frame = rr.LAB, size: tuple[int, int] = (640, 560), density: float = 2.0
+    scene: rr.Scene,
+    frame: rr.Frame = rr.LAB,
+    size: tuple[int, int] = (640, 560),
+    density: float = 2.0,
+    *,
+    theme: Shade = "light",
 ) -> go.Figure:
     """The scene's Minkowski diagram in ``frame`` (a :class:`~rigidrel_core.Frame`, e.g.
     ``scene.frame("barycentric")``), exact, as an interactive plotly figure that shows offline.
 
     Curves are sampled to half a pixel at ``density`` device pixels per CSS pixel (2 covers
-    high-density screens and 2x PNG exports).
+    high-density screens and 2x PNG exports). ``theme``: ``"light"``, or ``"dark"`` for the app's
+    dark projector theme (light on black, every colour lightness-flipped, :func:`shaded_figure`);
+    anything else raises :class:`~rigidrel_core.ParameterError`.
     """
-    return OfflineFigure(diagram_figure(scene, frame, size, density))
+    shade = checked_theme(theme)
+    return OfflineFigure(shaded_figure(diagram_figure(scene, frame, size, density), shade))
 
 
 @dataclass(frozen=True)
@@ -96,12 +108,17 @@ class Recording:
         )
 
 
-def recording(scene: rr.Scene, frame: rr.Frame | None = None, seconds: float = 10.0, fps: float = 30.0) -> Recording:
+def recording(
+    scene: rr.Scene, frame: rr.Frame | None = None, seconds: float = 10.0, fps: float = 30.0, *, theme: Shade = "light"
+) -> Recording:
     """Both lanes (the lab and ``frame``, by default the scene's default frame) playing through the
-    scene's window, as offline HTML."""
+    scene's window, as offline HTML. ``theme``: ``"light"``, or ``"dark"`` for the app's dark
+    projector theme (as ``rigidrel export --theme dark``); anything else raises
+    :class:`~rigidrel_core.ParameterError`."""
+    shade = checked_theme(theme)
     chosen = rr.default_frame(scene) if frame is None else frame
     drawn = build_drawing(Resolved(scene, chosen, None))
-    return Recording(record_lanes_html(drawn, seconds, fps))
+    return Recording(record_lanes_html(drawn, seconds, fps, shade=shade))
 
 
 _MARKDOWN = MarkdownIt("commonmark", {"html": False})
@@ -118,10 +135,14 @@ class LessonView:
         return self.html
 
 
-def lesson(name_or_path: str, size: tuple[int, int] = (560, 460)) -> LessonView:
+def lesson(name_or_path: str, size: tuple[int, int] = (560, 460), *, theme: Shade = "light") -> LessonView:
     """A lesson file (or a built-in lesson's name, such as ``"paper"``) shown inline: every step's
     title, its caption with the core's numbers, and its Minkowski diagram in the step's frame.
-    A mistake in the file raises :class:`~rigidrel_app.lessons.LessonError` naming its line."""
+    A mistake in the file raises :class:`~rigidrel_app.lessons.LessonError` naming its line.
+    ``theme``: ``"light"``, or ``"dark"`` for the diagrams in the app's dark projector theme (the
+    titles and captions keep the notebook's colours); anything else raises
+    :class:`~rigidrel_core.ParameterError`."""
+    shade = checked_theme(theme)
     chosen = lesson_from(name_or_path)
     parts = [f"<h2>{html_lib.escape(chosen.title)}</h2>"]
     if chosen.subtitle:
@@ -129,5 +150,5 @@ def lesson(name_or_path: str, size: tuple[int, int] = (560, 460)) -> LessonView:
     for k, step in enumerate(chosen.steps, start=1):
         scene, frame = step.resolved.scene, step.resolved.frame
         parts.append(f"<h3>{k}. {html_lib.escape(step.title)}</h3>{_MARKDOWN.render(step.caption)}")
-        parts.append(offline_html(OfflineFigure(diagram_figure(scene, frame, size, 1.0))))
+        parts.append(offline_html(OfflineFigure(shaded_figure(diagram_figure(scene, frame, size, 1.0), shade))))
     return LessonView(chosen, "\n".join(parts))

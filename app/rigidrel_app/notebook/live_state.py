@@ -7,7 +7,8 @@ control's change leads to: a value the core refuses leaves the scene as it was a
 :attr:`LiveState.notice`. :func:`live_figure` lays the app's three charts (the lab's Minkowski
 diagram, the chosen frame's, the equal-time lengths, Fig. 2) side by side as one plotly figure
 dict; :func:`moving_traces` are the parts that follow the time slider. Every number on them
-comes from :mod:`rigidrel_core` through the view layer (the app computes no physics).
+comes from :mod:`rigidrel_core` through the view layer (the app computes no physics). On a dark
+:attr:`LiveState.shade` both are drawn in the app's dark theme (:func:`shaded_figure`).
 """
 
 from __future__ import annotations
@@ -21,11 +22,11 @@ from markdown_it import MarkdownIt
 
 import rigidrel_core as rr
 
-from ..backends.plotly import TITLE_PX, chart_layout, item_to_traces, label_to_annotation
+from ..backends.plotly import TITLE_PX, chart_layout, item_to_traces, label_to_annotation, shaded_figure
 from ..view.entry import NumberEntry, control_value, significant
 from ..view.scene_view import Drawn, build_drawing, nice_step, readout_markdown
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, build, frame_choice, frame_choices, resolve
-from ..view.vocabulary import Chart, Item, Label
+from ..view.vocabulary import Chart, Item, Label, Shade
 
 #: The live figure (CSS pixels): the two Minkowski diagrams side by side, the equal-time lengths
 #: under the lab's, the legends beside it. Fits the output area of JupyterLab or VS Code in a
@@ -80,6 +81,9 @@ class LiveState:
     """Playback time: the lab diagram's t and the chosen frame's t′ (c = 1, units of rod 1's rest length)."""
     notice: str = ""
     """Why the last change was refused, naming the parameter and its allowed range ("" if it was not)."""
+    shade: Shade = "light"
+    """The figure's ground: light, or dark (the app's projector theme, every colour lightness-flipped);
+    every change of scene, frame or time keeps it."""
 
     @property
     def frame_options(self) -> tuple[str, ...]:
@@ -112,12 +116,29 @@ def _draw(settings: Settings) -> Drawn | str:
     return build_drawing(resolved, areas=(PANEL_PX[0], PANEL_PX[2]))
 
 
-def start(kind: str, frame: str | float | None = None, t: float | None = None, **values: float | None) -> LiveState:
+def checked_theme(theme: object) -> Shade:
+    """``theme`` as a :data:`~rigidrel_app.view.vocabulary.Shade`; anything but ``"light"`` or ``"dark"``
+    raises :class:`~rigidrel_core.ParameterError` naming ``theme``."""
+    if not isinstance(theme, str) or theme not in ("light", "dark"):
+        raise rr.ParameterError("theme", "'light' or 'dark'", theme)
+    return "dark" if theme == "dark" else "light"
+
+
+def start(
+    kind: str,
+    frame: str | float | None = None,
+    t: float | None = None,
+    *,
+    theme: Shade = "light",
+    **values: float | None,
+) -> LiveState:
     """The state the view opens on: scene ``kind`` (a registry name, e.g. ``"rod-collision"``) with
     ``values`` (the rest at their defaults), in ``frame`` (a preset name of the scene, a velocity
     β in (-1, 1) for a custom frame, or ``None`` for the scene's default frame), at time ``t``
-    (default: the start of the window). Values the core refuses raise its
-    :class:`~rigidrel_core.ParameterError`, which names the parameter and its allowed range."""
+    (default: the start of the window), drawn in ``theme`` (``"dark"``: the app's dark projector
+    theme). Values the core refuses raise its :class:`~rigidrel_core.ParameterError`, which names
+    the parameter and its allowed range."""
+    shade = checked_theme(theme)
     if isinstance(frame, str) or frame is None:
         settings = Settings.of(kind, **values)
         settings = replace(settings, frame=frame)
@@ -125,7 +146,7 @@ def start(kind: str, frame: str | float | None = None, t: float | None = None, *
         settings = replace(Settings.of(kind, **values), frame=CUSTOM_FRAME, beta=float(frame))
     drawn = build_drawing(build(settings), areas=(PANEL_PX[0], PANEL_PX[2]))  # a refusal raises, naming it
     now = drawn.window[0] if t is None else t
-    state = LiveState(settings, drawn, slider_time(drawn.window[0]))
+    state = LiveState(settings, drawn, slider_time(drawn.window[0]), shade=shade)
     moved = at_time(state, now)
     if moved.notice:
         raise rr.ParameterError("t", state.time.allowed(), t)
@@ -134,12 +155,13 @@ def start(kind: str, frame: str | float | None = None, t: float | None = None, *
 
 def change(state: LiveState, settings: Settings) -> LiveState:
     """The state with ``settings``, or, if the core refuses them, the old scene with the notice.
-    The time stays where it was if the new scene's window holds it, else it moves to the nearer end."""
+    The time stays where it was if the new scene's window holds it, else it moves to the nearer end;
+    the shade stays."""
     drawn = _draw(settings)
     if isinstance(drawn, str):
         return replace(state, notice=drawn)
     t0, t1 = (slider_time(t) for t in drawn.window)
-    return LiveState(settings, drawn, min(max(state.now, t0), t1))
+    return LiveState(settings, drawn, min(max(state.now, t0), t1), shade=state.shade)
 
 
 def with_parameter(state: LiveState, name: str, value: float | None) -> LiveState:
@@ -220,9 +242,24 @@ def _moving_items(state: LiveState) -> tuple[tuple[Item, ...], ...]:
     return d.moving_items(state.now, ends, instant)
 
 
-def moving_traces(state: LiveState) -> list[dict[str, Any]]:
-    """The traces that follow the time slider, in the order :func:`live_figure` puts them last."""
+def _light_moving_traces(state: LiveState) -> list[dict[str, Any]]:
     return [t for k, items in enumerate(_moving_items(state)) for t in _panel_traces(items, k)]
+
+
+def _shaded(fig: dict[str, Any], shade: Shade) -> dict[str, Any]:
+    """:func:`shaded_figure` of ``fig``, with its traces' ``x`` and ``y`` still the numpy arrays they
+    were (not plotly's typed-array dicts): the widget updates them, :func:`figure_arrays` reads them."""
+    if shade == "light":
+        return fig
+    out = shaded_figure(fig, shade)
+    out["data"] = [{**t, "x": old["x"], "y": old["y"]} for t, old in zip(out["data"], fig["data"], strict=True)]
+    return out
+
+
+def moving_traces(state: LiveState) -> list[dict[str, Any]]:
+    """The traces that follow the time slider, in the order :func:`live_figure` puts them last, in
+    the state's shade (their colours those of the same traces of :func:`live_figure`)."""
+    return _shaded({"data": _light_moving_traces(state)}, state.shade)["data"]
 
 
 def static_trace_count(drawn: Drawn) -> int:
@@ -262,10 +299,11 @@ def _panel_layout(chart: Chart, k: int) -> dict[str, Any]:
 
 def live_figure(state: LiveState) -> dict[str, Any]:
     """The three panels as one plotly figure dict (numpy arrays in the traces): the static traces of
-    each chart first (:func:`static_trace_count`), then :func:`moving_traces`."""
+    each chart first (:func:`static_trace_count`), then :func:`moving_traces`; on a dark
+    :attr:`~LiveState.shade`, every colour lightness-flipped as in the app's dark theme."""
     d = state.drawn
     data = [t for k, chart in enumerate(d.charts) for t in _panel_traces(chart.items, k)]
-    data = _list_once(data + moving_traces(state))
+    data = _list_once(data + _light_moving_traces(state))
     left, right, top, bottom = MARGIN_PX
     layout: dict[str, Any] = {
         "width": FIGURE_PX[0],
@@ -290,7 +328,7 @@ def live_figure(state: LiveState) -> dict[str, Any]:
         panel = _panel_layout(chart, k)
         layout["annotations"] += panel.pop("annotations")
         layout.update(panel)
-    return {"data": data, "layout": layout}
+    return _shaded({"data": data, "layout": layout}, state.shade)
 
 
 def parameter_values(state: LiveState) -> Mapping[str, float]:

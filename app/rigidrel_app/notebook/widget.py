@@ -16,6 +16,7 @@ import ipywidgets as w
 import plotly.graph_objects as go
 
 from ..view.entry import NumberEntry
+from ..view.vocabulary import Shade
 from .live_state import (
     BETA_ENTRY,
     LiveState,
@@ -193,6 +194,8 @@ def explore(
     frame: str | float | None = None,
     t: float | None = None,
     continuous: bool = False,
+    *,
+    theme: Shade = "light",
     **values: float | None,
 ) -> LiveView:
     """The live view of scene ``kind`` (a registry name: ``rr.scene_descriptions()``), opened with
@@ -200,6 +203,9 @@ def explore(
     velocity in (-1, 1), or ``None`` for the scene's default frame), at time ``t``.
 
     ``continuous``: redraw while a parameter slider is dragged (the time slider always does);
-    off by default, as a scene is rebuilt for each value. Values the core refuses here raise its
+    off by default, as a scene is rebuilt for each value. ``theme``: ``"dark"`` draws the figure in
+    the app's dark projector theme (light on black, every colour lightness-flipped), through every
+    change of scene, frame and time; the controls keep the notebook's look. Values the core refuses
+    here (and a ``theme`` other than ``"light"`` or ``"dark"``) raise its
     :class:`~rigidrel_core.ParameterError`; in the view they show a notice instead."""
-    return LiveView(start(kind, frame, t, **values), continuous)
+    return LiveView(start(kind, frame, t, theme=theme, **values), continuous)
