@@ -8,9 +8,11 @@ on the diagonals of its point, then the same directions farther out, where a lea
 the text to its point) whose box stays in the plot area and meets no other label's box, no
 marker and no drawn curve, and lies nearer its own point than any other marker (the text names the
 point nearest it). When every spot meets something, the label takes the spot that meets
-no label or marker and crosses the fewest curve segments, with a leader line. Fixed labels are
-obstacles and never move. Nothing here depends on a plotting library: every backend draws the
-placed offsets.
+no label or marker and crosses the fewest curve segments, with a leader line. Fixed labels and
+the axis names the canvas writes inside the plot are obstacles and never move. A plot where some
+label finds no spot clear of the others is placed again with those labels first, and then, if
+asked, with its labels a step smaller (:func:`place_labels`). Nothing here depends on a plotting
+library: every backend draws the placed offsets.
 """
 
 from __future__ import annotations
