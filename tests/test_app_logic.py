@@ -614,16 +614,17 @@ def test_separate_segments_are_stroked_as_one_by_one(kind: str) -> None:
                 continue
             x0, z0 = f.px(it.x0, it.y0)
             x1, z1 = f.px(it.x1, it.y1)
-            whole = canvas._stroke_apart(np.stack([x0, z0], -1), np.stack([x1, z1], -1), it.style, f, NORMAL, CURVES)
+            whole = canvas.items_picture((it,), f, NORMAL).lines
             one_by_one = [
                 canvas._stroke(np.array([x0[k], x1[k]]), np.array([z0[k], z1[k]]), it.style, f, NORMAL, CURVES)
                 for k in range(x0.size)
             ]
             parts = [s.points for s in one_by_one if s is not None]
-            if whole is None:
+            if not whole:
                 assert parts == []
                 continue
-            np.testing.assert_allclose(whole.points, np.concatenate(parts), rtol=0, atol=1e-9)
+            assert len(whole) == 1
+            np.testing.assert_allclose(whole[0].points, np.concatenate(parts), rtol=0, atol=1e-9)
             checked += 1
     assert checked > 0 or kind in {"impulsive-start"}
 
@@ -632,19 +633,20 @@ def test_dashed_separate_segments_each_start_their_pattern() -> None:
     """Two dashed segments stroked in one go: each starts its pattern at its own start, as when
     stroked alone (measured along a line through both, the second would start mid-pattern)."""
     from rigidrel_app.view import canvas
-    from rigidrel_app.view.vocabulary import Chart
+    from rigidrel_app.view.vocabulary import Chart, Segments
 
     chart = Chart((), "x", "t", (0.0, 100.0), (0.0, 100.0))
     f = canvas.chart_frame(chart, canvas.Rect(0.0, 0.0, 100.0, 100.0))
     style = Style(width=2.0, dash="dash")
-    p0, p1 = np.array([[10.0, 10.0], [10.0, 50.0]]), np.array([[47.0, 10.0], [47.0, 50.0]])
-    whole = canvas._stroke_apart(p0, p1, style, f, NORMAL, CURVES)
-    parts = [
-        canvas._stroke(np.array([a[0], b[0]]), np.array([a[1], b[1]]), style, f, NORMAL, CURVES) for a, b in zip(p0, p1)
+    x0, y0, x1, y1 = np.array([10.0, 10.0]), np.array([10.0, 50.0]), np.array([47.0, 47.0]), np.array([10.0, 50.0])
+    whole = canvas.items_picture((Segments(x0, y0, x1, y1, style),), f, NORMAL).lines
+    alone = [
+        canvas.items_picture((Polyline(np.array([x0[k], x1[k]]), np.array([y0[k], y1[k]]), style),), f, NORMAL).lines
+        for k in range(2)
     ]
-    assert whole is not None and all(p is not None for p in parts)
-    np.testing.assert_allclose(whole.points, np.concatenate([p.points for p in parts if p is not None]), atol=1e-9)
-    assert len(whole.points) > 2  # dashed: cut into pieces
+    assert len(whole) == 1 and all(len(a) == 1 for a in alone)
+    np.testing.assert_allclose(whole[0].points, np.concatenate([a[0].points for a in alone]), atol=1e-9)
+    assert len(whole[0].points) > 2  # dashed: cut into pieces
 
 
 @pytest.mark.parametrize("kind", sorted(rr.scene_descriptions()))

@@ -180,3 +180,40 @@ def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
             client.stop()
     finally:
         loop.close()
+
+
+def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The pole in the barn in presenter mode on a short canvas (its lane titles are too long for one
+    line, and its legend needs more rows than the default): once the session has laid it out, a
+    slider's redraw builds the drawing once and the canvas places no label again."""
+    from rigidrel_app.live import session as session_module
+    from rigidrel_app.live.server import App
+    from rigidrel_app.view import canvas
+    from rigidrel_app.view.layout import LEGEND_ROWS, CanvasSize
+    from rigidrel_app.view.state import Settings
+    from tests.viser_client import ClientLoop, LightClient, wait_until
+
+    loop = ClientLoop()
+    try:
+        with App(port=0) as app:
+            client = LightClient(app.url)
+            loop.run(client.connect())
+            loop.start(client.run(60))
+            wait_until(lambda: app.sessions)
+            session = next(iter(app.sessions.values()))
+            wait_until(lambda: session.drawn is not None)
+            session.set_presenter(True)
+            with session.lock:
+                session._resize(CanvasSize.measured_by_page(1240, 560, 1.0))  # pyright: ignore[reportPrivateUsage]
+            session.change(Settings("pole-barn"))
+            layout = session.layout
+            assert layout is not None and layout.lanes[0].title_lines == 2 and session.legend_rows != LEGEND_ROWS
+            builds, placements = [], []
+            build, place = session_module.build_drawing, canvas.place_labels
+            monkeypatch.setattr(session_module, "build_drawing", lambda *a, **k: builds.append(1) or build(*a, **k))
+            monkeypatch.setattr(canvas, "place_labels", lambda *a, **k: placements.append(1) or place(*a, **k))
+            session.change(session.settings.with_value("v", 0.7))
+            assert (len(builds), len(placements)) == (1, 0)
+            client.stop()
+    finally:
+        loop.close()

@@ -138,6 +138,9 @@ class Session:
         """Presenter mode (key F): the control panel minimized, the projector theme."""
         self.legend_rows = LEGEND_ROWS
         """The legend's rows in the page last laid out (the first guess for the next drawing's)."""
+        self.one_line_titles = True
+        """Whether this scene's lane titles may go on one line on a short canvas (False once they
+        were found too long for it; tried again for another scene)."""
         self.layout: CanvasLayout | None = None
         camera = client.camera
         self.canvas_size = CanvasSize(float(camera.image_width), float(camera.image_height))
@@ -476,9 +479,11 @@ class Session:
     # ------------------------------------------------------------------ drawing
     def _apply(self, resolved: Resolved, refit: bool) -> None:
         c = self.controls
-        # the legend's rows as the last drawing needed them: a slider's redraw then lays out once,
-        # and its labels are placed for the plots' areas once (not again by chart_picture)
-        self.layout = layout = self._canvas_layout(self.legend_rows)
+        # the legend's rows and the titles' lines as the last drawing needed them: a slider's redraw
+        # then lays out and draws once, and its labels are placed for the plots' areas once
+        if self.drawn is not None and self.drawn.resolved.scene.kind != resolved.scene.kind:
+            self.one_line_titles = True
+        self.layout = layout = self._canvas_layout(self.legend_rows, self.one_line_titles)
         self.drawn = d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
         c.show_settings(self.settings)
         choices = frame_choices(resolved.scene)
@@ -510,11 +515,12 @@ class Session:
         rows = legend_rows(legend, layout.legend.width, layout.theme)
         if rows != self.legend_rows:  # the plots give the legend the rows it needs (their curves still fit)
             self.legend_rows = rows
-            self.layout = layout = self._canvas_layout(rows)
+            self.layout = layout = self._canvas_layout(rows, self.one_line_titles)
         if layout.lanes[0].title_lines == 1 and not titles_fit_one_line(
             [p.title for p in d.lane_pictures(d.window[0], layout)], layout
         ):
             # this scene's lane titles are too long for one line: they keep two, the text steps down
+            self.one_line_titles = False
             self.layout = layout = self._canvas_layout(rows, one_line_titles=False)
             self.drawn = d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
         frames: list[ChartFrame] = []

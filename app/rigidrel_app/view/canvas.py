@@ -286,25 +286,19 @@ def line_width(style: Style, theme: Theme) -> float:
 
 
 def _stroke(x: FloatArray, z: FloatArray, style: Style, f: ChartFrame, theme: Theme, layer: int) -> PageLines | None:
-    """Clipped to the plot first, then dashed: a now-line runs far beyond its plot."""
-    width = line_width(style, theme)
+    """A polyline (px), clipped to the plot first, then dashed: a now-line runs far beyond its plot."""
     a, b = polyline_segments(x, z)
-    a, b = clip_segments(a, b, f.plot)
-    a, b = dash_segments(a, b, DASHES[style.dash], width / 2.0)
-    if len(a) == 0:
-        return None
-    return _lines(a, b, color_rgb(style.color, style.opacity), width, layer)
+    return _stroke_segments(a, b, style, f, theme, layer)
 
 
-def _stroke_apart(
-    p0: FloatArray, p1: FloatArray, style: Style, f: ChartFrame, theme: Theme, layer: int
+def _stroke_segments(
+    a: FloatArray, b: FloatArray, style: Style, f: ChartFrame, theme: Theme, layer: int, apart: bool = False
 ) -> PageLines | None:
-    """Separate segments ``p0 -> p1`` (``(n, 2)`` px) as one stroke: each clipped to the plot, then
-    dashed from its own start (as :func:`_stroke` draws a polyline of one segment); NaN ends left out."""
-    ok = np.isfinite(p0).all(axis=-1) & np.isfinite(p1).all(axis=-1)
+    """Segments ``a -> b`` (``(n, 2)`` px, finite) clipped to the plot, then dashed along the line
+    they make, or each from its own start if ``apart`` (:func:`dash_segments`)."""
     width = line_width(style, theme)
-    a, b = clip_segments(p0[ok], p1[ok], f.plot)
-    a, b = dash_segments(a, b, DASHES[style.dash], width / 2.0, apart=True)
+    a, b = clip_segments(a, b, f.plot)
+    a, b = dash_segments(a, b, DASHES[style.dash], width / 2.0, apart)
     if len(a) == 0:
         return None
     return _lines(a, b, color_rgb(style.color, style.opacity), width, layer)
@@ -360,8 +354,9 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
         elif isinstance(it, Segments):
             x0, z0 = f.px(it.x0, it.y0)
             x1, z1 = f.px(it.x1, it.y1)
-            s = _stroke_apart(np.stack([x0, z0], -1), np.stack([x1, z1], -1), it.style, f, theme,
-                              CURVES if layer is None else layer)  # fmt: skip
+            p0, p1 = np.stack([x0, z0], -1), np.stack([x1, z1], -1)
+            ok = np.isfinite(p0).all(axis=-1) & np.isfinite(p1).all(axis=-1)
+            s = _stroke_segments(p0[ok], p1[ok], it.style, f, theme, CURVES if layer is None else layer, apart=True)
             if s is not None:
                 lines.append(s)
         elif isinstance(it, Area):
