@@ -24,6 +24,7 @@ from typing import Literal
 
 import numpy as np
 import viser
+from viser import _messages  # pyright: ignore[reportPrivateUsage]
 
 from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
@@ -303,6 +304,28 @@ def label_scale(px: float) -> float:
     return px / LABEL_EM_PX
 
 
+def _write_label(
+    scene: viser.SceneApi,
+    handle: viser.LabelHandle,
+    changes: dict[str, object],
+    position: tuple[float, float, float] | None,
+) -> None:
+    """Assign a label's changed props (``changes``: text, font_screen_scale, anchor) in one
+    update message, and its new ``position`` (or ``None``) in another. The handle's own setters
+    send one message per prop, each cast and compared first (about 20 us each, against 10 us
+    per message here); this is their write path (the handle's state, then the message), minus
+    those checks: the caller sends only what changed, in the types viser keeps."""
+    impl = handle._impl  # pyright: ignore[reportPrivateUsage]
+    queue = scene._queue_scene_message  # pyright: ignore[reportPrivateUsage]
+    if changes:
+        for name, value in changes.items():
+            setattr(impl.props, name, value)
+        queue(_messages.SceneNodeUpdateMessage(impl.name, changes))
+    if position is not None:
+        impl.position[:] = position
+        queue(_messages.SetPositionMessage(impl.name, position))
+
+
 class _Texts:
     """Label nodes under one name prefix, grown when needed and never re-added (changing a label
     costs ~60 us, creating one ~500 us); only what changed is assigned; unused ones are hidden."""
@@ -342,14 +365,14 @@ class _Texts:
         if state == self._shown[k]:
             return
         h, old = self._handles[k], self._shown[k]
+        changes: dict[str, object] = {}
         if old is None or old[0] != text:
-            h.text = text
-        if old is None or old[1] != position:
-            h.position = position
+            changes["text"] = text
         if old is None or old[2] != scale:
-            h.font_screen_scale = scale
+            changes["font_screen_scale"] = scale
         if old is None or old[3] != anchor:
-            h.anchor = anchor  # type: ignore[assignment]
+            changes["anchor"] = anchor
+        _write_label(self._scene, h, changes, position if old is None or old[1] != position else None)
         if old is None:
             h.visible = True
         self._shown[k] = state

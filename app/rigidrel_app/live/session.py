@@ -22,6 +22,7 @@ import rigidrel_core as rr
 from ..backends.viser import PageRenderer
 from ..lessons import Lesson
 from ..lessons.tour import arrival, caption_html, clamp_step, lock_notice, lock_reason, locked_changes
+from ..view import camera as cam
 from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
 from ..view.lanes import LanePicture
 from ..view.layers import Layer
@@ -280,7 +281,7 @@ class Session:
                 if figure is not None:
                     self.change(figure, refit=True)
             elif action is Action.RESET_VIEW:
-                self.fit_camera()
+                self.fit_camera(force=True)
             elif action is Action.TOGGLE_PRESENTER:
                 self.set_presenter(not self.presenter)
             elif action is Action.TOGGLE_THEME:
@@ -541,11 +542,16 @@ class Session:
         ):
             self._send_page()
 
-    def fit_camera(self) -> None:
+    def fit_camera(self, force: bool = False) -> None:
+        """Put the camera where it shows the whole page. Nothing is sent when the camera is already
+        there as far as the browser last reported (a slider's redraw with "Auto-fit view" on), unless
+        ``force`` (key R: the browser may have moved it since its last report)."""
         if self.layout is None:
             return
         camera = self.client.camera
         pose = self.renderer.pose(self.layout)
+        if not force and self._camera_at(pose):
+            return
         distance = abs(pose.position[1])
         camera.near, camera.far = 0.1 * distance, 3.0 * distance  # depth resolution for the page's layers
         camera.up_direction, camera.fov = pose.up, pose.fov
@@ -554,6 +560,16 @@ class Session:
         aside = np.array([0.0, 1e-3 * distance, 0.0])
         camera.position, camera.look_at = np.asarray(pose.position) + aside, np.asarray(pose.look_at) + aside
         camera.position, camera.look_at = pose.position, pose.look_at
+
+    def _camera_at(self, pose: cam.CameraPose) -> bool:
+        """Whether the camera, as the browser last reported it, has ``pose``."""
+        camera = self.client.camera
+        return bool(
+            np.allclose(camera.position, pose.position)
+            and np.allclose(camera.look_at, pose.look_at)
+            and np.allclose(camera.up_direction, pose.up)
+            and np.isclose(camera.fov, pose.fov)
+        )
 
     def draw_now(self, force_plots: bool = False) -> None:
         """Draw the lanes and the diagrams' moving parts at the clock, in one batch (one instant);

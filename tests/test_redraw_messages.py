@@ -1,0 +1,161 @@
+"""What a slider's redraw sends: each label's changes in one message (what the browser ends up
+showing is what the handles say), and no camera message when the camera is already where the
+page fits (a reset still sends it)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+import numpy as np
+import pytest
+
+from rigidrel_app.backends.viser import _Texts  # pyright: ignore[reportPrivateUsage]
+from rigidrel_app.live.keys import Action
+from rigidrel_app.live.server import App
+from rigidrel_app.live.session import Session
+from tests.viser_client import ClientLoop, LightClient, decode_frame, wait_until
+
+
+class Recorder(LightClient):
+    """A light client that keeps every message the server sent it, decoded."""
+
+    def __init__(self, url: str) -> None:
+        super().__init__(url)
+        self.messages: list[dict[str, Any]] = []
+
+    def _consume(self, data: bytes) -> None:
+        self.messages += decode_frame(data)
+        super()._consume(data)
+
+
+@pytest.fixture
+def tab() -> Iterator[tuple[Session, Recorder]]:
+    loop = ClientLoop()
+    try:
+        with App(port=0) as app:
+            client = Recorder(app.url)
+            loop.run(client.connect())
+            loop.start(client.run(120))
+            session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
+            wait_until(lambda: session.drawn is not None and "V" in client.gui_uuid, timeout=60)
+            yield session, client
+            client.stop()
+            loop.run(client.close())
+    finally:
+        loop.close()
+
+
+def labels_as_sent(messages: list[dict[str, Any]], prefix: str) -> dict[str, dict[str, Any]]:
+    """Each label node under ``prefix`` as the browser has it after ``messages``: created, then updated."""
+    nodes: dict[str, dict[str, Any]] = {}
+    for m in messages:
+        name = m.get("name", "")
+        if not str(name).startswith(prefix):
+            continue
+        kind = m["type"]
+        if kind == "LabelMessage":
+            nodes[name] = {**m["props"], "visible": True}  # its position follows
+        elif kind == "SceneNodeUpdateMessage":
+            nodes[name].update(m["updates"])
+        elif kind == "SetPositionMessage":
+            nodes[name]["position"] = tuple(m["position"])
+        elif kind == "SetSceneNodeVisibilityMessage":
+            nodes[name]["visible"] = m["visible"]
+    return nodes
+
+
+def test_a_label_changes_in_one_message_and_the_browser_and_handle_agree(tab: tuple[Session, Recorder]) -> None:
+    session, client = tab
+    texts = _Texts(session.client.scene, "/test/text")
+    with session.client.atomic():
+        texts.set(0, ("T_B", (1.0, -8.0, 2.0), 1.25, "center-left"))
+        texts.set(1, ("x′", (3.0, -8.0, 4.0), 1.5, "top-center"))
+    session.client.flush()
+    wait_until(lambda: len(labels_as_sent(client.messages, "/test/text/")) == 2)
+    n = len(client.messages)
+    with session.client.atomic():
+        texts.set(0, ("T_F", (5.0, -8.0, 6.0), 1.0, "center-right"))  # all four change
+        texts.set(1, ("x′", (7.0, -8.0, 8.0), 1.5, "top-center"))  # the position alone
+        texts.hide(2)  # never shown: nothing
+    session.client.flush()
+
+    def settled() -> dict[str, dict[str, Any]] | None:
+        sent = labels_as_sent(client.messages, "/test/text/")
+        return sent if sent["/test/text/1"]["position"] == (7.0, -8.0, 8.0) else None
+
+    sent = wait_until(settled)
+    new = [m for m in client.messages[n:] if str(m.get("name", "")).startswith("/test/text/")]
+    assert sorted(m["type"] for m in new) == ["SceneNodeUpdateMessage", "SetPositionMessage", "SetPositionMessage"]
+    update = next(m for m in new if m["type"] == "SceneNodeUpdateMessage")
+    assert update["updates"] == {"text": "T_F", "font_screen_scale": 1.0, "anchor": "center-right"}
+    first = sent["/test/text/0"]
+    assert (first["text"], first["position"], first["font_screen_scale"], first["anchor"]) == (
+        "T_F",
+        (5.0, -8.0, 6.0),
+        1.0,
+        "center-right",
+    )
+    # the handle knows what the browser shows: assigning the shown value again sends nothing,
+    # assigning the old one sends it
+    handle = texts._handles[0]  # pyright: ignore[reportPrivateUsage]
+    assert (handle.text, handle.font_screen_scale, handle.anchor) == ("T_F", 1.0, "center-right")
+    np.testing.assert_array_equal(handle.position, (5.0, -8.0, 6.0))
+    n = len(client.messages)
+    handle.text = "T_F"
+    handle.text = "T_B"
+    session.client.flush()
+    wait_until(lambda: labels_as_sent(client.messages, "/test/text/")["/test/text/0"]["text"] == "T_B")
+    assert [m["updates"] for m in client.messages[n:] if m.get("name") == "/test/text/0"] == [{"text": "T_B"}]
+
+
+CAMERA = {
+    "SetCameraPositionMessage",
+    "SetCameraLookAtMessage",
+    "SetCameraUpDirectionMessage",
+    "SetCameraFovMessage",
+    "SetCameraNearMessage",
+    "SetCameraFarMessage",
+}
+
+
+def camera_messages_of(session: Session, client: Recorder, act: Any) -> list[str]:
+    """The camera messages the browser gets for ``act()`` (flushed, then a notice as a sentinel)."""
+    n = len(client.messages)
+    act()
+    mark = f"sentinel {n}"
+    session.refuse(mark)
+    session.client.flush()
+
+    def sentinel() -> int | None:
+        for i, m in enumerate(client.messages[n:]):
+            if mark in str(m.get("updates", {})):
+                return n + i
+        return None
+
+    end = wait_until(sentinel)
+    return [m["type"] for m in client.messages[n:end] if m["type"] in CAMERA]
+
+
+def test_a_redraw_with_auto_fit_sends_no_camera_when_it_fits_and_a_reset_always_does(
+    tab: tuple[Session, Recorder],
+) -> None:
+    session, client = tab
+    assert session.controls.fit.value  # "Auto-fit view" is on
+    layout = session.layout
+    assert layout is not None
+    pose = session.renderer.pose(layout)
+    camera = session.client.camera
+    np.testing.assert_allclose(camera.position, pose.position, atol=1e-9)
+    # a slider's redraw: the camera is where the page fits, nothing to send
+    assert camera_messages_of(session, client, lambda: session.change(session.settings.with_value("v", 0.5))) == []
+    # key R: the pose is sent whatever the server last heard (the browser may have moved since)
+    reset = camera_messages_of(session, client, lambda: session.perform(Action.RESET_VIEW))
+    assert "SetCameraPositionMessage" in reset and "SetCameraLookAtMessage" in reset
+    # the browser reports an orbit away: the next redraw brings the camera back
+    with session.lock:
+        camera.position = np.asarray(pose.position) + np.array([50.0, 0.0, 0.0])
+    back = camera_messages_of(session, client, lambda: session.change(session.settings.with_value("v", 0.7)))
+    assert "SetCameraPositionMessage" in back
+    np.testing.assert_allclose(camera.position, pose.position, atol=1e-9)
+    np.testing.assert_allclose(camera.look_at, pose.look_at, atol=1e-9)
