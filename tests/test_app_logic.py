@@ -553,10 +553,10 @@ def test_the_now_lines_sit_at_the_lanes_time() -> None:
     assert lanes[0].title.startswith(f"lab frame:   t = {now:+.3f}")
     for items, chart, place in zip(d.moving_items(now, [lane.ends for lane in lanes]), d.charts, layout.charts):
         f, _ = chart_picture(chart, place, NORMAL)
-        moving = items_picture(items, f, NORMAL, MOVING)
+        now_line = items_picture(tuple(items)[:1], f, NORMAL, MOVING)  # the first moving item
         _, z_now = f.px(np.array([0.0]), np.array([now]))
         x_now, _ = f.px(np.array([now]), np.array([0.0]))
-        first = moving.lines[0].points
+        first = now_line.lines[0].points
         if chart.equal_aspect:  # horizontal: t = now
             np.testing.assert_allclose(first[..., 1], z_now[0], atol=1e-9)
         else:  # the length plot's vertical line at t = now

@@ -109,6 +109,12 @@ class ChartFrame:
     x_range: tuple[float, float]
     y_range: tuple[float, float]
 
+    def px_one(self, x: float, y: float) -> tuple[float, float]:
+        """One point's page px (:meth:`px` in plain floats)."""
+        (a, b), (c, d) = self.x_range, self.y_range
+        p = self.plot
+        return p.x0 + (float(x) - a) * (p.width / (b - a)), p.z0 + (float(y) - c) * (p.height / (d - c))
+
     def px(self, x: FloatArray, y: FloatArray) -> tuple[FloatArray, FloatArray]:
         (a, b), (c, d) = self.x_range, self.y_range
         p = self.plot
@@ -138,11 +144,18 @@ def chart_frame(chart: Chart, plot: Rect) -> ChartFrame:
 
 def clip_segments(p0: FloatArray, p1: FloatArray, r: Rect) -> tuple[FloatArray, FloatArray]:
     """Segments ``p0 -> p1`` (``(n, 2)`` px) clipped to ``r`` (Liang-Barsky); those outside dropped."""
+    a, b, _ = _clip_kept(p0, p1, r)
+    return a, b
+
+
+def _clip_kept(p0: FloatArray, p1: FloatArray, r: Rect) -> tuple[FloatArray, FloatArray, np.ndarray]:
+    """:func:`clip_segments`, and which of the segments were kept."""
     if len(p0) <= 4:  # the moving lines, every frame: plain floats beat numpy's per-call cost
-        kept = [c for c in (_clip_one(a, b, r) for a, b in zip(p0.tolist(), p1.tolist(), strict=True)) if c is not None]
+        clipped = [_clip_one(a, b, r) for a, b in zip(p0.tolist(), p1.tolist(), strict=True)]
+        kept = [c for c in clipped if c is not None]
         a = np.array([c[0] for c in kept], dtype=float).reshape(-1, 2)
         b = np.array([c[1] for c in kept], dtype=float).reshape(-1, 2)
-        return a, b
+        return a, b, np.array([c is not None for c in clipped], dtype=bool)
     d = p1 - p0
     t0 = np.zeros(len(p0))
     t1 = np.ones(len(p0))
@@ -160,7 +173,7 @@ def clip_segments(p0: FloatArray, p1: FloatArray, r: Rect) -> tuple[FloatArray, 
     keep = keep & (t0 <= t1)
     a = p0 + t0[:, None] * d
     b = p0 + t1[:, None] * d
-    return a[keep], b[keep]
+    return a[keep], b[keep], keep
 
 
 def _clip_one(a: list[float], b: list[float], r: Rect) -> tuple[list[float], list[float]] | None:
@@ -184,10 +197,16 @@ def _clip_one(a: list[float], b: list[float], r: Rect) -> tuple[list[float], lis
 
 def polyline_segments(x: FloatArray, z: FloatArray) -> tuple[FloatArray, FloatArray]:
     """A polyline (px) as its segments ``(n, 2)`` -> ``(n, 2)``, gaps (NaN) left out."""
+    a, b, _ = _polyline_segments_kept(x, z)
+    return a, b
+
+
+def _polyline_segments_kept(x: FloatArray, z: FloatArray) -> tuple[FloatArray, FloatArray, np.ndarray]:
+    """:func:`polyline_segments`, and which of the ``len(x) - 1`` segments were kept."""
     pts = np.stack([x, z], axis=-1)
     finite: npt.NDArray[np.bool_] = np.asarray(np.isfinite(pts).all(axis=-1))
     ok = finite[:-1] & finite[1:]
-    return pts[:-1][ok], pts[1:][ok]
+    return pts[:-1][ok], pts[1:][ok], ok
 
 
 def dash_segments(
@@ -296,12 +315,18 @@ def _stroke_segments(
 ) -> PageLines | None:
     """Segments ``a -> b`` (``(n, 2)`` px, finite) clipped to the plot, then dashed along the line
     they make, or each from its own start if ``apart`` (:func:`dash_segments`)."""
-    width = line_width(style, theme)
-    a, b = clip_segments(a, b, f.plot)
-    a, b = dash_segments(a, b, DASHES[style.dash], width / 2.0, apart)
+    a, b = _clipped_dashed(a, b, style, f, theme, apart)
     if len(a) == 0:
         return None
-    return _lines(a, b, color_rgb(style.color, style.opacity), width, layer)
+    return _lines(a, b, color_rgb(style.color, style.opacity), line_width(style, theme), layer)
+
+
+def _clipped_dashed(
+    a: FloatArray, b: FloatArray, style: Style, f: ChartFrame, theme: Theme, apart: bool
+) -> tuple[FloatArray, FloatArray]:
+    """Segments ``a -> b`` clipped to the plot, then dashed in ``style``'s pattern (:func:`dash_segments`)."""
+    a, b = clip_segments(a, b, f.plot)
+    return dash_segments(a, b, DASHES[style.dash], line_width(style, theme) / 2.0, apart)
 
 
 _SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
@@ -325,40 +350,22 @@ def _dot_shape(symbol: str) -> DotShape:
 
 
 def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int | None = None) -> PagePicture:
-    """Curves, segments, fills, dots and labels of a chart, clipped to its plot area."""
-    lines: list[PageLines] = []
+    """Curves, segments, fills, dots and labels of a chart, clipped to its plot area.
+
+    Every solid line (curves, separate segments, labels' leader lines) is stroked in one go: their
+    segments gathered in the items' order, mapped to px, clipped together and cut into runs of one
+    width and layer; each dashed one is stroked alone (its pattern runs along it). The segments,
+    colours, widths and layers, in order, are those of stroking each item alone."""
+    curves_layer = CURVES if layer is None else layer
+    events_layer = EVENTS if layer is None else layer
+    strokes = _Strokes()
     dots: list[PageDots] = []
     texts: list[PageText] = []
-    run: list[Polyline] = []  # consecutive solid curves of one style (a rod's interior lines): one stroke
-
-    def stroke_run() -> None:
-        if run:
-            x, z = _joined([f.px(p.x, p.y) for p in run])
-            s = _stroke(x, z, run[0].style, f, theme, CURVES if layer is None else layer)
-            if s is not None:
-                lines.append(s)
-            run.clear()
-
     for it in items:
-        if isinstance(it, Polyline) and DASHES[it.style.dash] == ():
-            if run and it.style != run[0].style:
-                stroke_run()
-            run.append(it)
-            continue
-        stroke_run()
         if isinstance(it, Polyline):
-            x, z = f.px(it.x, it.y)
-            s = _stroke(x, z, it.style, f, theme, CURVES if layer is None else layer)
-            if s is not None:
-                lines.append(s)
+            strokes.add_polyline(it.x, it.y, it.style, curves_layer)
         elif isinstance(it, Segments):
-            x0, z0 = f.px(it.x0, it.y0)
-            x1, z1 = f.px(it.x1, it.y1)
-            p0, p1 = np.stack([x0, z0], -1), np.stack([x1, z1], -1)
-            ok = np.isfinite(p0).all(axis=-1) & np.isfinite(p1).all(axis=-1)
-            s = _stroke_segments(p0[ok], p1[ok], it.style, f, theme, CURVES if layer is None else layer, apart=True)
-            if s is not None:
-                lines.append(s)
+            strokes.add_segments(it, curves_layer)
         elif isinstance(it, Area):
             x, z = f.px(it.x, it.y)
             xy = fill_grid(x, z, f.plot)
@@ -378,32 +385,129 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
                         np.tile(color, (len(xy), 1)),
                         size,
                         _dot_shape(it.symbol),
-                        EVENTS if layer is None else layer,
+                        events_layer,
                     )
                 )
         else:
             assert isinstance(it, Label)
-            x, z = f.px(np.array([it.x]), np.array([it.y]))
-            xv, zv = float(x[0]), float(z[0])
+            xv, zv = f.px_one(it.x, it.y)
             if f.plot.x0 <= xv <= f.plot.x1 and f.plot.z0 <= zv <= f.plot.z1:
                 if it.offset_px is not None:  # placed clear of the others (placement: right and up, px)
                     dx, dz = it.offset_px
                     if it.leader:
                         reach = math.hypot(dx, dz)
                         keep = max(0.0, 1.0 - 0.7 * theme.text_px / reach) if reach > 0 else 0.0
-                        leader = Style(it.style.color, 1.0)
                         end = (np.array([xv, xv + keep * dx]), np.array([zv, zv + keep * dz]))
-                        line = _stroke(end[0], end[1], leader, f, theme, EVENTS if layer is None else layer)
-                        if line is not None:
-                            lines.append(line)
+                        strokes.add_px(end[0], end[1], Style(it.style.color, 1.0), events_layer)
                     xv, zv = xv + dx, zv + dz
                 offset = {"left": 0.4 * theme.text_px, "right": -0.4 * theme.text_px, "center": 0.0}[it.anchor]
                 anchor: Anchor = {"left": "center-left", "right": "center-right", "center": "center-center"}[it.anchor]  # type: ignore[assignment]
                 # a placed label at its own size: smaller than the theme's in a crowded plot
                 px = min(it.size, theme.text_px) if it.movable else theme.text_px
                 texts.append(PageText(xv + offset, zv, page_text(it.text), px, anchor))
-    stroke_run()
-    return PagePicture(tuple(lines), tuple(dots), tuple(texts))
+    return PagePicture(strokes.lines(f, theme), tuple(dots), tuple(texts))
+
+
+class _Strokes:
+    """The lines of a chart's items, gathered in order and stroked at the end (:func:`items_picture`):
+    the solid ones all at once, each dashed one alone."""
+
+    def __init__(self) -> None:
+        self._solid_data: list[tuple[FloatArray, FloatArray, int]] = []
+        """Solid polylines in data coordinates, each with its stroke's number."""
+        self._solid_px: list[tuple[FloatArray, FloatArray, int]] = []
+        """Solid polylines already in px (leader lines)."""
+        self._solid_segments: list[tuple[Segments, int]] = []
+        self._dashed: list[tuple[Polyline | Segments | tuple[FloatArray, FloatArray], int]] = []
+        self._styles: list[tuple[Style, int]] = []
+        """Each stroke's style and layer, by number."""
+
+    def _new(self, style: Style, layer: int) -> int:
+        self._styles.append((style, layer))
+        return len(self._styles) - 1
+
+    def add_polyline(self, x: FloatArray, y: FloatArray, style: Style, layer: int) -> None:
+        k = self._new(style, layer)
+        if DASHES[style.dash]:
+            self._dashed.append((Polyline(x, y, style), k))
+        else:
+            self._solid_data.append((np.asarray(x, float), np.asarray(y, float), k))
+
+    def add_px(self, x: FloatArray, z: FloatArray, style: Style, layer: int) -> None:
+        k = self._new(style, layer)
+        if DASHES[style.dash]:
+            self._dashed.append(((x, z), k))
+        else:
+            self._solid_px.append((x, z, k))
+
+    def add_segments(self, it: Segments, layer: int) -> None:
+        k = self._new(it.style, layer)
+        if DASHES[it.style.dash]:
+            self._dashed.append((it, k))
+        else:
+            self._solid_segments.append((it, k))
+
+    def lines(self, f: ChartFrame, theme: Theme) -> tuple[PageLines, ...]:
+        parts_a: list[FloatArray] = []
+        parts_b: list[FloatArray] = []
+        parts_k: list[np.ndarray] = []
+        polylines = [(*f.px(x, y), k) for x, y, k in self._solid_data] + self._solid_px
+        if polylines:
+            x, z = _joined([(px, pz) for px, pz, _ in polylines])
+            # each point's stroke (a gap's too: no segment starts there)
+            owner = np.repeat(np.array([k for _, _, k in polylines]), [px.size + 1 for px, _, _ in polylines])[: x.size]
+            a, b, ok = _polyline_segments_kept(x, z)
+            parts_a.append(a)
+            parts_b.append(b)
+            parts_k.append(owner[:-1][ok])
+        for it, k in self._solid_segments:
+            a, b = _segments_px(it, f)
+            parts_a.append(a)
+            parts_b.append(b)
+            parts_k.append(np.full(len(a), k))
+        if parts_a:
+            a, b, keep = _clip_kept(np.concatenate(parts_a), np.concatenate(parts_b), f.plot)
+            parts_a, parts_b, parts_k = [a], [b], [np.concatenate(parts_k)[keep]]
+        for item, k in self._dashed:
+            style, layer = self._styles[k]
+            if isinstance(item, Polyline):
+                a, b = polyline_segments(*f.px(item.x, item.y))
+                apart = False
+            elif isinstance(item, Segments):
+                (a, b), apart = _segments_px(item, f), True
+            else:
+                a, b = polyline_segments(*item)
+                apart = False
+            a, b = _clipped_dashed(a, b, style, f, theme, apart)
+            parts_a.append(a)
+            parts_b.append(b)
+            parts_k.append(np.full(len(a), k))
+        if not parts_a:
+            return ()
+        k_all = np.concatenate(parts_k)
+        if k_all.size == 0:
+            return ()
+        order = np.argsort(k_all, kind="stable")  # the items' order, each item's segments in theirs
+        k_all = k_all[order]
+        pts = np.stack([np.concatenate(parts_a)[order], np.concatenate(parts_b)[order]], axis=1)
+        looks = [(line_width(st, theme), layer, color_rgb(st.color, st.opacity)) for st, layer in self._styles]
+        colors = np.array([c for _, _, c in looks], dtype=np.uint8)[k_all]
+        width_layer = np.array([(w, layer) for w, layer, _ in looks], dtype=float)[k_all]
+        cuts = np.flatnonzero(np.any(width_layer[1:] != width_layer[:-1], axis=1)) + 1
+        out: list[PageLines] = []
+        for lo, hi in zip(np.concatenate([[0], cuts]), np.concatenate([cuts, [len(k_all)]]), strict=True):
+            w, layer = looks[int(k_all[lo])][:2]
+            out.append(PageLines(pts[lo:hi], colors[lo:hi], w, layer))
+        return tuple(out)
+
+
+def _segments_px(it: Segments, f: ChartFrame) -> tuple[FloatArray, FloatArray]:
+    """A Segments item's finite segments in px, ``(n, 2)`` starts and ends."""
+    x0, z0 = f.px(it.x0, it.y0)
+    x1, z1 = f.px(it.x1, it.y1)
+    a, b = np.stack([x0, z0], -1), np.stack([x1, z1], -1)
+    ok = np.isfinite(a).all(axis=-1) & np.isfinite(b).all(axis=-1)
+    return a[ok], b[ok]
 
 
 def _joined(curves: list[tuple[FloatArray, FloatArray]]) -> tuple[FloatArray, FloatArray]:
@@ -543,7 +647,13 @@ def legend_rows(entries: Sequence[LegendEntry], width: float, theme: Theme) -> i
 
 
 def legend_picture(entries: Sequence[LegendEntry], box: Rect, theme: Theme) -> PagePicture:
-    """Entries left to right, wrapped into the rows ``box`` holds: a swatch, then the name."""
+    """Entries left to right, wrapped into the rows ``box`` holds: a swatch, then the name. The same
+    entries in the same box give the same picture (a slider's redraw keeps its scene's legend)."""
+    return _legend_picture(tuple(entries), box, theme)
+
+
+@functools.lru_cache(maxsize=32)
+def _legend_picture(entries: tuple[LegendEntry, ...], box: Rect, theme: Theme) -> PagePicture:
     row_h = LEGEND_ROW_EM * theme.text_px
     swatch = 2.0 * theme.text_px
     x, z = box.x0, box.z1 - 0.5 * row_h
