@@ -122,6 +122,12 @@ def _to_px(chart: Chart, area: tuple[float, float], x: FloatArray, y: FloatArray
     return (x - x0) / (x1 - x0) * area[0], (y1 - y) / (y1 - y0) * area[1]
 
 
+def _to_px_one(chart: Chart, area: tuple[float, float], x: float, y: float) -> tuple[float, float]:
+    """One point's plot-area px (:func:`_to_px` in plain floats)."""
+    (x0, x1), (y0, y1) = chart.x_range, chart.y_range
+    return (float(x) - x0) / (x1 - x0) * area[0], (y1 - float(y)) / (y1 - y0) * area[1]
+
+
 @dataclass(frozen=True)
 class Obstacles:
     """What a label must not cover, in plot-area pixels: curve segments and marker boxes."""
@@ -372,13 +378,13 @@ def obstacles(chart: Chart, area: tuple[float, float]) -> Obstacles:
 
 def label_box(chart: Chart, area: tuple[float, float], label: Label) -> Box:
     """Where ``label``'s text is drawn, in plot-area pixels (placed or not)."""
-    px, py = _to_px(chart, area, np.array([label.x]), np.array([label.y]))
+    px, py = _to_px_one(chart, area, label.x, label.y)
     w, h = text_box_px(label.text, label.size)
     if label.offset_px is not None:
-        cx, cy = float(px[0]) + label.offset_px[0], float(py[0]) - label.offset_px[1]
+        cx, cy = px + label.offset_px[0], py - label.offset_px[1]
     else:  # the unplaced text starts 6 px beside its point (the backends' default shift)
         shift = {"left": 6.0 + 0.5 * w, "right": -6.0 - 0.5 * w, "center": 0.0}[label.anchor]
-        cx, cy = float(px[0]) + shift, float(py[0])
+        cx, cy = px + shift, py
     return Box(cx - 0.5 * w, cy - 0.5 * h, cx + 0.5 * w, cy + 0.5 * h)
 
 
@@ -408,6 +414,8 @@ class _Spots:
     needs_leader: np.ndarray
     reach: float
     """The farthest a spot's centre lies from the point along x or y, CSS pixels."""
+    n_bare: int
+    """How many spots touch the point (no leader line): the first ones tried."""
 
 
 @lru_cache(maxsize=256)
@@ -416,7 +424,10 @@ def _spots(width: float, height: float, size: float, first: str, rings: int) -> 
     reach = max(max(abs(dx), abs(dy)) for dx, dy, _ in offsets)
     dx = np.array([o[0] for o in offsets], float)
     dy = np.array([o[1] for o in offsets], float)
-    return _Spots(offsets, dx, dy, np.array([o[2] for o in offsets], bool), reach)
+    needs_leader = np.array([o[2] for o in offsets], bool)
+    n_bare = int(np.argmax(needs_leader)) if needs_leader.any() else len(offsets)
+    assert not needs_leader[:n_bare].any() and needs_leader[n_bare:].all(), "bare spots come first"
+    return _Spots(offsets, dx, dy, needs_leader, reach, n_bare)
 
 
 def _best_spot(
@@ -465,6 +476,116 @@ def _best_spot(
     order = int(clear[int(np.argmin(counts))])  # the first of the fewest (a first clear spot has 0)
     dx, dy, leader = spots.offsets[order]
     return (int(counts.min()), order, dx, dy, leader)
+
+
+@dataclass(frozen=True)
+class _Anchor:
+    """A movable label to place: its index in the chart's items, its point (plot-area px), its text
+    box and its candidate spots."""
+
+    index: int
+    ax: float
+    ay: float
+    w: float
+    h: float
+    spots: _Spots
+
+
+@dataclass(frozen=True)
+class _Table:
+    """The first ``n`` candidate spots of some labels, with what does not depend on the order of
+    placement, as arrays ``(labels, n)``: the boxes and the boxes grown by :data:`MARGIN_PX`
+    (``(labels, n, 4)``: left, top, right, bottom), whether each spot passes the tests that do not
+    depend on other movable labels (inside the area, clear of the fixed boxes and the markers, and
+    for a spot touching the point, the text naming no other point), and how many curve segments
+    enter its grown box (-1 where it fails those tests)."""
+
+    row: dict[int, int]
+    """Each label's row, by its index in the chart's items."""
+    boxes: np.ndarray
+    grown: np.ndarray
+    ok: np.ndarray
+    counts: np.ndarray
+
+
+def _table(anchors: list[_Anchor], n: int, area: tuple[float, float], field: _Field, fixed: list[Box]) -> _Table:
+    """:class:`_Table` of the first ``n`` spots of ``anchors``: what :func:`_best_spot` tests of
+    them that no placed label changes, for every label and spot at once (one set of array
+    operations per chart, not one per label), in the same arithmetic."""
+    dx = np.stack([a.spots.dx[:n] for a in anchors])
+    dy = np.stack([a.spots.dy[:n] for a in anchors])
+    ax = np.array([a.ax for a in anchors])[:, None]
+    ay = np.array([a.ay for a in anchors])[:, None]
+    hw = np.array([0.5 * a.w for a in anchors])[:, None]
+    hh = np.array([0.5 * a.h for a in anchors])[:, None]
+    cx, cy = ax + dx, ay - dy
+    boxes = np.stack([cx - hw, cy - hh, cx + hw, cy + hh], -1)
+    grown = np.stack(
+        [boxes[..., 0] - MARGIN_PX, boxes[..., 1] - MARGIN_PX, boxes[..., 2] + MARGIN_PX, boxes[..., 3] + MARGIN_PX],
+        -1,
+    )
+    b, g = boxes.reshape(-1, 4), grown.reshape(-1, 4)
+    ok = (b[:, 0] >= 0.0) & (b[:, 1] >= 0.0) & (b[:, 2] <= area[0]) & (b[:, 3] <= area[1])
+    if fixed:
+        f = np.array([(x.left, x.top, x.right, x.bottom) for x in fixed], float)
+        ok &= ~np.any(
+            (g[:, None, 0] < f[:, 2])
+            & (f[:, 0] < g[:, None, 2])
+            & (g[:, None, 1] < f[:, 3])
+            & (f[:, 1] < g[:, None, 3]),
+            axis=1,
+        )
+    m = field.markers
+    if m.left.size:
+        ok &= ~np.any(
+            (b[:, None, 0] < m.right) & (m.left < b[:, None, 2]) & (b[:, None, 1] < m.bottom) & (m.top < b[:, None, 3]),
+            axis=1,
+        )
+        # the text would seem to name another point (spots touching it only): a marker near enough
+        # to matter (meeting the label's reach, as the full search takes them), not the label's own
+        # (its centre more than 1 px away, taxicab), nearer the box than the label's point
+        bare = ~anchors[0].spots.needs_leader[:n]
+        if bare.any():
+            reach = np.array([a.spots.reach + a.w + a.h for a in anchors])[:, None]
+            px, py = np.broadcast_to(ax, dx.shape).reshape(-1), np.broadcast_to(ay, dx.shape).reshape(-1)
+            r = np.broadcast_to(reach, dx.shape).reshape(-1)
+            mx, my = 0.5 * (m.left + m.right), 0.5 * (m.top + m.bottom)
+            other = (
+                (m.left < (px + r)[:, None])
+                & ((px - r)[:, None] < m.right)
+                & (m.top < (py + r)[:, None])
+                & ((py - r)[:, None] < m.bottom)
+                & (np.abs(mx - px[:, None]) + np.abs(my - py[:, None]) > 1.0)
+            )
+            own = np.hypot(
+                np.maximum(np.maximum(b[:, 0] - px, 0.0), px - b[:, 2]),
+                np.maximum(np.maximum(b[:, 1] - py, 0.0), py - b[:, 3]),
+            )
+            dist = np.hypot(
+                np.maximum(np.maximum(b[:, 0, None] - mx, 0.0), mx - b[:, 2, None]),
+                np.maximum(np.maximum(b[:, 1, None] - my, 0.0), my - b[:, 3, None]),
+            )
+            ok &= ~(np.tile(bare, len(anchors)) & np.any(other & (dist < own[:, None]), axis=1))
+    counts = np.full(ok.shape, -1, np.int64)
+    clear = np.flatnonzero(ok)
+    counts[clear] = field.curves.crossings(_Boxes(g[clear, 0], g[clear, 1], g[clear, 2], g[clear, 3]))
+    shape = dx.shape
+    return _Table({a.index: k for k, a in enumerate(anchors)}, boxes, grown, ok.reshape(shape), counts.reshape(shape))
+
+
+def _meets(a: tuple[float, float, float, float], b: Box) -> bool:
+    return a[0] < b.right and b.left < a[2] and a[1] < b.bottom and b.top < a[3]
+
+
+def _leader_enters(segment: tuple[float, float, float, float], box: tuple[float, float, float, float]) -> bool:
+    """Whether a leader line enters ``box`` (:meth:`_Curves.crossings` for one segment and one box)."""
+    x0, y0, x1, y1 = segment
+    left, top, right, bottom = box
+    if max(x0, x1) < left or min(x0, x1) > right or max(y0, y1) < top or min(y0, y1) > bottom:
+        return False
+    dx, dy = x1 - x0, y1 - y0
+    sides = [dx * (cy - y0) - dy * (cx - x0) for cx in (left, right) for cy in (top, bottom)]
+    return min(sides) <= 0.0 <= max(sides)
 
 
 def _nearer_marker_any(ax: float, ay: float, boxes: _Boxes, markers: _Boxes) -> np.ndarray:
@@ -574,24 +695,49 @@ def _place_in_order(
 ) -> tuple[dict[int, Item], list[int]]:
     """The movable labels ``order`` (indices into the chart's items) placed one after the other,
     clear of the ``reserved`` boxes too: each one's placed item by index, and the indices of those
-    that found no spot clear of labels and markers (kept at their point, with a leader line)."""
+    that found no spot clear of labels and markers (kept at their point, with a leader line).
+
+    What no placed label changes about the spots touching each point is worked out first, for
+    every label at once (:func:`_table`). A label takes the first of those spots that is clear of
+    everything (the table's tests, then the labels and leader lines placed before it), which is
+    what the full search (:func:`_best_spot`) would choose; a label with none is searched for in
+    full, and then in the far rings."""
     no_curves = _Curves.of(Obstacles(np.empty(0), np.empty(0), np.empty(0), np.empty(0), ()))
     field = _Field(_Curves.of(obs), _Boxes.of(obs.markers), no_curves)
     taken: list[Box] = [label_box(chart, area, i) for i in chart.items if isinstance(i, Label) and not i.movable]
     taken += reserved
-    leaders: list[tuple[float, float, float, float]] = []
-    out: dict[int, Item] = {}
-    stuck: list[int] = []
+    fixed = len(taken)
+    anchors: list[_Anchor] = []
     for index in order:
         item = chart.items[index]
         assert isinstance(item, Label)
-        px, py = _to_px(chart, area, np.array([item.x]), np.array([item.y]))
-        ax, ay = float(px[0]), float(py[0])
-        if not (0.0 <= ax <= area[0] and 0.0 <= ay <= area[1]):
-            continue
-        w, h = text_box_px(item.text, item.size)
+        ax, ay = _to_px_one(chart, area, item.x, item.y)
+        if 0.0 <= ax <= area[0] and 0.0 <= ay <= area[1]:
+            w, h = text_box_px(item.text, item.size)
+            anchors.append(_Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, RINGS)))
+    bare = _table(anchors, anchors[0].spots.n_bare, area, field, taken) if anchors else None
+    leaders: list[tuple[float, float, float, float]] = []
+    out: dict[int, Item] = {}
+    stuck: list[int] = []
+    for anchor in anchors:
+        index, ax, ay, w, h = anchor.index, anchor.ax, anchor.ay, anchor.w, anchor.h
+        item = chart.items[index]
+        assert isinstance(item, Label)
+        best: tuple[int, int, float, float, bool] | None = None
+        assert bare is not None
+        k = bare.row[index]
+        for spot in np.flatnonzero(bare.ok[k] & (bare.counts[k] == 0)).tolist():
+            g = bare.grown[k, spot]
+            grown = (float(g[0]), float(g[1]), float(g[2]), float(g[3]))
+            if not any(_meets(grown, b) for b in taken[fixed:]) and not any(
+                _leader_enters(segment, grown) for segment in leaders
+            ):
+                dx, dy, _ = anchor.spots.offsets[spot]
+                best = (0, spot, dx, dy, False)
+                break
         boxes = _Boxes.of(taken)
-        best = _best_spot(ax, ay, w, h, item, area, boxes, field, True, RINGS)
+        if best is None:
+            best = _best_spot(ax, ay, w, h, item, area, boxes, field, True, RINGS)
         if best is None:  # crowded: farther out, and at last across other leader lines
             best = _best_spot(ax, ay, w, h, item, area, boxes, field, True, FAR_RINGS)
         if best is None:
