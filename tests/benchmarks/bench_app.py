@@ -151,7 +151,11 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
                     wait_until(lambda h=handled: session.messages_handled > h, interval=0.005)
                     session.change = change  # type: ignore[method-assign]
                     t_in = clock.received[n_in]
-                    wait_until(lambda t=t_in: time.perf_counter() - max(clock.sent[-1], t) > quiet, interval=0.01)
+
+                    def answered(t: float = t_in) -> bool:  # sent, then quiet for ``quiet`` s
+                        return bool(clock.sent) and time.perf_counter() - max(clock.sent[-1], t) > quiet
+
+                    wait_until(answered, interval=0.01)
                     times[variant].append(clock.sent[-1] - t_in)
                     redraw_start, redraw_end = changed[-1]
                     redraws.append(redraw_end - redraw_start)
