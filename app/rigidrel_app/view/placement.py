@@ -138,64 +138,10 @@ class Obstacles:
     sy1: FloatArray
     markers: tuple[Box, ...]
 
-    def cut_by(self, x0: float, y0: float, x1: float, y1: float) -> bool:
-        """Whether the segment ``(x0, y0) -> (x1, y1)`` crosses any of these segments (orientation tests;
-        touching at an end counts)."""
-        if self.sx0.size == 0:
-            return False
-
-        def side(
-            ax: FloatArray | float,
-            ay: FloatArray | float,
-            bx: FloatArray | float,
-            by: FloatArray | float,
-            cx: FloatArray | float,
-            cy: FloatArray | float,
-        ) -> FloatArray:
-            return np.sign((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
-
-        d1 = side(self.sx0, self.sy0, self.sx1, self.sy1, x0, y0)
-        d2 = side(self.sx0, self.sy0, self.sx1, self.sy1, x1, y1)
-        d3 = side(x0, y0, x1, y1, self.sx0, self.sy0)
-        d4 = side(x0, y0, x1, y1, self.sx1, self.sy1)
-        return bool(np.any((d1 * d2 <= 0) & (d3 * d4 <= 0)))
-
-    def near(self, region: Box) -> Obstacles:
-        """Only the segments whose bounding boxes meet ``region`` (the rest cannot cross a box in it)."""
-        keep = (
-            (np.maximum(self.sx0, self.sx1) >= region.left)
-            & (np.minimum(self.sx0, self.sx1) <= region.right)
-            & (np.maximum(self.sy0, self.sy1) >= region.top)
-            & (np.minimum(self.sy0, self.sy1) <= region.bottom)
-        )
-        markers = tuple(m for m in self.markers if m.meets(region))
-        return Obstacles(self.sx0[keep], self.sy0[keep], self.sx1[keep], self.sy1[keep], markers)
-
-    def with_segment(self, x0: float, y0: float, x1: float, y1: float) -> Obstacles:
-        return Obstacles(
-            np.append(self.sx0, x0), np.append(self.sy0, y0), np.append(self.sx1, x1), np.append(self.sy1, y1), ()
-        )
-
     def crossings(self, box: Box) -> int:
         """How many curve segments enter ``box``: those whose bounding box meets it and whose line does
-        not leave all four corners on one side (all segments at once)."""
-        if self.sx0.size == 0:
-            return 0
-        x0, y0, x1, y1 = self.sx0, self.sy0, self.sx1, self.sy1
-        overlap = (
-            (np.maximum(x0, x1) >= box.left)
-            & (np.minimum(x0, x1) <= box.right)
-            & (np.maximum(y0, y1) >= box.top)
-            & (np.minimum(y0, y1) <= box.bottom)
-        )
-        if not overlap.any():
-            return 0
-        x0, y0, x1, y1 = x0[overlap], y0[overlap], x1[overlap], y1[overlap]
-        dx, dy = x1 - x0, y1 - y0
-        sides = [dx * (cy - y0) - dy * (cx - x0) for cx in (box.left, box.right) for cy in (box.top, box.bottom)]
-        lo = np.minimum(np.minimum(sides[0], sides[1]), np.minimum(sides[2], sides[3]))
-        hi = np.maximum(np.maximum(sides[0], sides[1]), np.maximum(sides[2], sides[3]))
-        return int(np.count_nonzero((lo <= 0.0) & (hi >= 0.0)))
+        not leave all four corners on one side (:meth:`_Curves.crossings` for one box)."""
+        return int(_Curves.of(self).crossings(_Boxes.of([box]))[0])
 
 
 def _leader_end(ax: float, ay: float, box: Box) -> tuple[float, float]:
@@ -204,21 +150,6 @@ def _leader_end(ax: float, ay: float, box: Box) -> tuple[float, float]:
     dx, dy = cx - ax, cy - ay
     hw, hh = 0.5 * (box.right - box.left), 0.5 * (box.bottom - box.top)
     scale = max(abs(dx) / hw if hw > 0 else 0.0, abs(dy) / hh if hh > 0 else 0.0, 1e-12)
-    return cx - dx / scale, cy - dy / scale
-
-
-def _leader_ends(
-    ax: float, ay: float, left: FloatArray, top: FloatArray, right: FloatArray, bottom: FloatArray
-) -> tuple[FloatArray, FloatArray]:
-    """Where leader lines from ``(ax, ay)`` towards the centres of boxes meet their edges (all boxes at
-    once): the centre less ``(dx, dy) / max(|dx| / half width, |dy| / half height)``."""
-    cx, cy = 0.5 * (left + right), 0.5 * (top + bottom)
-    dx, dy = cx - ax, cy - ay
-    hw, hh = 0.5 * (right - left), 0.5 * (bottom - top)
-    zero = np.zeros_like(dx)
-    by_w = np.divide(np.abs(dx), hw, out=zero.copy(), where=hw > 0)
-    by_h = np.divide(np.abs(dy), hh, out=zero.copy(), where=hh > 0)
-    scale = np.maximum(np.maximum(by_w, by_h), 1e-12)
     return cx - dx / scale, cy - dy / scale
 
 
@@ -235,24 +166,6 @@ class _Boxes:
     def of(boxes: list[Box] | tuple[Box, ...]) -> _Boxes:
         a = np.array([(b.left, b.top, b.right, b.bottom) for b in boxes], float).reshape(-1, 4)
         return _Boxes(a[:, 0], a[:, 1], a[:, 2], a[:, 3])
-
-    def take(self, keep: np.ndarray) -> _Boxes:
-        return _Boxes(self.left[keep], self.top[keep], self.right[keep], self.bottom[keep])
-
-    def grown(self, by: float) -> _Boxes:
-        return _Boxes(self.left - by, self.top - by, self.right + by, self.bottom + by)
-
-    def meet_any(self, other: _Boxes) -> np.ndarray:
-        """For each of these boxes, whether it meets any of ``other`` (:meth:`Box.meets`)."""
-        if other.left.size == 0:
-            return np.zeros(self.left.shape, bool)
-        return np.any(
-            (self.left[:, None] < other.right)
-            & (other.left < self.right[:, None])
-            & (self.top[:, None] < other.bottom)
-            & (other.top < self.bottom[:, None]),
-            axis=1,
-        )
 
 
 @dataclass(frozen=True)
@@ -272,18 +185,6 @@ class _Curves:
     def of(obs: Obstacles) -> _Curves:
         x0, y0, x1, y1 = obs.sx0, obs.sy0, obs.sx1, obs.sy1
         return _Curves(x0, y0, x1, y1, np.minimum(x0, x1), np.maximum(x0, x1), np.minimum(y0, y1), np.maximum(y0, y1))
-
-    def near(self, region: Box) -> _Curves:
-        """Only the segments whose bounding boxes meet ``region`` (:meth:`Obstacles.near`)."""
-        keep = (
-            (self.hi_x >= region.left)
-            & (self.lo_x <= region.right)
-            & (self.hi_y >= region.top)
-            & (self.lo_y <= region.bottom)
-        )
-        return _Curves(
-            *(a[keep] for a in (self.x0, self.y0, self.x1, self.y1, self.lo_x, self.hi_x, self.lo_y, self.hi_y))
-        )
 
     def crossings(self, boxes: _Boxes) -> np.ndarray:
         """For each box, how many segments enter it (:meth:`Obstacles.crossings`, all boxes at once):
@@ -309,35 +210,6 @@ class _Curves:
         lo = np.minimum(np.minimum(sides[0], sides[1]), np.minimum(sides[2], sides[3]))
         hi = np.maximum(np.maximum(sides[0], sides[1]), np.maximum(sides[2], sides[3]))
         return np.bincount(i[(lo <= 0.0) & (hi >= 0.0)], minlength=n)
-
-    def cut_any(self, ax: float, ay: float, ex: FloatArray, ey: FloatArray) -> np.ndarray:
-        """For each segment ``(ax, ay) -> (ex, ey)``, whether it crosses any of these segments
-        (:meth:`Obstacles.cut_by`, all at once)."""
-        if self.x0.size == 0:
-            return np.zeros(ex.shape, bool)
-        sx0, sy0, sx1, sy1 = self.x0, self.y0, self.x1, self.y1
-        ex2, ey2 = ex[:, None], ey[:, None]
-        d1 = np.sign((sx1 - sx0) * (ay - sy0) - (sy1 - sy0) * (ax - sx0))
-        d2 = np.sign((sx1 - sx0) * (ey2 - sy0) - (sy1 - sy0) * (ex2 - sx0))
-        d3 = np.sign((ex2 - ax) * (sy0 - ay) - (ey2 - ay) * (sx0 - ax))
-        d4 = np.sign((ex2 - ax) * (sy1 - ay) - (ey2 - ay) * (sx1 - ax))
-        return np.any((d1 * d2 <= 0) & (d3 * d4 <= 0), axis=1)
-
-
-def _segments_meet_any(ax: float, ay: float, ex: FloatArray, ey: FloatArray, boxes: _Boxes) -> np.ndarray:
-    """For each segment ``(ax, ay) -> (ex, ey)``, whether it enters any of ``boxes`` (the bounding-box
-    test, then no box corner-side test leaving all four corners on one side)."""
-    if boxes.left.size == 0:
-        return np.zeros(ex.shape, bool)
-    ex2, ey2 = ex[:, None], ey[:, None]
-    lo_x, hi_x = np.minimum(ax, ex2), np.maximum(ax, ex2)
-    lo_y, hi_y = np.minimum(ay, ey2), np.maximum(ay, ey2)
-    apart = (hi_x < boxes.left) | (lo_x > boxes.right) | (hi_y < boxes.top) | (lo_y > boxes.bottom)
-    dx, dy = ex2 - ax, ey2 - ay
-    sides = [dx * (cy - ay) - dy * (cx - ax) for cx in (boxes.left, boxes.right) for cy in (boxes.top, boxes.bottom)]
-    lo = np.minimum(np.minimum(sides[0], sides[1]), np.minimum(sides[2], sides[3]))
-    hi = np.maximum(np.maximum(sides[0], sides[1]), np.maximum(sides[2], sides[3]))
-    return np.any(~apart & (lo <= 0.0) & (hi >= 0.0), axis=1)
 
 
 def obstacles(chart: Chart, area: tuple[float, float]) -> Obstacles:
@@ -390,18 +262,10 @@ def label_box(chart: Chart, area: tuple[float, float], label: Label) -> Box:
 
 @dataclass(frozen=True)
 class _Field:
-    """A chart's obstacles as arrays, made once per :func:`place_labels` call: curve segments, marker
-    boxes (and their centres), and the leader lines drawn so far."""
+    """A chart's obstacles as arrays, made once per placement: curve segments and marker boxes."""
 
     curves: _Curves
     markers: _Boxes
-    leaders: _Curves
-
-    def near(self, region: Box) -> tuple[_Curves, _Boxes]:
-        """The curves and markers that can matter inside ``region`` (:meth:`Obstacles.near`)."""
-        m = self.markers
-        meets = (m.left < region.right) & (region.left < m.right) & (m.top < region.bottom) & (region.top < m.bottom)
-        return self.curves.near(region), m.take(meets)
 
 
 @dataclass(frozen=True)
@@ -428,54 +292,6 @@ def _spots(width: float, height: float, size: float, first: str, rings: int) -> 
     n_bare = int(np.argmax(needs_leader)) if needs_leader.any() else len(offsets)
     assert not needs_leader[:n_bare].any() and needs_leader[n_bare:].all(), "bare spots come first"
     return _Spots(offsets, dx, dy, needs_leader, reach, n_bare)
-
-
-def _best_spot(
-    ax: float,
-    ay: float,
-    w: float,
-    h: float,
-    label: Label,
-    area: tuple[float, float],
-    taken: _Boxes,
-    field: _Field,
-    use_leaders: bool,
-    rings: int,
-) -> tuple[int, int, float, float, bool] | None:
-    """The first candidate spot clear of everything, else the one crossing the fewest curves among
-    those clear of labels, markers and (if ``use_leaders``) leader lines:
-    ``(crossings, order, dx, dy, leader)``, or ``None`` if no spot is clear of labels and markers.
-    Every candidate is tested at once (arrays over candidates x obstacles); the choice is the one a
-    loop over the candidates in order would make."""
-    spots = _spots(w, h, label.size, label.anchor, rings)
-    dxs, dys, needs_leader = spots.dx, spots.dy, spots.needs_leader
-    reach = spots.reach + w + h
-    curves, markers = field.near(Box(ax - reach, ay - reach, ax + reach, ay + reach))
-    boxes = _Boxes(ax + dxs - 0.5 * w, ay - dys - 0.5 * h, ax + dxs + 0.5 * w, ay - dys + 0.5 * h)
-    ok = (boxes.left >= 0.0) & (boxes.top >= 0.0) & (boxes.right <= area[0]) & (boxes.bottom <= area[1])
-    grown = boxes.grown(MARGIN_PX)
-    ok &= ~grown.meet_any(taken) & ~boxes.meet_any(markers)
-    if not ok.any():
-        return None
-    if use_leaders and field.leaders.x0.size:
-        ok &= field.leaders.crossings(grown) == 0
-    if use_leaders and (field.leaders.x0.size or taken.left.size):
-        lead = np.flatnonzero(ok & needs_leader)
-        if lead.size:
-            b = boxes.take(lead)
-            ex, ey = _leader_ends(ax, ay, b.left, b.top, b.right, b.bottom)
-            blocked = _segments_meet_any(ax, ay, ex, ey, taken.grown(MARGIN_PX)) | field.leaders.cut_any(ax, ay, ex, ey)
-            ok[lead[blocked]] = False
-    bare = np.flatnonzero(ok & ~needs_leader)
-    if bare.size and markers.left.size:  # the text would seem to name another point
-        ok[bare[_nearer_marker_any(ax, ay, boxes.take(bare), markers)]] = False
-    clear = np.flatnonzero(ok)
-    if clear.size == 0:
-        return None
-    counts = curves.crossings(grown.take(clear))
-    order = int(clear[int(np.argmin(counts))])  # the first of the fewest (a first clear spot has 0)
-    dx, dy, leader = spots.offsets[order]
-    return (int(counts.min()), order, dx, dy, leader)
 
 
 @dataclass(frozen=True)
@@ -509,8 +325,8 @@ class _Table:
 
 
 def _table(anchors: list[_Anchor], n: int, area: tuple[float, float], field: _Field, fixed: list[Box]) -> _Table:
-    """:class:`_Table` of the first ``n`` spots of ``anchors``: what :func:`_best_spot` tests of
-    them that no placed label changes, for every label and spot at once (one set of array
+    """:class:`_Table` of the first ``n`` spots of ``anchors``: what the search (:func:`_walk`) tests
+    of them that no placed label changes, for every label and spot at once (one set of array
     operations per chart, not one per label), in the same arithmetic."""
     dx = np.stack([a.spots.dx[:n] for a in anchors])
     dy = np.stack([a.spots.dy[:n] for a in anchors])
@@ -573,6 +389,68 @@ def _table(anchors: list[_Anchor], n: int, area: tuple[float, float], field: _Fi
     return _Table({a.index: k for k, a in enumerate(anchors)}, boxes, grown, ok.reshape(shape), counts.reshape(shape))
 
 
+def _free(table: _Table, index: int) -> np.ndarray:
+    """Which of a label's spots in ``table`` pass its tests and meet no curve."""
+    k = table.row[index]
+    return table.ok[k] & (table.counts[k] == 0)
+
+
+def _walk(
+    anchor: _Anchor,
+    table: _Table,
+    taken: list[Box],
+    fixed: int,
+    leaders: list[tuple[float, float, float, float]],
+    use_leaders: bool,
+) -> tuple[int, int, float, float, bool] | None:
+    """The spot a label takes among those of ``table`` (the anchor's row), as ``(crossings, order,
+    dx, dy, leader)``, or ``None`` if none is clear: of the spots clear of the area's edge, of
+    every label box (``taken``: the fixed ones, then the placed ones from ``fixed`` on), of the
+    markers, and (if ``use_leaders``) of the ``leaders`` drawn so far, whose own leader line (if it
+    needs one) enters no label box and crosses no other leader line, and whose text names no
+    other point, the first of those crossing the fewest curves. The table's spots pass the tests
+    no placed label changes; they are tried fewest crossings first, then in the order tried, and
+    the first that also passes the rest is that spot."""
+    k = table.row[anchor.index]
+    spots = np.flatnonzero(table.ok[k])
+    counts = table.counts[k]
+    placed = taken[fixed:]
+    check_leader = use_leaders and bool(leaders or taken)
+    grown_taken = [(b.left - MARGIN_PX, b.top - MARGIN_PX, b.right + MARGIN_PX, b.bottom + MARGIN_PX) for b in taken]
+    ax, ay = anchor.ax, anchor.ay
+    for spot in spots[np.lexsort((spots, counts[spots]))].tolist():
+        g = table.grown[k, spot]
+        grown = (float(g[0]), float(g[1]), float(g[2]), float(g[3]))
+        if any(_meets(grown, b) for b in placed):
+            continue
+        if use_leaders and any(_leader_enters(segment, grown) for segment in leaders):
+            continue
+        dx, dy, leader = anchor.spots.offsets[spot]
+        if check_leader and leader:
+            b = table.boxes[k, spot]
+            ex, ey = _leader_end(ax, ay, Box(float(b[0]), float(b[1]), float(b[2]), float(b[3])))
+            if any(_leader_enters((ax, ay, ex, ey), t) for t in grown_taken) or any(
+                _cuts(segment, ax, ay, ex, ey) for segment in leaders
+            ):
+                continue
+        return (int(counts[spot]), spot, dx, dy, leader)
+    return None
+
+
+def _sign(v: float) -> int:
+    return (v > 0.0) - (v < 0.0)
+
+
+def _cuts(segment: tuple[float, float, float, float], ax: float, ay: float, ex: float, ey: float) -> bool:
+    """Whether ``(ax, ay) -> (ex, ey)`` crosses ``segment`` (:meth:`_Curves.cut_any` for one of each)."""
+    sx0, sy0, sx1, sy1 = segment
+    d1 = _sign((sx1 - sx0) * (ay - sy0) - (sy1 - sy0) * (ax - sx0))
+    d2 = _sign((sx1 - sx0) * (ey - sy0) - (sy1 - sy0) * (ex - sx0))
+    d3 = _sign((ex - ax) * (sy0 - ay) - (ey - ay) * (sx0 - ax))
+    d4 = _sign((ex - ax) * (sy1 - ay) - (ey - ay) * (sx1 - ax))
+    return d1 * d2 <= 0 and d3 * d4 <= 0
+
+
 def _meets(a: tuple[float, float, float, float], b: Box) -> bool:
     return a[0] < b.right and b.left < a[2] and a[1] < b.bottom and b.top < a[3]
 
@@ -586,26 +464,6 @@ def _leader_enters(segment: tuple[float, float, float, float], box: tuple[float,
     dx, dy = x1 - x0, y1 - y0
     sides = [dx * (cy - y0) - dy * (cx - x0) for cx in (left, right) for cy in (top, bottom)]
     return min(sides) <= 0.0 <= max(sides)
-
-
-def _nearer_marker_any(ax: float, ay: float, boxes: _Boxes, markers: _Boxes) -> np.ndarray:
-    """For each box, whether some other marker (centre more than 1 px, taxicab, from ``(ax, ay)``)
-    lies nearer the box than the label's own point ``(ax, ay)``: a text without a leader line names
-    the point nearest to it."""
-    own = np.hypot(
-        np.maximum(np.maximum(boxes.left - ax, 0.0), ax - boxes.right),
-        np.maximum(np.maximum(boxes.top - ay, 0.0), ay - boxes.bottom),
-    )
-    mx, my = 0.5 * (markers.left + markers.right), 0.5 * (markers.top + markers.bottom)
-    other = np.abs(mx - ax) + np.abs(my - ay) > 1.0
-    if not other.any():
-        return np.zeros(own.shape, bool)
-    mx, my = mx[other], my[other]
-    dist = np.hypot(
-        np.maximum(np.maximum(boxes.left[:, None] - mx, 0.0), mx - boxes.right[:, None]),
-        np.maximum(np.maximum(boxes.top[:, None] - my, 0.0), my - boxes.bottom[:, None]),
-    )
-    return np.any(dist < own[:, None], axis=1)
 
 
 def place_labels(chart: Chart, area_px: tuple[float, float], smallest: float | None = None) -> Chart:
@@ -698,12 +556,12 @@ def _place_in_order(
     that found no spot clear of labels and markers (kept at their point, with a leader line).
 
     What no placed label changes about the spots touching each point is worked out first, for
-    every label at once (:func:`_table`). A label takes the first of those spots that is clear of
-    everything (the table's tests, then the labels and leader lines placed before it), which is
-    what the full search (:func:`_best_spot`) would choose; a label with none is searched for in
-    full, and then in the far rings."""
-    no_curves = _Curves.of(Obstacles(np.empty(0), np.empty(0), np.empty(0), np.empty(0), ()))
-    field = _Field(_Curves.of(obs), _Boxes.of(obs.markers), no_curves)
+    every label at once (:func:`_table`), and about all the spots of the first :data:`RINGS` of
+    the labels that have no such spot meeting nothing. A label takes the first spot touching its
+    point that meets nothing, not the labels and leader lines placed before it either (the spot
+    :func:`_walk` would choose, without the sort); else :func:`_walk` over the first rings, then
+    over the far ones, and at last over the far ones across leader lines."""
+    field = _Field(_Curves.of(obs), _Boxes.of(obs.markers))
     taken: list[Box] = [label_box(chart, area, i) for i in chart.items if isinstance(i, Label) and not i.movable]
     taken += reserved
     fixed = len(taken)
@@ -716,6 +574,11 @@ def _place_in_order(
             w, h = text_box_px(item.text, item.size)
             anchors.append(_Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, RINGS)))
     bare = _table(anchors, anchors[0].spots.n_bare, area, field, taken) if anchors else None
+    # the labels none of whose spots touching the point is clear of what does not move: all their
+    # spots, worked out at once too
+    needy = [] if bare is None else [a for a in anchors if not np.any(_free(bare, a.index))]
+    n_full = len(anchors[0].spots.offsets) if anchors else 0
+    full = _table(needy, n_full, area, field, taken) if needy else None
     leaders: list[tuple[float, float, float, float]] = []
     out: dict[int, Item] = {}
     stuck: list[int] = []
@@ -725,9 +588,8 @@ def _place_in_order(
         assert isinstance(item, Label)
         best: tuple[int, int, float, float, bool] | None = None
         assert bare is not None
-        k = bare.row[index]
-        for spot in np.flatnonzero(bare.ok[k] & (bare.counts[k] == 0)).tolist():
-            g = bare.grown[k, spot]
+        for spot in np.flatnonzero(_free(bare, index)).tolist():
+            g = bare.grown[bare.row[index], spot]
             grown = (float(g[0]), float(g[1]), float(g[2]), float(g[3]))
             if not any(_meets(grown, b) for b in taken[fixed:]) and not any(
                 _leader_enters(segment, grown) for segment in leaders
@@ -735,13 +597,15 @@ def _place_in_order(
                 dx, dy, _ = anchor.spots.offsets[spot]
                 best = (0, spot, dx, dy, False)
                 break
-        boxes = _Boxes.of(taken)
-        if best is None:
-            best = _best_spot(ax, ay, w, h, item, area, boxes, field, True, RINGS)
+        if best is None:  # every spot of the first rings, the fewest crossings first
+            table = (
+                full if full is not None and index in full.row else _table([anchor], n_full, area, field, taken[:fixed])
+            )
+            best = _walk(anchor, table, taken, fixed, leaders, True)
         if best is None:  # crowded: farther out, and at last across other leader lines
-            best = _best_spot(ax, ay, w, h, item, area, boxes, field, True, FAR_RINGS)
-        if best is None:
-            best = _best_spot(ax, ay, w, h, item, area, boxes, field, False, FAR_RINGS)
+            far = _Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, FAR_RINGS))
+            table = _table([far], len(far.spots.offsets), area, field, taken[:fixed])
+            best = _walk(far, table, taken, fixed, leaders, True) or _walk(far, table, taken, fixed, leaders, False)
         if best is None:  # nowhere free of labels and markers: keep the old spot, with a leader line
             out[index] = replace(item, leader=True)
             stuck.append(index)
@@ -752,8 +616,6 @@ def _place_in_order(
         taken.append(box)
         if leader:
             leaders.append((ax, ay, *_leader_end(ax, ay, box)))
-            a = np.array(leaders, float)
-            field = replace(field, leaders=_Curves.of(Obstacles(a[:, 0], a[:, 1], a[:, 2], a[:, 3], ())))
         out[index] = placed
     return out, stuck
 
