@@ -412,9 +412,11 @@ def line_rgb(color: tuple[int, int, int]) -> tuple[int, int, int]:
 def _to_linear(colors: np.ndarray, shade: Shade = "light") -> np.ndarray:
     """sRGB colours ``(n, 3)``, as sent for a ``shade`` page (:func:`sent_for_shade`), as the values
     viser's lines take (:func:`line_rgb`)."""
-    unique, inverse = np.unique(sent_for_shade(colors, shade), axis=0, return_inverse=True)
-    mapped = np.array([line_rgb((int(r), int(g), int(b))) for r, g, b in unique], dtype=np.uint8)
-    return mapped[inverse.reshape(-1)]
+    c = sent_for_shade(colors, shade).astype(np.int64)
+    # each colour as one integer: a 1-d unique (a row-wise one sorts structured rows, ~10x slower)
+    unique, inverse = np.unique((c[:, 0] << 16) | (c[:, 1] << 8) | c[:, 2], return_inverse=True)
+    mapped = np.array([line_rgb((int(v >> 16), int((v >> 8) & 255), int(v & 255))) for v in unique], dtype=np.uint8)
+    return mapped[inverse.reshape(-1)].reshape(-1, 3)
 
 
 class _LineNodes:
