@@ -218,13 +218,24 @@ def dash_segments(
     ``apart``: each segment a line of its own, its pattern starting at its start."""
     if not pattern or len(a) == 0:
         return a, b
+    breaks = np.ones(len(a), dtype=bool) if apart else np.arange(len(a)) == 0
+    p0, p1, _ = _dash_lines(a, b, pattern, scale, breaks)
+    return p0, p1
+
+
+def _dash_lines(
+    a: FloatArray, b: FloatArray, pattern: tuple[float, ...], scale: float, breaks: np.ndarray
+) -> tuple[FloatArray, FloatArray, np.ndarray]:
+    """:func:`dash_segments` of several lines at once: segment ``i`` starts a new line (its pattern
+    afresh) where ``breaks[i]`` (``breaks[0]`` is true); also which segment each dash comes from."""
     seg_len = np.hypot(*(b - a).T)
     pieces = np.maximum(np.ceil(seg_len / 1.5), 1).astype(int)
     idx = np.repeat(np.arange(len(a)), pieces)
     k = np.arange(idx.size) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     f0 = k / pieces[idx]
     f1 = (k + 1) / pieces[idx]
-    start = np.zeros(len(a)) if apart else np.concatenate([[0.0], np.cumsum(seg_len)[:-1]])
+    along = np.concatenate([[0.0], np.cumsum(seg_len)[:-1]])  # from the first line's start
+    start = along - along[np.maximum.accumulate(np.where(breaks, np.arange(len(a)), 0))]
     mid = start[idx] + 0.5 * (f0 + f1) * seg_len[idx]
     pat = np.asarray(pattern) * scale
     phase = np.mod(mid, pat.sum())
@@ -235,12 +246,12 @@ def dash_segments(
     # one segment per dash (per dash and original segment): consecutive "on" pieces joined
     k_on = np.flatnonzero(on)
     if k_on.size == 0:
-        return p0[:0], p1[:0]
+        return p0[:0], p1[:0], idx[:0]
     new_run = np.ones(k_on.size, dtype=bool)
     new_run[1:] = (np.diff(k_on) != 1) | (idx[k_on[1:]] != idx[k_on[:-1]])
     starts = k_on[new_run]
     ends = k_on[np.append(new_run[1:], True)]
-    return p0[starts], p1[ends]
+    return p0[starts], p1[ends], idx[starts]
 
 
 def dashed(x: FloatArray, z: FloatArray, pattern: tuple[float, ...], scale: float) -> tuple[FloatArray, FloatArray]:
@@ -468,20 +479,38 @@ class _Strokes:
         if parts_a:
             a, b, keep = _clip_kept(np.concatenate(parts_a), np.concatenate(parts_b), f.plot)
             parts_a, parts_b, parts_k = [a], [b], [np.concatenate(parts_k)[keep]]
-        for item, k in self._dashed:
-            style, layer = self._styles[k]
-            if isinstance(item, Polyline):
-                a, b = polyline_segments(*f.px(item.x, item.y))
-                apart = False
-            elif isinstance(item, Segments):
-                (a, b), apart = _segments_px(item, f), True
-            else:
-                a, b = polyline_segments(*item)
-                apart = False
-            a, b = _clipped_dashed(a, b, style, f, theme, apart)
-            parts_a.append(a)
-            parts_b.append(b)
-            parts_k.append(np.full(len(a), k))
+        if self._dashed:
+            a_parts: list[FloatArray] = []
+            b_parts: list[FloatArray] = []
+            firsts: list[np.ndarray] = []
+            owners: list[np.ndarray] = []
+            for item, k in self._dashed:
+                if isinstance(item, Polyline):
+                    (a, b), apart = polyline_segments(*f.px(item.x, item.y)), False
+                elif isinstance(item, Segments):
+                    (a, b), apart = _segments_px(item, f), True
+                else:
+                    (a, b), apart = polyline_segments(*item), False
+                a_parts.append(a)
+                b_parts.append(b)
+                firsts.append(np.ones(len(a), dtype=bool) if apart else np.arange(len(a)) == 0)
+                owners.append(np.full(len(a), k))
+            a, b, keep = _clip_kept(np.concatenate(a_parts), np.concatenate(b_parts), f.plot)
+            owner = np.concatenate(owners)[keep]
+            # a line starts where its first kept segment is (clipping may drop its first ones)
+            first = np.concatenate(firsts)[keep] | np.concatenate([[True], owner[1:] != owner[:-1]])
+            looks = {
+                k: (DASHES[self._styles[k][0].dash], line_width(self._styles[k][0], theme)) for _, k in self._dashed
+            }
+            for look in dict.fromkeys(looks.values()):  # each pattern and width: its lines at once
+                mine = np.isin(owner, [k for k, v in looks.items() if v == look])
+                if not mine.any():
+                    continue
+                pattern, width = look
+                da, db, src = _dash_lines(a[mine], b[mine], pattern, width / 2.0, first[mine])
+                parts_a.append(da)
+                parts_b.append(db)
+                parts_k.append(owner[mine][src])
         if not parts_a:
             return ()
         k_all = np.concatenate(parts_k)
