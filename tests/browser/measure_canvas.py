@@ -7,8 +7,8 @@ slider-to-redraw time. A script, not a test (numbers vary with the machine's loa
   complete drawing and 1 s has passed quietly.
 * fps: ``requestAnimationFrame`` ticks in which the page's JavaScript handled at least one new
   websocket message (a new picture to show; viser's websocket worker hands them over), per
-  second, over ``--seconds`` of playback of the paper's Fig. 3, at the given viewport (the
-  diagrams visible). Also the page's animation frames per second and messages per second.
+  second, over ``--seconds`` of playback of the paper's Fig. 3 after ``--warm`` seconds of it, at
+  the given viewport (the diagrams visible). Also the page's animation frames per second and messages per second.
 * slider-to-redraw: from the Enter that submits V = 0.85 in its box to the last websocket message
   of the redraw the page handles (messages closer than 60 ms counted as one burst); median of 5
   (with the panel shown, after a presenter-mode run).
@@ -71,7 +71,7 @@ def _width(session: Any) -> float:
 
 
 def measure(
-    width: int, height: int, seconds: float, shade: Shade = "light", presenter: bool = False
+    width: int, height: int, seconds: float, shade: Shade = "light", presenter: bool = False, warm: float = 2.0
 ) -> dict[str, float]:
     from playwright.sync_api import sync_playwright
 
@@ -108,7 +108,7 @@ def measure(
                 assert layout is not None
                 smallest = min([t.px for t in session.static_picture.texts] + [layout.theme.text_px])
                 session.toggle_play()
-            time.sleep(2.0)  # warm
+            time.sleep(warm)  # warm (viser's adaptive resolution steps every 2.5 s at most)
             f0, k0, m0 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")
             time.sleep(seconds)
             f1, k1, m1 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")
@@ -155,8 +155,9 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=5.0)
     parser.add_argument("--theme", choices=("light", "dark"), default="light", help="the tab's theme")
     parser.add_argument("--presenter", action="store_true", help="play in presenter mode (key F)")
+    parser.add_argument("--warm", type=float, default=2.0, help="seconds of playback before counting")
     args = parser.parse_args()
-    r = measure(args.width, args.height, args.seconds, args.theme, args.presenter)
+    r = measure(args.width, args.height, args.seconds, args.theme, args.presenter, args.warm)
     print(" ".join(f"{k}={v:.1f}" for k, v in r.items()), flush=True)
 
 
