@@ -1,9 +1,10 @@
 """Speed of the app, server side and in the browser (a script that prints figures, not a test).
 
-    python -m tests.benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser]
+    python -m tests.benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--phases]
 
 * rebuild: a slider change to every drawing rebuilt (scene, diagrams, lanes), median
-  per scene, timed in the server process (target <= 16 ms);
+  per scene, timed in the server process (target <= 16 ms); ``--phases`` prints only where
+  it goes (:func:`bench_phases`);
 * answer: a slider value sent by a client, from the server's socket receiving it to the
   server's socket sending the last frame of the answer (target <= 10 ms), with the session
   flushing its answer and, alternated with it, without (viser's 1/60 s send window);
@@ -70,6 +71,86 @@ def bench_rebuild() -> dict[str, float]:
         client.stop()
         loop.run(client.close())
     loop.close()
+    return out
+
+
+#: The steps of a slider's redraw timed by :func:`bench_phases`: (label, module, attribute). Each is
+#: a function the session calls (by its own module's name for it, or as a method).
+PHASES = (
+    ("drawing", "rigidrel_app.live.session", "build_drawing"),
+    ("  its label placement", "rigidrel_app.view.diagrams", "place_labels"),
+    ("charts' pictures", "rigidrel_app.live.session", "chart_picture"),
+    ("legend's picture", "rigidrel_app.live.session", "legend_picture"),
+    ("static layer sent", "rigidrel_app.backends.viser", "PageRenderer.set_static"),
+    ("instant drawn", "rigidrel_app.live.session", "Session.draw_now"),
+    ("  its lanes and moving parts sent", "rigidrel_app.backends.viser", "PageRenderer.update"),
+    ("controls shown", "rigidrel_app.live.controls", "Controls.show_settings"),
+    ("camera", "rigidrel_app.live.session", "Session.fit_camera"),
+)
+
+
+def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
+    """Where a slider's redraw goes: the sweep of :func:`bench_rebuild` for each scene, made twice
+    (the second timed, back to back), each of :data:`PHASES` timed by wrapping the function the
+    session calls; the total's median and each phase's mean, per scene, in ms."""
+    import importlib
+
+    totals: dict[str, float] = {}
+    spent: dict[str, float] = {}
+
+    def timed(label: str, f: Any) -> Any:
+        def wrapper(*args: Any, **kwargs: Any) -> Any:
+            t0 = time.perf_counter()
+            try:
+                return f(*args, **kwargs)
+            finally:
+                spent[label] = spent.get(label, 0.0) + time.perf_counter() - t0
+
+        return wrapper
+
+    originals: list[tuple[Any, str, Any]] = []
+    for label, module_name, attribute in PHASES:
+        owner: Any = importlib.import_module(module_name)
+        *path, name = attribute.split(".")
+        for part in path:
+            owner = getattr(owner, part)
+        originals.append((owner, name, getattr(owner, name)))
+        setattr(owner, name, timed(label, getattr(owner, name)))
+    loop = ClientLoop()
+    out: dict[str, float] = {}
+    try:
+        with App(port=0) as app:
+            client = LightClient(app.url)
+            loop.run(client.connect())
+            loop.start(client.run(3600))
+            wait_until(lambda: app.sessions, timeout=60)
+            session = next(iter(app.sessions.values()))
+            for kind in kinds or tuple(rr.scene_descriptions()):
+                session.change(Settings(kind))
+                sweep = []
+                for name, value in slider_sweep(kind):
+                    s = session.settings
+                    new = replace(s, frame=CUSTOM_FRAME, beta=value) if name == "beta" else s.with_value(name, value)
+                    if not isinstance(resolve(new), str):
+                        sweep.append(new)
+                for new in sweep:
+                    session.change(new)
+                spent.clear()
+                times = []
+                for new in sweep:
+                    t0 = time.perf_counter()
+                    session.change(new)
+                    times.append(time.perf_counter() - t0)
+                totals[kind] = statistics.median(times)
+                out[f"redraw_median_ms[{kind}]"] = 1e3 * totals[kind]
+                for label, _, _ in PHASES:
+                    out[f"phase_mean_ms[{kind}][{label}]"] = 1e3 * spent.get(label, 0.0) / len(sweep)
+            client.stop()
+            loop.run(client.close())
+    finally:
+        for owner, name, original in originals:
+            setattr(owner, name, original)
+        loop.close()
     return out
 
 
@@ -226,8 +307,14 @@ def main() -> None:
     parser.add_argument("--clients", type=int, nargs="+", default=[1, 10])
     parser.add_argument("--no-browser", action="store_true")
     parser.add_argument("--json", action="store_true")
+    parser.add_argument("--phases", action="store_true", help="only where a slider's redraw goes, per scene")
     args = parser.parse_args()
     figures: dict[str, float] = {}
+    if args.phases:
+        figures.update(bench_phases())
+        for k, v in figures.items():
+            print(f"{k:70s} {v:8.2f}")
+        return
     figures.update(bench_rebuild())
     figures.update(bench_answer())
     for n in args.clients:
