@@ -416,7 +416,8 @@ def _walk(
     counts = table.counts[k]
     placed = taken[fixed:]
     check_leader = use_leaders and bool(leaders or taken)
-    grown_taken = [(b.left - MARGIN_PX, b.top - MARGIN_PX, b.right + MARGIN_PX, b.bottom + MARGIN_PX) for b in taken]
+    m = MARGIN_PX
+    grown_taken = [(b.left - m, b.top - m, b.right + m, b.bottom + m) for b in taken] if check_leader else []
     ax, ay = anchor.ax, anchor.ay
     for spot in spots[np.lexsort((spots, counts[spots]))].tolist():
         g = table.grown[k, spot]
@@ -442,7 +443,8 @@ def _sign(v: float) -> int:
 
 
 def _cuts(segment: tuple[float, float, float, float], ax: float, ay: float, ex: float, ey: float) -> bool:
-    """Whether ``(ax, ay) -> (ex, ey)`` crosses ``segment`` (:meth:`_Curves.cut_any` for one of each)."""
+    """Whether ``(ax, ay) -> (ex, ey)`` crosses ``segment``: each has the other's ends on opposite
+    sides of its line, or one on it (orientation tests)."""
     sx0, sy0, sx1, sy1 = segment
     d1 = _sign((sx1 - sx0) * (ay - sy0) - (sy1 - sy0) * (ax - sx0))
     d2 = _sign((sx1 - sx0) * (ey - sy0) - (sy1 - sy0) * (ex - sx0))
