@@ -17,11 +17,13 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import io
 import json
 import math
 import statistics
 import time
+from collections.abc import Iterator
 from dataclasses import replace
 from typing import Any
 
@@ -29,6 +31,7 @@ import numpy as np
 
 import rigidrel_core as rr
 from rigidrel_app.live.server import ANIMATION_HZ, App
+from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings, resolve
 from tests import load
 from tests.viser_client import ClientLoop, LightClient, wait_until
@@ -46,31 +49,48 @@ def slider_sweep(kind: str) -> list[tuple[str, float]]:
     return sweep + [("beta", float(b)) for b in np.linspace(-0.9, 0.9, 6)]
 
 
+def sweep_settings(start: Settings) -> list[Settings]:
+    """The settings a tab passes through as :func:`slider_sweep` moves its sliders one value after
+    another from ``start`` (each from the one before), leaving out those that make no scene (V1 <= V2)."""
+    out: list[Settings] = []
+    s = start
+    for name, value in slider_sweep(start.scene):
+        new = replace(s, frame=CUSTOM_FRAME, beta=value) if name == "beta" else s.with_value(name, value)
+        if not isinstance(resolve(new), str):
+            out.append(new)
+            s = new
+    return out
+
+
+@contextlib.contextmanager
+def one_tab() -> Iterator[Session]:
+    """A server with one lightweight client (in this process), its tab's session; both closed after."""
+    loop = ClientLoop()
+    try:
+        with App(port=0) as app:
+            client = LightClient(app.url)
+            loop.run(client.connect())
+            loop.start(client.run(3600))
+            wait_until(lambda: app.sessions, timeout=60)
+            yield next(iter(app.sessions.values()))
+            client.stop()
+            loop.run(client.close())
+    finally:
+        loop.close()
+
+
 def bench_rebuild() -> dict[str, float]:
     out: dict[str, float] = {}
-    loop = ClientLoop()
-    with App(port=0) as app:
-        client = LightClient(app.url)
-        loop.run(client.connect())
-        loop.start(client.run(3600))
-        wait_until(lambda: app.sessions, timeout=60)
-        session = next(iter(app.sessions.values()))
+    with one_tab() as session:
         for kind in rr.scene_descriptions():
             session.change(Settings(kind))
             times = []
-            for name, value in slider_sweep(kind):
-                s = session.settings
-                new = replace(s, frame=CUSTOM_FRAME, beta=value) if name == "beta" else s.with_value(name, value)
-                if isinstance(resolve(new), str):  # a combination that makes no scene (V1 <= V2): not a rebuild
-                    continue
+            for new in sweep_settings(session.settings):
                 t0 = time.perf_counter()
                 session.change(new)  # what a slider's callback does
                 times.append(time.perf_counter() - t0)
             out[f"rebuild_median_ms[{kind}]"] = 1e3 * statistics.median(times)
             out[f"rebuild_max_ms[{kind}]"] = 1e3 * max(times)
-        client.stop()
-        loop.run(client.close())
-    loop.close()
     return out
 
 
@@ -95,7 +115,6 @@ def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
     session calls; the total's median and each phase's mean, per scene, in ms."""
     import importlib
 
-    totals: dict[str, float] = {}
     spent: dict[str, float] = {}
 
     def timed(label: str, f: Any) -> Any:
@@ -116,41 +135,27 @@ def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
             owner = getattr(owner, part)
         originals.append((owner, name, getattr(owner, name)))
         setattr(owner, name, timed(label, getattr(owner, name)))
-    loop = ClientLoop()
     out: dict[str, float] = {}
     try:
-        with App(port=0) as app:
-            client = LightClient(app.url)
-            loop.run(client.connect())
-            loop.start(client.run(3600))
-            wait_until(lambda: app.sessions, timeout=60)
-            session = next(iter(app.sessions.values()))
+        with one_tab() as session:
             for kind in kinds or tuple(rr.scene_descriptions()):
                 session.change(Settings(kind))
-                sweep = []
-                for name, value in slider_sweep(kind):
-                    s = session.settings
-                    new = replace(s, frame=CUSTOM_FRAME, beta=value) if name == "beta" else s.with_value(name, value)
-                    if not isinstance(resolve(new), str):
-                        sweep.append(new)
+                sweep = sweep_settings(session.settings)
                 for new in sweep:
                     session.change(new)
+                session.change(Settings(kind))
                 spent.clear()
                 times = []
                 for new in sweep:
                     t0 = time.perf_counter()
                     session.change(new)
                     times.append(time.perf_counter() - t0)
-                totals[kind] = statistics.median(times)
-                out[f"redraw_median_ms[{kind}]"] = 1e3 * totals[kind]
+                out[f"redraw_median_ms[{kind}]"] = 1e3 * statistics.median(times)
                 for label, _, _ in PHASES:
                     out[f"phase_mean_ms[{kind}][{label}]"] = 1e3 * spent.get(label, 0.0) / len(sweep)
-            client.stop()
-            loop.run(client.close())
     finally:
         for owner, name, original in originals:
             setattr(owner, name, original)
-        loop.close()
     return out
 
 
