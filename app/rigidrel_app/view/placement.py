@@ -389,12 +389,6 @@ def _table(anchors: list[_Anchor], n: int, area: tuple[float, float], field: _Fi
     return _Table({a.index: k for k, a in enumerate(anchors)}, boxes, grown, ok.reshape(shape), counts.reshape(shape))
 
 
-def _free(table: _Table, index: int) -> np.ndarray:
-    """Which of a label's spots in ``table`` pass its tests and meet no curve."""
-    k = table.row[index]
-    return table.ok[k] & (table.counts[k] == 0)
-
-
 def _walk(
     anchor: _Anchor,
     table: _Table,
@@ -557,12 +551,11 @@ def _place_in_order(
     clear of the ``reserved`` boxes too: each one's placed item by index, and the indices of those
     that found no spot clear of labels and markers (kept at their point, with a leader line).
 
-    What no placed label changes about the spots touching each point is worked out first, for
-    every label at once (:func:`_table`), and about all the spots of the first :data:`RINGS` of
-    the labels that have no such spot meeting nothing. A label takes the first spot touching its
-    point that meets nothing, not the labels and leader lines placed before it either (the spot
-    :func:`_walk` would choose, without the sort); else :func:`_walk` over the first rings, then
-    over the far ones, and at last over the far ones across leader lines."""
+    What no placed label changes about the spots of the first :data:`RINGS` is worked out first,
+    for every label at once (:func:`_table`). A label takes the first spot touching its point that
+    meets nothing, not the labels and leader lines placed before it either (the spot :func:`_walk`
+    would choose, without the sort); else :func:`_walk` over the first rings, then over the far
+    ones, and at last over the far ones across leader lines."""
     field = _Field(_Curves.of(obs), _Boxes.of(obs.markers))
     taken: list[Box] = [label_box(chart, area, i) for i in chart.items if isinstance(i, Label) and not i.movable]
     taken += reserved
@@ -575,12 +568,8 @@ def _place_in_order(
         if 0.0 <= ax <= area[0] and 0.0 <= ay <= area[1]:
             w, h = text_box_px(item.text, item.size)
             anchors.append(_Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, RINGS)))
-    bare = _table(anchors, anchors[0].spots.n_bare, area, field, taken) if anchors else None
-    # the labels none of whose spots touching the point is clear of what does not move: all their
-    # spots, worked out at once too
-    needy = [] if bare is None else [a for a in anchors if not np.any(_free(bare, a.index))]
-    n_full = len(anchors[0].spots.offsets) if anchors else 0
-    full = _table(needy, n_full, area, field, taken) if needy else None
+    # every spot of the first rings of every label, worked out at once
+    table = _table(anchors, len(anchors[0].spots.offsets), area, field, taken) if anchors else None
     leaders: list[tuple[float, float, float, float]] = []
     out: dict[int, Item] = {}
     stuck: list[int] = []
@@ -589,9 +578,11 @@ def _place_in_order(
         item = chart.items[index]
         assert isinstance(item, Label)
         best: tuple[int, int, float, float, bool] | None = None
-        assert bare is not None
-        for spot in np.flatnonzero(_free(bare, index)).tolist():
-            g = bare.grown[bare.row[index], spot]
+        assert table is not None
+        k = table.row[index]
+        free = table.ok[k, : anchor.spots.n_bare] & (table.counts[k, : anchor.spots.n_bare] == 0)
+        for spot in np.flatnonzero(free).tolist():
+            g = table.grown[k, spot]
             grown = (float(g[0]), float(g[1]), float(g[2]), float(g[3]))
             if not any(_meets(grown, b) for b in taken[fixed:]) and not any(
                 _leader_enters(segment, grown) for segment in leaders
@@ -600,14 +591,11 @@ def _place_in_order(
                 best = (0, spot, dx, dy, False)
                 break
         if best is None:  # every spot of the first rings, the fewest crossings first
-            table = (
-                full if full is not None and index in full.row else _table([anchor], n_full, area, field, taken[:fixed])
-            )
             best = _walk(anchor, table, taken, fixed, leaders, True)
         if best is None:  # crowded: farther out, and at last across other leader lines
             far = _Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, FAR_RINGS))
-            table = _table([far], len(far.spots.offsets), area, field, taken[:fixed])
-            best = _walk(far, table, taken, fixed, leaders, True) or _walk(far, table, taken, fixed, leaders, False)
+            rings = _table([far], len(far.spots.offsets), area, field, taken[:fixed])
+            best = _walk(far, rings, taken, fixed, leaders, True) or _walk(far, rings, taken, fixed, leaders, False)
         if best is None:  # nowhere free of labels and markers: keep the old spot, with a leader line
             out[index] = replace(item, leader=True)
             stuck.append(index)
