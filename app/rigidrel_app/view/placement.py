@@ -23,7 +23,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .vocabulary import Area, Chart, FloatArray, Item, Label, Points, Polyline, Segments
+from .vocabulary import Chart, FloatArray, Item, Label, Points, Polyline, Segments
 
 #: Width of one character of bold text, per font size (sans-serif bold digits and capitals are
 #: about 0.62 em; a safe upper bound, so that estimated boxes hold the drawn text).
@@ -213,39 +213,41 @@ class _Curves:
 
 
 def obstacles(chart: Chart, area: tuple[float, float]) -> Obstacles:
-    """The chart's drawn curves (polylines and segments of nonzero width) and markers, in pixels."""
-    xs0: list[FloatArray] = []
-    ys0: list[FloatArray] = []
-    xs1: list[FloatArray] = []
-    ys1: list[FloatArray] = []
-    markers: list[Box] = []
-    for item in chart.items:
-        if isinstance(item, Polyline) and item.style.width > 0 and item.x.size > 1:
-            px, py = _to_px(chart, area, np.asarray(item.x, float), np.asarray(item.y, float))
-            keep = np.isfinite(px[:-1]) & np.isfinite(px[1:]) & np.isfinite(py[:-1]) & np.isfinite(py[1:])
-            xs0.append(px[:-1][keep])
-            ys0.append(py[:-1][keep])
-            xs1.append(px[1:][keep])
-            ys1.append(py[1:][keep])
-        elif isinstance(item, Segments) and item.style.width > 0:
-            ax, ay = _to_px(chart, area, np.asarray(item.x0, float), np.asarray(item.y0, float))
-            bx, by = _to_px(chart, area, np.asarray(item.x1, float), np.asarray(item.y1, float))
-            xs0.append(ax)
-            ys0.append(ay)
-            xs1.append(bx)
-            ys1.append(by)
-        elif isinstance(item, Points):
-            px, py = _to_px(chart, area, np.asarray(item.x, float), np.asarray(item.y, float))
-            h = 0.5 * item.size * MARKER_SCALE
-            markers.extend(Box(a - h, b - h, a + h, b + h) for a, b in zip(px, py, strict=True))
-        elif isinstance(item, Area):
-            continue  # a light fill: text may sit on it
+    """The chart's drawn curves (polylines and segments of nonzero width) and markers, in pixels.
+    Areas (light fills) are no obstacles: text may sit on them. The polylines are mapped at once
+    (a NaN between each two: no segment joins them), so are the separate segments and the markers."""
+    lines = [i for i in chart.items if isinstance(i, Polyline) and i.style.width > 0 and i.x.size > 1]
+    separate = [i for i in chart.items if isinstance(i, Segments) and i.style.width > 0]
+    points = [i for i in chart.items if isinstance(i, Points)]
     empty = np.empty(0)
-
-    def cat(parts: list[FloatArray]) -> FloatArray:
-        return np.concatenate(parts) if parts else empty
-
-    return Obstacles(cat(xs0), cat(ys0), cat(xs1), cat(ys1), tuple(markers))
+    xs0, ys0, xs1, ys1 = [empty], [empty], [empty], [empty]
+    if lines:
+        gap = np.array([np.nan])
+        x = np.concatenate([part for i in lines for part in (np.asarray(i.x, float), gap)])
+        y = np.concatenate([part for i in lines for part in (np.asarray(i.y, float), gap)])
+        px, py = _to_px(chart, area, x, y)
+        keep = np.isfinite(px[:-1]) & np.isfinite(px[1:]) & np.isfinite(py[:-1]) & np.isfinite(py[1:])
+        xs0.append(px[:-1][keep])
+        ys0.append(py[:-1][keep])
+        xs1.append(px[1:][keep])
+        ys1.append(py[1:][keep])
+    if separate:
+        ax, ay = _to_px(
+            chart, area, *(np.concatenate([np.asarray(getattr(i, k), float) for i in separate]) for k in ("x0", "y0"))
+        )
+        bx, by = _to_px(
+            chart, area, *(np.concatenate([np.asarray(getattr(i, k), float) for i in separate]) for k in ("x1", "y1"))
+        )
+        xs0.append(ax)
+        ys0.append(ay)
+        xs1.append(bx)
+        ys1.append(by)
+    markers: list[Box] = []
+    for item in points:
+        px, py = _to_px(chart, area, np.asarray(item.x, float), np.asarray(item.y, float))
+        h = 0.5 * item.size * MARKER_SCALE
+        markers.extend(Box(a - h, b - h, a + h, b + h) for a, b in zip(px.tolist(), py.tolist(), strict=True))
+    return Obstacles(np.concatenate(xs0), np.concatenate(ys0), np.concatenate(xs1), np.concatenate(ys1), tuple(markers))
 
 
 def label_box(chart: Chart, area: tuple[float, float], label: Label) -> Box:
