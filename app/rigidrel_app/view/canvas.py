@@ -499,18 +499,20 @@ class _Strokes:
             owner = np.concatenate(owners)[keep]
             # a line starts where its first kept segment is (clipping may drop its first ones)
             first = np.concatenate(firsts)[keep] | np.concatenate([[True], owner[1:] != owner[:-1]])
-            looks = {
-                k: (DASHES[self._styles[k][0].dash], line_width(self._styles[k][0], theme)) for _, k in self._dashed
-            }
-            for look in dict.fromkeys(looks.values()):  # each pattern and width: its lines at once
-                mine = np.isin(owner, [k for k, v in looks.items() if v == look])
-                if not mine.any():
-                    continue
-                pattern, width = look
-                da, db, src = _dash_lines(a[mine], b[mine], pattern, width / 2.0, first[mine])
+            groups: dict[tuple[tuple[float, ...], float], list[int]] = {}
+            for _, k in self._dashed:
+                style = self._styles[k][0]
+                groups.setdefault((DASHES[style.dash], line_width(style, theme)), []).append(k)
+            for (pattern, width), ks in groups.items():  # each pattern and width: its lines at once
+                if len(groups) == 1:
+                    da, db, src = _dash_lines(a, b, pattern, width / 2.0, first)
+                    parts_k.append(owner[src])
+                else:
+                    mine = np.isin(owner, ks)
+                    da, db, src = _dash_lines(a[mine], b[mine], pattern, width / 2.0, first[mine])
+                    parts_k.append(owner[mine][src])
                 parts_a.append(da)
                 parts_b.append(db)
-                parts_k.append(owner[mine][src])
         if not parts_a:
             return ()
         k_all = np.concatenate(parts_k)
@@ -519,13 +521,14 @@ class _Strokes:
         order = np.argsort(k_all, kind="stable")  # the items' order, each item's segments in theirs
         k_all = k_all[order]
         pts = np.stack([np.concatenate(parts_a)[order], np.concatenate(parts_b)[order]], axis=1)
-        looks = [(line_width(st, theme), layer, color_rgb(st.color, st.opacity)) for st, layer in self._styles]
-        colors = np.array([c for _, _, c in looks], dtype=np.uint8)[k_all]
-        width_layer = np.array([(w, layer) for w, layer, _ in looks], dtype=float)[k_all]
-        cuts = np.flatnonzero(np.any(width_layer[1:] != width_layer[:-1], axis=1)) + 1
+        keys = [(line_width(st, theme), layer) for st, layer in self._styles]
+        colors = np.array([color_rgb(st.color, st.opacity) for st, _ in self._styles], dtype=np.uint8)[k_all]
+        key_index = {key: n for n, key in enumerate(dict.fromkeys(keys))}
+        run_key = np.array([key_index[key] for key in keys])[k_all]  # each segment's width and layer
+        cuts = (np.flatnonzero(run_key[1:] != run_key[:-1]) + 1).tolist()
         out: list[PageLines] = []
-        for lo, hi in zip(np.concatenate([[0], cuts]), np.concatenate([cuts, [len(k_all)]]), strict=True):
-            w, layer = looks[int(k_all[lo])][:2]
+        for lo, hi in zip([0, *cuts], [*cuts, len(k_all)], strict=True):
+            w, layer = keys[int(k_all[lo])]
             out.append(PageLines(pts[lo:hi], colors[lo:hi], w, layer))
         return tuple(out)
 
