@@ -365,8 +365,10 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
 
     Every solid line (curves, separate segments, labels' leader lines) is stroked in one go: their
     segments gathered in the items' order, mapped to px, clipped together and cut into runs of one
-    width and layer; each dashed one is stroked alone (its pattern runs along it). The segments,
-    colours, widths and layers, in order, are those of stroking each item alone."""
+    width and layer; the dashed ones are clipped together and dashed per pattern and width, each
+    line's pattern running along it from its first segment kept (a separate segment's from its
+    own start). The segments, colours, widths and layers, in order, are those of stroking each
+    item alone."""
     curves_layer = CURVES if layer is None else layer
     events_layer = EVENTS if layer is None else layer
     strokes = _Strokes()
@@ -421,7 +423,7 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
 
 class _Strokes:
     """The lines of a chart's items, gathered in order and stroked at the end (:func:`items_picture`):
-    the solid ones all at once, each dashed one alone."""
+    the solid ones all at once, the dashed ones at once per pattern and width."""
 
     def __init__(self) -> None:
         self._solid_data: list[tuple[FloatArray, FloatArray, int]] = []
@@ -459,6 +461,8 @@ class _Strokes:
             self._solid_segments.append((it, k))
 
     def lines(self, f: ChartFrame, theme: Theme) -> tuple[PageLines, ...]:
+        """Every stroke's segments on the page (``f``: data -> px), in the order the strokes were
+        added, as runs of one width and layer."""
         parts_a: list[FloatArray] = []
         parts_b: list[FloatArray] = []
         parts_k: list[np.ndarray] = []
