@@ -615,11 +615,13 @@ def test_separate_segments_are_stroked_as_one_by_one(kind: str) -> None:
             x0, z0 = f.px(it.x0, it.y0)
             x1, z1 = f.px(it.x1, it.y1)
             whole = canvas.items_picture((it,), f, NORMAL).lines
-            one_by_one = [
-                canvas._stroke(np.array([x0[k], x1[k]]), np.array([z0[k], z1[k]]), it.style, f, NORMAL, CURVES)
-                for k in range(x0.size)
-            ]
-            parts = [s.points for s in one_by_one if s is not None]
+            parts = []
+            for k in range(x0.size):  # each segment alone: clipped, then dashed from its own start
+                a, b = canvas.clip_segments(np.array([[x0[k], z0[k]]]), np.array([[x1[k], z1[k]]]), f.plot)
+                pattern, width = canvas.DASHES[it.style.dash], canvas.line_width(it.style, NORMAL)
+                a, b = canvas.dash_segments(a, b, pattern, width / 2.0)
+                if len(a):
+                    parts.append(np.stack([a, b], axis=1))
             if not whole:
                 assert parts == []
                 continue

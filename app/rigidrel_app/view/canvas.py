@@ -210,16 +210,14 @@ def _polyline_segments_kept(x: FloatArray, z: FloatArray) -> tuple[FloatArray, F
 
 
 def dash_segments(
-    a: FloatArray, b: FloatArray, pattern: tuple[float, ...], scale: float, apart: bool = False
+    a: FloatArray, b: FloatArray, pattern: tuple[float, ...], scale: float
 ) -> tuple[FloatArray, FloatArray]:
     """Segments ``a -> b`` (in order along a line) as they are drawn with a dash ``pattern``: all of
     them if it is empty, else cut into pieces of at most 1.5 px whose middles fall on the pattern's
-    "on" parts (its lengths scaled by ``scale``, the line width over 2), measured along the line;
-    ``apart``: each segment a line of its own, its pattern starting at its start."""
+    "on" parts (its lengths scaled by ``scale``, the line width over 2), measured along the line."""
     if not pattern or len(a) == 0:
         return a, b
-    breaks = np.ones(len(a), dtype=bool) if apart else np.arange(len(a)) == 0
-    p0, p1, _ = _dash_lines(a, b, pattern, scale, breaks)
+    p0, p1, _ = _dash_lines(a, b, pattern, scale, np.arange(len(a)) == 0)
     return p0, p1
 
 
@@ -315,31 +313,6 @@ def line_width(style: Style, theme: Theme) -> float:
     return round(max(theme.line_px, style.width * theme.line_scale), 1)
 
 
-def _stroke(x: FloatArray, z: FloatArray, style: Style, f: ChartFrame, theme: Theme, layer: int) -> PageLines | None:
-    """A polyline (px), clipped to the plot first, then dashed: a now-line runs far beyond its plot."""
-    a, b = polyline_segments(x, z)
-    return _stroke_segments(a, b, style, f, theme, layer)
-
-
-def _stroke_segments(
-    a: FloatArray, b: FloatArray, style: Style, f: ChartFrame, theme: Theme, layer: int, apart: bool = False
-) -> PageLines | None:
-    """Segments ``a -> b`` (``(n, 2)`` px, finite) clipped to the plot, then dashed along the line
-    they make, or each from its own start if ``apart`` (:func:`dash_segments`)."""
-    a, b = _clipped_dashed(a, b, style, f, theme, apart)
-    if len(a) == 0:
-        return None
-    return _lines(a, b, color_rgb(style.color, style.opacity), line_width(style, theme), layer)
-
-
-def _clipped_dashed(
-    a: FloatArray, b: FloatArray, style: Style, f: ChartFrame, theme: Theme, apart: bool
-) -> tuple[FloatArray, FloatArray]:
-    """Segments ``a -> b`` clipped to the plot, then dashed in ``style``'s pattern (:func:`dash_segments`)."""
-    a, b = clip_segments(a, b, f.plot)
-    return dash_segments(a, b, DASHES[style.dash], line_width(style, theme) / 2.0, apart)
-
-
 _SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
 
 
@@ -371,7 +344,7 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
     item alone."""
     curves_layer = CURVES if layer is None else layer
     events_layer = EVENTS if layer is None else layer
-    strokes = _Strokes()
+    strokes = _Strokes(f, theme)
     dots: list[PageDots] = []
     texts: list[PageText] = []
     for it in items:
@@ -418,108 +391,89 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
                 # a placed label at its own size: smaller than the theme's in a crowded plot
                 px = min(it.size, theme.text_px) if it.movable else theme.text_px
                 texts.append(PageText(xv + offset, zv, page_text(it.text), px, anchor))
-    return PagePicture(strokes.lines(f, theme), tuple(dots), tuple(texts))
+    return PagePicture(strokes.lines(), tuple(dots), tuple(texts))
 
 
 class _Strokes:
-    """The lines of a chart's items, gathered in order and stroked at the end (:func:`items_picture`):
-    the solid ones all at once, the dashed ones at once per pattern and width."""
+    """The lines of a chart's items on its page (``f``: data -> px), gathered in order and stroked
+    at the end (:func:`items_picture`): the solid ones all at once, the dashed ones at once per
+    pattern and width."""
 
-    def __init__(self) -> None:
-        self._solid_data: list[tuple[FloatArray, FloatArray, int]] = []
-        """Solid polylines in data coordinates, each with its stroke's number."""
-        self._solid_px: list[tuple[FloatArray, FloatArray, int]] = []
-        """Solid polylines already in px (leader lines)."""
-        self._solid_segments: list[tuple[Segments, int]] = []
-        self._dashed: list[tuple[Polyline | Segments | tuple[FloatArray, FloatArray], int]] = []
+    def __init__(self, f: ChartFrame, theme: Theme) -> None:
+        self._f = f
+        self._theme = theme
+        self._solid_curves: list[tuple[FloatArray, FloatArray, int]] = []
+        """Solid polylines in data coordinates (mapped to px together), each with its stroke's number."""
+        self._solid: list[tuple[FloatArray, FloatArray, int]] = []
+        """Solid segments already in px, ``(n, 2)`` starts and ends: separate segments, leader lines."""
+        self._dashed: list[tuple[FloatArray, FloatArray, bool, int]] = []
+        """Dashed segments in px, and whether each is a line of its own (else they make one line)."""
         self._styles: list[tuple[Style, int]] = []
         """Each stroke's style and layer, by number."""
 
-    def _new(self, style: Style, layer: int) -> int:
+    def _add(self, a: FloatArray, b: FloatArray, apart: bool, style: Style, layer: int) -> None:
+        """Segments in px: one line, or (``apart``) each a line of its own."""
         self._styles.append((style, layer))
-        return len(self._styles) - 1
+        k = len(self._styles) - 1
+        if DASHES[style.dash]:
+            self._dashed.append((a, b, apart, k))
+        else:
+            self._solid.append((a, b, k))
 
     def add_polyline(self, x: FloatArray, y: FloatArray, style: Style, layer: int) -> None:
-        k = self._new(style, layer)
         if DASHES[style.dash]:
-            self._dashed.append((Polyline(x, y, style), k))
+            self._add(*polyline_segments(*self._f.px(x, y)), False, style, layer)
         else:
-            self._solid_data.append((np.asarray(x, float), np.asarray(y, float), k))
+            self._styles.append((style, layer))
+            self._solid_curves.append((np.asarray(x, float), np.asarray(y, float), len(self._styles) - 1))
 
     def add_px(self, x: FloatArray, z: FloatArray, style: Style, layer: int) -> None:
-        k = self._new(style, layer)
-        if DASHES[style.dash]:
-            self._dashed.append(((x, z), k))
-        else:
-            self._solid_px.append((x, z, k))
+        """A polyline already in px (a label's leader line)."""
+        self._add(*polyline_segments(x, z), False, style, layer)
 
     def add_segments(self, it: Segments, layer: int) -> None:
-        k = self._new(it.style, layer)
-        if DASHES[it.style.dash]:
-            self._dashed.append((it, k))
-        else:
-            self._solid_segments.append((it, k))
+        self._add(*_segments_px(it, self._f), True, it.style, layer)
 
-    def lines(self, f: ChartFrame, theme: Theme) -> tuple[PageLines, ...]:
-        """Every stroke's segments on the page (``f``: data -> px), in the order the strokes were
-        added, as runs of one width and layer."""
-        parts_a: list[FloatArray] = []
-        parts_b: list[FloatArray] = []
-        parts_k: list[np.ndarray] = []
-        polylines = [(*f.px(x, y), k) for x, y, k in self._solid_data] + self._solid_px
-        if polylines:
-            x, z = _joined([(px, pz) for px, pz, _ in polylines])
+    def lines(self) -> tuple[PageLines, ...]:
+        """Every stroke's segments, clipped to the plot, in the order the strokes were added, as runs
+        of one width and layer."""
+        f, theme = self._f, self._theme
+        parts_a: list[FloatArray] = [a for a, _, _ in self._solid]
+        parts_b: list[FloatArray] = [b for _, b, _ in self._solid]
+        parts_k: list[np.ndarray] = [np.full(len(a), k) for a, _, k in self._solid]
+        if self._solid_curves:
+            curves = [f.px(cx, cy) for cx, cy, _ in self._solid_curves]
+            x, z = _joined(curves)
             # each point's stroke (a gap's too: no segment starts there)
-            owner = np.repeat(np.array([k for _, _, k in polylines]), [px.size + 1 for px, _, _ in polylines])[: x.size]
+            sizes = [cx.size + 1 for cx, _ in curves]
+            owner = np.repeat(np.array([k for _, _, k in self._solid_curves]), sizes)[: x.size]
             a, b, ok = _polyline_segments_kept(x, z)
             parts_a.append(a)
             parts_b.append(b)
             parts_k.append(owner[:-1][ok])
-        for it, k in self._solid_segments:
-            a, b = _segments_px(it, f)
-            parts_a.append(a)
-            parts_b.append(b)
-            parts_k.append(np.full(len(a), k))
         if parts_a:
             a, b, keep = _clip_kept(np.concatenate(parts_a), np.concatenate(parts_b), f.plot)
             parts_a, parts_b, parts_k = [a], [b], [np.concatenate(parts_k)[keep]]
         if self._dashed:
-            a_parts: list[FloatArray] = []
-            b_parts: list[FloatArray] = []
-            firsts: list[np.ndarray] = []
-            owners: list[np.ndarray] = []
-            for item, k in self._dashed:
-                if isinstance(item, Polyline):
-                    (a, b), apart = polyline_segments(*f.px(item.x, item.y)), False
-                elif isinstance(item, Segments):
-                    (a, b), apart = _segments_px(item, f), True
-                else:
-                    (a, b), apart = polyline_segments(*item), False
-                a_parts.append(a)
-                b_parts.append(b)
-                firsts.append(np.ones(len(a), dtype=bool) if apart else np.arange(len(a)) == 0)
-                owners.append(np.full(len(a), k))
-            a, b, keep = _clip_kept(np.concatenate(a_parts), np.concatenate(b_parts), f.plot)
-            owner = np.concatenate(owners)[keep]
-            # a line starts where its first kept segment is (clipping may drop its first ones)
-            first = np.concatenate(firsts)[keep] | np.concatenate([[True], owner[1:] != owner[:-1]])
+            starts = np.concatenate([sa for sa, _, _, _ in self._dashed])
+            ends = np.concatenate([sb for _, sb, _, _ in self._dashed])
+            a, b, keep = _clip_kept(starts, ends, f.plot)
+            owner = np.concatenate([np.full(len(sa), k) for sa, _, _, k in self._dashed])[keep]
+            # a line starts at its first segment kept (clipping may drop its first ones); a separate
+            # segment is a line of its own
+            apart = np.concatenate([np.full(len(sa), own) for sa, _, own, _ in self._dashed])[keep]
+            first = apart | np.concatenate([[True], owner[1:] != owner[:-1]])
             groups: dict[tuple[tuple[float, ...], float], list[int]] = {}
-            for _, k in self._dashed:
+            for _, _, _, k in self._dashed:
                 style = self._styles[k][0]
                 groups.setdefault((DASHES[style.dash], line_width(style, theme)), []).append(k)
             for (pattern, width), ks in groups.items():  # each pattern and width: its lines at once
-                if len(groups) == 1:
-                    da, db, src = _dash_lines(a, b, pattern, width / 2.0, first)
-                    parts_k.append(owner[src])
-                else:
-                    mine = np.isin(owner, ks)
-                    da, db, src = _dash_lines(a[mine], b[mine], pattern, width / 2.0, first[mine])
-                    parts_k.append(owner[mine][src])
+                mine = np.isin(owner, ks) if len(groups) > 1 else slice(None)
+                da, db, src = _dash_lines(a[mine], b[mine], pattern, width / 2.0, first[mine])
                 parts_a.append(da)
                 parts_b.append(db)
-        if not parts_a:
-            return ()
-        k_all = np.concatenate(parts_k)
+                parts_k.append(owner[mine][src])
+        k_all = np.concatenate(parts_k) if parts_k else np.zeros(0, int)
         if k_all.size == 0:
             return ()
         order = np.argsort(k_all, kind="stable")  # the items' order, each item's segments in theirs
