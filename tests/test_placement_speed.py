@@ -432,7 +432,7 @@ def one_pass(chart: Chart, area_px: tuple[float, float], axis_names: bool = Fals
     order = [i for i, item in enumerate(chart.items) if isinstance(item, Label) and item.movable]
     size = max(item.size for item in chart.items if isinstance(item, Label) and item.movable)
     reserved = fast.axis_name_boxes(chart, area, size) if axis_names else []
-    placed, _ = fast._place_in_order(chart, area, fast.obstacles(chart, area), order, reserved)
+    placed, _ = fast._place(fast._prepare(chart, area, fast.obstacles(chart, area), reserved), order)
     return replace(chart, items=tuple(placed.get(i, item) for i, item in enumerate(chart.items)), area_px=area)
 
 

@@ -233,10 +233,16 @@ def obstacles(chart: Chart, area: tuple[float, float]) -> Obstacles:
         ys1.append(py[1:][keep])
     if separate:
         ax, ay = _to_px(
-            chart, area, *(np.concatenate([np.asarray(getattr(i, k), float) for i in separate]) for k in ("x0", "y0"))
+            chart,
+            area,
+            np.concatenate([np.asarray(i.x0, float) for i in separate]),
+            np.concatenate([np.asarray(i.y0, float) for i in separate]),
         )
         bx, by = _to_px(
-            chart, area, *(np.concatenate([np.asarray(getattr(i, k), float) for i in separate]) for k in ("x1", "y1"))
+            chart,
+            area,
+            np.concatenate([np.asarray(i.x1, float) for i in separate]),
+            np.concatenate([np.asarray(i.y1, float) for i in separate]),
         )
         xs0.append(ax)
         ys0.append(ay)
@@ -311,9 +317,9 @@ class _Anchor:
 
 @dataclass(frozen=True)
 class _Table:
-    """The first ``n`` candidate spots of some labels, with what does not depend on the order of
-    placement, as arrays ``(labels, n)``: the boxes and the boxes grown by :data:`MARGIN_PX`
-    (``(labels, n, 4)``: left, top, right, bottom), whether each spot passes the tests that do not
+    """The candidate spots of some labels, with what does not depend on the order of placement, as
+    arrays ``(labels, spots)``: the boxes and the boxes grown by :data:`MARGIN_PX`
+    (``(labels, spots, 4)``: left, top, right, bottom), whether each spot passes the tests that do not
     depend on other movable labels (inside the area, clear of the fixed boxes and the markers, and
     for a spot touching the point, the text naming no other point), and how many curve segments
     enter its grown box (-1 where it fails those tests)."""
@@ -326,12 +332,12 @@ class _Table:
     counts: np.ndarray
 
 
-def _table(anchors: list[_Anchor], n: int, area: tuple[float, float], field: _Field, fixed: list[Box]) -> _Table:
-    """:class:`_Table` of the first ``n`` spots of ``anchors``: what the search (:func:`_walk`) tests
-    of them that no placed label changes, for every label and spot at once (one set of array
-    operations per chart, not one per label), in the same arithmetic."""
-    dx = np.stack([a.spots.dx[:n] for a in anchors])
-    dy = np.stack([a.spots.dy[:n] for a in anchors])
+def _table(anchors: list[_Anchor], area: tuple[float, float], field: _Field, fixed: list[Box]) -> _Table:
+    """:class:`_Table` of the spots of ``anchors`` (labels whose spots come from as many rings):
+    what the search (:func:`_walk`) tests of them that no placed label changes, for every label and
+    spot at once (one set of array operations per chart, not one per label), in the same arithmetic."""
+    dx = np.stack([a.spots.dx for a in anchors])
+    dy = np.stack([a.spots.dy for a in anchors])
     ax = np.array([a.ax for a in anchors])[:, None]
     ay = np.array([a.ay for a in anchors])[:, None]
     hw = np.array([0.5 * a.w for a in anchors])[:, None]
@@ -362,7 +368,7 @@ def _table(anchors: list[_Anchor], n: int, area: tuple[float, float], field: _Fi
         # the text would seem to name another point (spots touching it only): a marker near enough
         # to matter (meeting the label's reach, as the full search takes them), not the label's own
         # (its centre more than 1 px away, taxicab), nearer the box than the label's point
-        bare = ~anchors[0].spots.needs_leader[:n]
+        bare = ~anchors[0].spots.needs_leader
         if bare.any():
             reach = np.array([a.spots.reach + a.w + a.h for a in anchors])[:, None]
             px, py = np.broadcast_to(ax, dx.shape).reshape(-1), np.broadcast_to(ay, dx.shape).reshape(-1)
@@ -487,10 +493,10 @@ def place_labels(chart: Chart, area_px: tuple[float, float], smallest: float | N
     names = axis_name_boxes(chart, area, size)
     best: tuple[dict[int, Item], list[int]] | None = None
     for step in _label_sizes(size, smallest):
-        sized = chart if step == size else _labels_at(chart, movable, step)
+        sized = _prepare(chart if step == size else _labels_at(chart, movable, step), area, obs, names)
         order = movable
-        for _ in range(REORDERINGS + 1):
-            placed, stuck = _place_in_order(sized, area, obs, order, names)
+        for _ in range(REORDERINGS + 1):  # another order changes nothing that _prepare worked out
+            placed, stuck = _place(sized, order)
             if best is None or len(stuck) < len(best[1]):
                 best = (placed, stuck)
             if not stuck:
@@ -546,41 +552,62 @@ def axis_name_boxes(chart: Chart, area: tuple[float, float], size: float) -> lis
     return boxes
 
 
-def _place_in_order(
-    chart: Chart, area: tuple[float, float], obs: Obstacles, order: list[int], reserved: list[Box]
-) -> tuple[dict[int, Item], list[int]]:
-    """The movable labels ``order`` (indices into the chart's items) placed one after the other,
-    clear of the ``reserved`` boxes too: each one's placed item by index, and the indices of those
-    that found no spot clear of labels and markers (kept at their point, with a leader line).
+@dataclass(frozen=True)
+class _Prepared:
+    """What a chart's placement at one label size needs whatever the order of its labels: the
+    obstacles as arrays, the boxes that never move (fixed labels, the axis names), each movable
+    label whose point is in the plot, and their :class:`_Table` of the first :data:`RINGS`."""
 
-    What no placed label changes about the spots of the first :data:`RINGS` is worked out first,
-    for every label at once (:func:`_table`). A label takes the first spot touching its point that
-    meets nothing, not the labels and leader lines placed before it either (the spot :func:`_walk`
-    would choose, without the sort); else :func:`_walk` over the first rings, then over the far
-    ones, and at last over the far ones across leader lines."""
+    chart: Chart
+    area: tuple[float, float]
+    field: _Field
+    fixed: tuple[Box, ...]
+    anchors: dict[int, _Anchor]
+    table: _Table | None
+
+
+def _prepare(chart: Chart, area: tuple[float, float], obs: Obstacles, reserved: list[Box]) -> _Prepared:
+    """:class:`_Prepared` of ``chart`` for a plot ``area``, its obstacles ``obs``, keeping the
+    ``reserved`` boxes clear too."""
     field = _Field(_Curves.of(obs), _Boxes.of(obs.markers))
-    taken: list[Box] = [label_box(chart, area, i) for i in chart.items if isinstance(i, Label) and not i.movable]
-    taken += reserved
+    fixed = [label_box(chart, area, i) for i in chart.items if isinstance(i, Label) and not i.movable] + reserved
+    anchors: dict[int, _Anchor] = {}
+    for index, item in enumerate(chart.items):
+        if isinstance(item, Label) and item.movable:
+            ax, ay = _to_px_one(chart, area, item.x, item.y)
+            if 0.0 <= ax <= area[0] and 0.0 <= ay <= area[1]:
+                w, h = text_box_px(item.text, item.size)
+                anchors[index] = _Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, RINGS))
+    table = _table(list(anchors.values()), area, field, fixed) if anchors else None
+    return _Prepared(chart, area, field, tuple(fixed), anchors, table)
+
+
+def _place(prepared: _Prepared, order: list[int]) -> tuple[dict[int, Item], list[int]]:
+    """The movable labels ``order`` (indices into the chart's items) placed one after the other:
+    each one's placed item by index, and the indices of those that found no spot clear of labels
+    and markers (kept at their point, with a leader line). Labels whose point is outside the plot
+    are left alone.
+
+    What no placed label changes is in ``prepared`` (:func:`_prepare`, once whatever the order). A
+    label takes the first spot touching its point that meets nothing, not the labels and leader
+    lines placed before it either (the spot :func:`_walk` would choose, without the sort); else
+    :func:`_walk` over the first rings, then over the far ones, and at last over the far ones
+    across leader lines."""
+    chart, area, field, table = prepared.chart, prepared.area, prepared.field, prepared.table
+    taken = list(prepared.fixed)
     fixed = len(taken)
-    anchors: list[_Anchor] = []
-    for index in order:
-        item = chart.items[index]
-        assert isinstance(item, Label)
-        ax, ay = _to_px_one(chart, area, item.x, item.y)
-        if 0.0 <= ax <= area[0] and 0.0 <= ay <= area[1]:
-            w, h = text_box_px(item.text, item.size)
-            anchors.append(_Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, RINGS)))
-    # every spot of the first rings of every label, worked out at once
-    table = _table(anchors, len(anchors[0].spots.offsets), area, field, taken) if anchors else None
     leaders: list[tuple[float, float, float, float]] = []
     out: dict[int, Item] = {}
     stuck: list[int] = []
-    for anchor in anchors:
-        index, ax, ay, w, h = anchor.index, anchor.ax, anchor.ay, anchor.w, anchor.h
+    for index in order:
+        anchor = prepared.anchors.get(index)
+        if anchor is None:
+            continue
+        assert table is not None
+        ax, ay, w, h = anchor.ax, anchor.ay, anchor.w, anchor.h
         item = chart.items[index]
         assert isinstance(item, Label)
         best: tuple[int, int, float, float, bool] | None = None
-        assert table is not None
         k = table.row[index]
         free = table.ok[k, : anchor.spots.n_bare] & (table.counts[k, : anchor.spots.n_bare] == 0)
         for spot in np.flatnonzero(free).tolist():
@@ -596,7 +623,7 @@ def _place_in_order(
             best = _walk(anchor, table, taken, fixed, leaders, True)
         if best is None:  # crowded: farther out, and at last across other leader lines
             far = _Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, FAR_RINGS))
-            rings = _table([far], len(far.spots.offsets), area, field, taken[:fixed])
+            rings = _table([far], area, field, list(prepared.fixed))
             best = _walk(far, rings, taken, fixed, leaders, True) or _walk(far, rings, taken, fixed, leaders, False)
         if best is None:  # nowhere free of labels and markers: keep the old spot, with a leader line
             out[index] = replace(item, leader=True)
