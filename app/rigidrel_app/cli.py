@@ -21,7 +21,7 @@ from .export.paths import EXIT_USAGE, fail, out_dir
 from .view.scenario import ride_from_text
 from .view.signals import signals_in, verdict_lines
 from .view.state import Settings, beta_problem, build, format_value, frame_from_text, settings_for
-from .view.vocabulary import Shade
+from .view.vocabulary import SHADES, Shade
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
 
@@ -242,7 +242,7 @@ def build_parser() -> OneLineParser:
         common.add_argument("--port", type=_port, default=port, help="port to try first; the next free one if busy")
         common.add_argument(
             "--theme",
-            choices=("light", "dark"),
+            choices=SHADES,
             default="light" if defaults else argparse.SUPPRESS,
             help="the theme every tab opens in: light, or dark for a projector (key T switches a tab)",
         )
@@ -277,7 +277,7 @@ def build_parser() -> OneLineParser:
     ex_common.add_argument("--fps", type=_positive, default=30.0, help="frames per second of the 3-D HTML and MP4")
     ex_common.add_argument("--gif-fps", type=_positive, default=15.0, help="frames per second of the GIF")
     theme_help = "light, or dark for a projector (light on black, every colour's lightness flipped)"
-    ex_common.add_argument("--theme", choices=("light", "dark"), default=argparse.SUPPRESS, help=theme_help)
+    ex_common.add_argument("--theme", choices=SHADES, default=argparse.SUPPRESS, help=theme_help)
     ex = sub.add_parser(
         "export",
         help="offline HTML (3-D and diagram), PNG, SVG, GIF and MP4 of a scene, or a lesson as a page set",
@@ -285,7 +285,7 @@ def build_parser() -> OneLineParser:
     )
     ex.add_argument("--lesson", help="a lesson file (TOML) or a built-in lesson's name (paper)")
     ex.add_argument("--out", dest="lesson_out", help="with --lesson: folder to write into")
-    ex.add_argument("--theme", choices=("light", "dark"), default="light", help=theme_help)
+    ex.add_argument("--theme", choices=SHADES, default="light", help=theme_help)
     add_scene_subparsers(ex, [ex_common], frame_help + " (default: the scene's default frame)", required=False)
     ex.set_defaults(func=cmd_export)
 

@@ -26,7 +26,7 @@ from ..backends.plotly import TITLE_PX, chart_layout, item_to_traces, label_to_a
 from ..view.entry import NumberEntry, control_value, significant
 from ..view.scene_view import Drawn, build_drawing, nice_step, readout_markdown
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, build, frame_choice, frame_choices, resolve
-from ..view.vocabulary import Chart, Item, Label, Shade
+from ..view.vocabulary import SHADES, Chart, Item, Label, Shade
 
 #: The live figure (CSS pixels): the two Minkowski diagrams side by side, the equal-time lengths
 #: under the lab's, the legends beside it. Fits the output area of JupyterLab or VS Code in a
@@ -119,9 +119,10 @@ def _draw(settings: Settings) -> Drawn | str:
 def checked_theme(theme: object) -> Shade:
     """``theme`` as a :data:`~rigidrel_app.view.vocabulary.Shade`; anything but ``"light"`` or ``"dark"``
     raises :class:`~rigidrel_core.ParameterError` naming ``theme``."""
-    if not isinstance(theme, str) or theme not in ("light", "dark"):
-        raise rr.ParameterError("theme", "'light' or 'dark'", theme)
-    return "dark" if theme == "dark" else "light"
+    for shade in SHADES:
+        if isinstance(theme, str) and theme == shade:
+            return shade
+    raise rr.ParameterError("theme", " or ".join(repr(s) for s in SHADES), theme)
 
 
 def start(

@@ -11,7 +11,7 @@ from __future__ import annotations
 import html
 import re
 from dataclasses import dataclass
-from typing import Literal
+from typing import Literal, get_args
 
 import numpy as np
 import numpy.typing as npt
@@ -21,6 +21,8 @@ Dash = Literal["solid", "dash", "dot", "dashdot"]
 Shade = Literal["light", "dark"]
 """The canvas' ground: light (dark ink on white, for a desk) or dark (light ink on black, the projector
 theme for a hall)."""
+SHADES: tuple[Shade, ...] = get_args(Shade)
+"""Every :data:`Shade`, light first (what a theme option allows)."""
 Anchor = Literal["left", "right", "center"]
 
 # palette (colour-blind safe: blue / orange / purple, Okabe-Ito)
