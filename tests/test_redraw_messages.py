@@ -14,7 +14,7 @@ from rigidrel_app.backends.viser import _Texts  # pyright: ignore[reportPrivateU
 from rigidrel_app.live.keys import Action
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
-from tests.viser_client import ClientLoop, LightClient, decode_frame, wait_until
+from tests.viser_client import LightClient, decode_frame, light_tab, wait_until
 
 
 class Recorder(LightClient):
@@ -31,19 +31,11 @@ class Recorder(LightClient):
 
 @pytest.fixture
 def tab() -> Iterator[tuple[Session, Recorder]]:
-    loop = ClientLoop()
-    try:
-        with App(port=0) as app:
-            client = Recorder(app.url)
-            loop.run(client.connect())
-            loop.start(client.run(120))
-            session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
-            wait_until(lambda: session.drawn is not None and "V" in client.gui_uuid, timeout=60)
-            yield session, client
-            client.stop()
-            loop.run(client.close())
-    finally:
-        loop.close()
+    with App(port=0) as app, light_tab(app, Recorder) as t:
+        client = t.client
+        assert isinstance(client, Recorder)
+        wait_until(lambda: "V" in client.gui_uuid, timeout=60)
+        yield t.session, client
 
 
 def labels_as_sent(messages: list[dict[str, Any]], prefix: str) -> dict[str, dict[str, Any]]:

@@ -160,26 +160,16 @@ def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
     """``rigidrel serve rod-collision --m2 3 --frame 0.4``: a new tab shows that scene in that frame."""
     from rigidrel_app.cli import build_parser, start_settings
     from rigidrel_app.live.server import App
-    from tests.viser_client import ClientLoop, LightClient, wait_until
+    from tests.viser_client import light_tab
 
     args = build_parser().parse_args(["serve", "rod-collision", "--m2", "3", "--frame", "0.4", "--port", "0"])
     start = start_settings("rigidrel serve", args)
     assert start is not None and args.port == 0
-    loop = ClientLoop()
-    try:
-        with App(port=0, start=start) as app:
-            client = LightClient(app.url)
-            loop.run(client.connect())
-            loop.start(client.run(30))
-            wait_until(lambda: app.sessions)
-            session = next(iter(app.sessions.values()))
-            wait_until(lambda: session.drawn is not None)
-            assert session.settings == start
-            assert session.drawn.resolved.scene.parameters["m2"] == 3.0  # type: ignore[union-attr]
-            assert session.drawn.resolved.frame.beta == 0.4  # type: ignore[union-attr]
-            client.stop()
-    finally:
-        loop.close()
+    with App(port=0, start=start) as app, light_tab(app) as tab:
+        session, drawn = tab.session, tab.session.drawn
+        assert session.settings == start and drawn is not None
+        assert drawn.resolved.scene.parameters["m2"] == 3.0
+        assert drawn.resolved.frame.beta == 0.4
 
 
 def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -191,29 +181,19 @@ def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) 
     from rigidrel_app.view import canvas
     from rigidrel_app.view.layout import LEGEND_ROWS, CanvasSize
     from rigidrel_app.view.state import Settings
-    from tests.viser_client import ClientLoop, LightClient, wait_until
+    from tests.viser_client import light_tab
 
-    loop = ClientLoop()
-    try:
-        with App(port=0) as app:
-            client = LightClient(app.url)
-            loop.run(client.connect())
-            loop.start(client.run(60))
-            wait_until(lambda: app.sessions)
-            session = next(iter(app.sessions.values()))
-            wait_until(lambda: session.drawn is not None)
-            session.set_presenter(True)
-            with session.lock:
-                session._resize(CanvasSize.measured_by_page(1240, 560, 1.0))  # pyright: ignore[reportPrivateUsage]
-            session.change(Settings("pole-barn"))
-            layout = session.layout
-            assert layout is not None and layout.lanes[0].title_lines == 2 and session.legend_rows != LEGEND_ROWS
-            builds, placements = [], []
-            build, place = session_module.build_drawing, canvas.place_labels
-            monkeypatch.setattr(session_module, "build_drawing", lambda *a, **k: builds.append(1) or build(*a, **k))
-            monkeypatch.setattr(canvas, "place_labels", lambda *a, **k: placements.append(1) or place(*a, **k))
-            session.change(session.settings.with_value("v", 0.7))
-            assert (len(builds), len(placements)) == (1, 0)
-            client.stop()
-    finally:
-        loop.close()
+    with App(port=0) as app, light_tab(app) as tab:
+        session = tab.session
+        session.set_presenter(True)
+        with session.lock:
+            session._resize(CanvasSize.measured_by_page(1240, 560, 1.0))  # pyright: ignore[reportPrivateUsage]
+        session.change(Settings("pole-barn"))
+        layout = session.layout
+        assert layout is not None and layout.lanes[0].title_lines == 2 and session.legend_rows != LEGEND_ROWS
+        builds, placements = [], []
+        build, place = session_module.build_drawing, canvas.place_labels
+        monkeypatch.setattr(session_module, "build_drawing", lambda *a, **k: builds.append(1) or build(*a, **k))
+        monkeypatch.setattr(canvas, "place_labels", lambda *a, **k: placements.append(1) or place(*a, **k))
+        session.change(session.settings.with_value("v", 0.7))
+        assert (len(builds), len(placements)) == (1, 0)

@@ -20,12 +20,16 @@ import time
 from collections.abc import Callable, Coroutine, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import msgspec
 import viser
 import websockets
 import zstandard
+
+if TYPE_CHECKING:
+    from rigidrel_app.live.server import App
+    from rigidrel_app.live.session import Session
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -215,6 +219,35 @@ class LightClient:
 
 #: Seconds every client of a swarm reads before its measured window (playback starts meanwhile).
 SWARM_WARMUP = 3.0
+
+
+@dataclass(frozen=True)
+class Tab:
+    """One lightweight client of an app running in this process: the tab's session, the client, and
+    the loop it reads on."""
+
+    session: Session
+    client: LightClient
+    loop: ClientLoop
+
+
+@contextlib.contextmanager
+def light_tab(app: App, make_client: Callable[[str], LightClient] = LightClient) -> Iterator[Tab]:
+    """Connect one client (``make_client(app.url)``) to ``app`` (running), read its frames in the
+    background, and yield its :class:`Tab` once its session has drawn; the client is stopped and
+    closed and the loop closed after, whatever happened."""
+    loop = ClientLoop()
+    try:
+        client = make_client(app.url)
+        loop.run(client.connect())
+        loop.start(client.run(3600))
+        session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
+        wait_until(lambda: session.drawn is not None, timeout=60)
+        yield Tab(session, client, loop)
+        client.stop()
+        loop.run(client.close())
+    finally:
+        loop.close()
 
 
 def swarm_main(url: str, n: int, seconds: float) -> None:

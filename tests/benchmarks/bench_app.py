@@ -17,13 +17,11 @@
 from __future__ import annotations
 
 import argparse
-import contextlib
 import io
 import json
 import math
 import statistics
 import time
-from collections.abc import Iterator
 from dataclasses import replace
 from typing import Any
 
@@ -31,10 +29,9 @@ import numpy as np
 
 import rigidrel_core as rr
 from rigidrel_app.live.server import ANIMATION_HZ, App
-from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings, resolve
 from tests import load
-from tests.viser_client import ClientLoop, LightClient, wait_until
+from tests.viser_client import light_tab, wait_until
 
 
 def slider_sweep(kind: str) -> list[tuple[str, float]]:
@@ -62,26 +59,10 @@ def sweep_settings(start: Settings) -> list[Settings]:
     return out
 
 
-@contextlib.contextmanager
-def one_tab() -> Iterator[Session]:
-    """A server with one lightweight client (in this process), its tab's session; both closed after."""
-    loop = ClientLoop()
-    try:
-        with App(port=0) as app:
-            client = LightClient(app.url)
-            loop.run(client.connect())
-            loop.start(client.run(3600))
-            wait_until(lambda: app.sessions, timeout=60)
-            yield next(iter(app.sessions.values()))
-            client.stop()
-            loop.run(client.close())
-    finally:
-        loop.close()
-
-
 def bench_rebuild() -> dict[str, float]:
     out: dict[str, float] = {}
-    with one_tab() as session:
+    with App(port=0) as app, light_tab(app) as tab:
+        session = tab.session
         for kind in rr.scene_descriptions():
             session.change(Settings(kind))
             times = []
@@ -137,7 +118,8 @@ def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
         setattr(owner, name, timed(label, getattr(owner, name)))
     out: dict[str, float] = {}
     try:
-        with one_tab() as session:
+        with App(port=0) as app, light_tab(app) as tab:
+            session = tab.session
             for kind in kinds or tuple(rr.scene_descriptions()):
                 session.change(Settings(kind))
                 sweep = sweep_settings(session.settings)
@@ -185,16 +167,11 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
     server's socket. Flushed (what the session does) and not flushed (viser's send window) alternate,
     value by value, over ``per_scene`` values of each linear slider of every scene. Also split: the
     callback's redraw (``Session.change``), and from its end to the last frame out."""
-    loop = ClientLoop()
     times: dict[str, list[float]] = {"flushed": [], "window": []}
     after_redraw: dict[str, list[float]] = {"flushed": [], "window": []}
     redraws: list[float] = []
-    with App(port=0) as app:
-        client = LightClient(app.url)
-        loop.run(client.connect())
-        loop.start(client.run(3600))
-        wait_until(lambda: app.sessions, timeout=60)
-        session = next(iter(app.sessions.values()))
+    with App(port=0) as app, light_tab(app) as tab:
+        session, client, loop = tab.session, tab.client, tab.loop
         wait_until(lambda: "V" in client.gui_uuid, timeout=60)
         connection = app.server._websock_server._live_connections[session.client.client_id]
         clock = SocketClock(connection)
@@ -247,9 +224,6 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
                     redraws.append(redraw_end - redraw_start)
                     after_redraw[variant].append(clock.sent[-1] - redraw_end)
         session.client.flush = flush  # type: ignore[method-assign]
-        client.stop()
-        loop.run(client.close())
-    loop.close()
     out: dict[str, float] = {}
     for variant, ts in times.items():
         out[f"answer_ms_median[{variant}]"] = 1e3 * statistics.median(ts)
