@@ -36,7 +36,8 @@ PIXEL_TOLERANCE = 3.0
 class AppPage:
     """One browser tab on the app, with the server-side session behind it."""
 
-    def __init__(self, browser: Any, app: App, device_scale_factor: float = 1.0) -> None:
+    def __init__(self, browser: Any, app: App, device_scale_factor: float = 1.0, query: str = "") -> None:
+        """``query``: added to the app's address (``"?fixedDpr=1"`` holds viser's resolution)."""
         self.app = app
         self.errors: list[str] = []
         before = set(app.sessions)
@@ -68,7 +69,7 @@ class AppPage:
 
         self.page.on("websocket", on_socket)
         self.opened = time.monotonic()
-        self.page.goto(app.url)
+        self.page.goto(app.url + query)
         self.page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
         new = wait_until(lambda: set(app.sessions) - before)
         self.session: Session = app.sessions[min(new)]
@@ -97,7 +98,7 @@ class AppPage:
     def texts(self) -> list[str]:
         """Every text the canvas shows (the diagrams' titles, numbers, event names, legend)."""
         r = self.session.renderer
-        return [t[0] for t in r.static_texts.shown] + [t[0] for t in r.titles.shown]
+        return [t[0] for t in (*r.static_texts.shown, *r.axis_names.shown, *r.titles.shown)]
 
     def page_to_pixel(self, x: float, z: float) -> tuple[float, float]:
         """A page point (px, z up) as a canvas pixel (column, row): the camera makes one page px one CSS px."""
@@ -376,7 +377,7 @@ def test_every_text_is_at_least_14_px(tab: AppPage, shots: Path) -> None:
     tab.page.set_viewport_size({"width": 1280, "height": 720})
     wait_until(lambda: tab.session.layout is not None and tab.session.layout.height == 720)
     r = tab.session.renderer
-    sizes = [t[2] * LABEL_EM_PX for t in (*r.static_texts.shown, *r.titles.shown)]
+    sizes = [t[2] * LABEL_EM_PX for t in (*r.static_texts.shown, *r.axis_names.shown, *r.titles.shown)]
     assert min(sizes) >= 14.0, min(sizes)
     show(tab, Settings(), 0.3)
     img = tab.canvas_after(np.zeros_like(tab.canvas()))

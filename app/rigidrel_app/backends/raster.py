@@ -1,7 +1,10 @@
-"""The lanes as raster frames (Pillow), for animated GIF and, where ffmpeg is available, MP4.
+"""Raster pictures (Pillow): the lanes as frames for animated GIF and, where ffmpeg is available,
+MP4; and a canvas page's still picture as one image, which the live app shows in place of its
+diagrams' lines, dots and labels while it plays (:func:`page_image`).
 
-A third backend of the drawing vocabulary: the same :class:`LaneState` s the app sends to
-viser, drawn flat, as the app's camera sees them head-on.
+A third backend of the drawing vocabulary: the same :class:`LaneState` s and
+:class:`~rigidrel_app.view.canvas.PagePicture` s the app sends to viser, drawn flat, as the app's
+camera sees them head-on.
 """
 
 from __future__ import annotations
@@ -13,6 +16,7 @@ from pathlib import Path
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
+from ..view.canvas import PagePicture, PageText
 from ..view.lanes import LaneState
 from ..view.scene_view import FRAME_Z, LAB_Z, LANE_Z, Drawn, lane_states
 from ..view.vocabulary import (
@@ -28,6 +32,12 @@ from ..view.vocabulary import (
     rgb,
 )
 
+#: The page's text as the browser draws viser's labels (Arial, which Debian's fontconfig gives
+#: as Liberation Sans), then DejaVu Sans for what Liberation Sans lacks (sub- and superscripts).
+_PAGE_FONTS = (
+    "/usr/share/fonts/truetype/liberation/LiberationSans-Regular.ttf",
+    "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+)
 _FONTS = (
     "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
     "/usr/share/fonts/truetype/liberation/LiberationSans-Regular.ttf",
@@ -188,3 +198,130 @@ def write_mp4(
         writer.send(shaded_frame(raster.frame(lane_states(drawn, float(now))), shade).tobytes())
     writer.close()
     return path
+
+
+# ---------------------------------------------------------------------------------------------
+# A page's still picture
+
+
+#: Samples per image px along each axis for the lines and dots (anti-aliasing by supersampling).
+PAGE_SUPERSAMPLE = 3
+#: viser's label: black text on a box of white at this opacity, padded by this many em.
+LABEL_BOX_ALPHA = 0.85
+LABEL_BOX_PAD_EM = 0.15
+#: Line spacing of a label of several lines, in em (viser's label layout).
+LABEL_LINE_EM = 1.2
+#: Coverage -> opacity of a label's glyph edges: viser's labels (distance fields re-thresholded
+#: over one pixel) ink a glyph's edge pixels more than FreeType's coverage does.
+LABEL_INK_GAMMA = 0.6
+_INK_WEIGHT = [round(255.0 * (v / 255.0) ** LABEL_INK_GAMMA) for v in range(256)]
+_ANCHORS = {
+    "top-left": "la", "top-center": "ma", "top-right": "ra",
+    "center-left": "lm", "center-center": "mm", "center-right": "rm",
+    "bottom-left": "ld", "bottom-center": "md", "bottom-right": "rd",
+}  # fmt: skip
+
+
+@lru_cache(maxsize=64)
+def _page_font(size: int, fallback: bool) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
+    for path in _PAGE_FONTS[1:] if fallback else _PAGE_FONTS:
+        if Path(path).exists():
+            return ImageFont.truetype(path, size)
+    return ImageFont.load_default(size=size)
+
+
+def _needs_fallback(ch: str) -> bool:
+    """Characters the first page font lacks: super- and subscripts (U+2070 to U+209F)."""
+    return "\u2070" <= ch <= "\u209f"
+
+
+def page_image(picture: PagePicture, width: float, height: float, scale: float = 1.0) -> np.ndarray:
+    """The still ``picture`` of a ``width`` x ``height`` page (page px: x right, z up from the
+    bottom) as an sRGB image ``(round(height scale), round(width scale), 3)`` on white, ``scale``
+    image px per page px (the canvas' rendered pixels per CSS px: its texels then fall on the
+    rendered pixels, unblurred), as viser draws it: each layer's lines (round ends) and then its dots, the
+    lower layers first, all anti-aliased (drawn at :data:`PAGE_SUPERSAMPLE` times the size and
+    averaged down); then the labels, black on a :data:`LABEL_BOX_ALPHA` white box."""
+    s = scale * PAGE_SUPERSAMPLE
+    w, h = round(width * scale), round(height * scale)
+    big = Image.new("RGB", (w * PAGE_SUPERSAMPLE, h * PAGE_SUPERSAMPLE), (255, 255, 255))
+    d = ImageDraw.Draw(big)
+    layers = sorted({ln.layer for ln in picture.lines} | {dt.layer for dt in picture.dots})
+    for layer in layers:
+        for ln in picture.lines:
+            if ln.layer != layer or not len(ln.points):
+                continue
+            u = ln.points[:, :, 0] * scale
+            v = (height - ln.points[:, :, 1]) * scale
+            # a level or upright line's edges on pixel edges, as a GPU fills it (not two grey pixels)
+            half = 0.5 * ln.width * scale
+            level, upright = v[:, 0] == v[:, 1], u[:, 0] == u[:, 1]
+            v[level] = np.round(v[level] - half) + half
+            u[upright] = np.round(u[upright] - half) + half
+            u, v = u * PAGE_SUPERSAMPLE - 0.5, v * PAGE_SUPERSAMPLE - 0.5  # Pillow: integers are pixel centres
+            lw = max(1, round(ln.width * s))
+            r = 0.5 * ln.width * s
+            for (a, b), (e, f), color in zip(u.tolist(), v.tolist(), ln.colors.tolist(), strict=True):
+                fill = (color[0], color[1], color[2])
+                d.line([(a, e), (b, f)], fill=fill, width=lw)
+                if lw > 2:  # round ends, as viser's lines have (the joints of a curve too)
+                    d.ellipse([a - r, e - r, a + r, e + r], fill=fill)
+                    d.ellipse([b - r, f - r, b + r, f + r], fill=fill)
+        for dt in picture.dots:
+            if dt.layer != layer or not len(dt.xy):
+                continue
+            r = 0.5 * dt.size * s
+            u = dt.xy[:, 0] * s - 0.5
+            v = (height - dt.xy[:, 1]) * s - 0.5
+            for x, z, color in zip(u.tolist(), v.tolist(), dt.colors.tolist(), strict=True):
+                fill = (color[0], color[1], color[2])
+                if dt.shape == "square":
+                    d.rectangle([x - r, z - r, x + r, z + r], fill=fill)
+                elif dt.shape == "diamond":
+                    d.polygon([(x, z - r), (x + r, z), (x, z + r), (x - r, z)], fill=fill)
+                else:
+                    d.ellipse([x - r, z - r, x + r, z + r], fill=fill)
+    img = big.reduce(PAGE_SUPERSAMPLE)
+    for t in picture.texts:
+        if t.text.strip():
+            _page_label(img, t, height, scale)
+    return np.asarray(img)
+
+
+def _runs(text: str) -> list[tuple[str, bool]]:
+    """``text`` cut into runs of one font: (characters, whether the fallback font draws them)."""
+    runs: list[tuple[str, bool]] = []
+    for ch in text:
+        fb = _needs_fallback(ch)
+        if runs and runs[-1][1] == fb:
+            runs[-1] = (runs[-1][0] + ch, fb)
+        else:
+            runs.append((ch, fb))
+    return runs
+
+
+def _page_label(img: Image.Image, t: PageText, height: float, scale: float) -> None:
+    """One label onto ``img``: its lines' runs measured, the box laid at the anchor, then drawn."""
+    size = max(1, round(t.px * scale))
+    lines = t.text.split("\n")
+    fonts = (_page_font(size, False), _page_font(size, True))
+    ascent, descent = fonts[0].getmetrics() if isinstance(fonts[0], ImageFont.FreeTypeFont) else (size, 0)
+    step = LABEL_LINE_EM * size
+    widths = [sum(fonts[fb].getlength(run) for run, fb in _runs(line)) for line in lines]
+    box_w, box_h = max(widths), step * (len(lines) - 1) + ascent + descent
+    x, y = t.x * scale, (height - t.z) * scale
+    horizontal, vertical = _ANCHORS[t.anchor]
+    left = x - {"l": 0.0, "m": 0.5, "r": 1.0}[horizontal] * box_w
+    top = y - {"a": 0.0, "m": 0.5, "d": 1.0}[vertical] * box_h
+    pad = LABEL_BOX_PAD_EM * size
+    box = (round(left - pad), round(top - pad), round(left + box_w + pad), round(top + box_h + pad))
+    region = img.crop(box)
+    img.paste(Image.blend(region, Image.new("RGB", region.size, (255, 255, 255)), LABEL_BOX_ALPHA), box[:2])
+    ink = Image.new("L", region.size, 0)
+    d = ImageDraw.Draw(ink)
+    for k, (line, lw) in enumerate(zip(lines, widths, strict=True)):
+        u = left - box[0] + {"l": 0.0, "m": 0.5, "r": 1.0}[horizontal] * (box_w - lw)
+        for run, fb in _runs(line):
+            d.text((u, top - box[1] + k * step + ascent), run, fill=255, font=fonts[fb], anchor="ls")
+            u += fonts[fb].getlength(run)
+    img.paste((0, 0, 0), box[:2], ink.point(_INK_WEIGHT))

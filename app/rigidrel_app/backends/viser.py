@@ -8,6 +8,11 @@ positions, segment points, dot positions), the lane titles and one translation p
 so the lanes and the diagrams' now-lines always show one instant in one message batch.
 :class:`LaneRenderer` draws the 3-D lanes of the recordings.
 
+The still picture also has a flat form: one image of it (drawn by the raster backend), which
+the live app sends while it plays and then shows alone (:meth:`PageRenderer.show_flat`,
+:meth:`PageRenderer.show_vectors`). A software renderer draws one textured rectangle far
+faster than hundreds of segments, thousands of fill dots and fifty labels.
+
 The dark (projector) theme: viser draws every label as black glyphs on a white box, which no
 message can change. So the page stays a light page and the browser inverts the canvas exactly
 (``filter: invert(1)``, :data:`DARK_CANVAS_CSS`, put on the tab by the live app): the labels come
@@ -20,11 +25,13 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 import viser
 from viser import _messages  # pyright: ignore[reportPrivateUsage]
+from viser._image_encoding import cv2_imencode_with_fallback  # pyright: ignore[reportPrivateUsage]
 
 from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
@@ -537,6 +544,42 @@ class _Ruler:
             self._texts.set(slot, (text, (n * step * scale, _TEXT_Y, z), label_scale(px), "top-center"))
 
 
+#: Depth of the flat still picture: behind everything else on the page (the rods' boxes reach
+#: to ``y = _PAGE_ROD_DEPTH / 2``).
+_FLAT_Y = 0.5 * _PAGE_ROD_DEPTH + 0.5
+#: The nodes that hold the still picture's lines, dots and labels (shown or hidden together).
+_VECTOR_ROOTS = ("/page/static", "/page/static_dots", "/page/text")
+
+
+@dataclass(frozen=True)
+class FlatStill:
+    """A still picture as an image to send: ``png`` bytes, covering the page px rectangle
+    ``box`` = (left, bottom, right, top), for page version ``version``, at ``scale``."""
+
+    png: bytes
+    box: tuple[float, float, float, float]
+    version: int
+    scale: float
+    """Image px per page px."""
+
+
+def flat_still(image: np.ndarray, scale: float, shade: Shade, version: int) -> FlatStill | None:
+    """The image ``(h, w, 3)`` of a whole page (``scale`` image px per page px, sRGB, light
+    ground, :func:`rigidrel_app.backends.raster.page_image`) cut to what is not white, in the
+    colours to send for a ``shade`` page (:func:`sent_for_shade`; three.js shows an image's bytes
+    as they are), as PNG. ``None`` for a blank page."""
+    ink = np.any(image != 255, axis=-1)
+    rows, cols = np.flatnonzero(ink.any(axis=1)), np.flatnonzero(ink.any(axis=0))
+    if not len(rows):
+        return None
+    r0, r1, c0, c1 = int(rows[0]), int(rows[-1]) + 1, int(cols[0]), int(cols[-1]) + 1
+    cut = sent_for_shade(image[r0:r1, c0:c1], shade)
+    png = cv2_imencode_with_fallback("png", np.ascontiguousarray(cut), None, "rgb")
+    rows_all = image.shape[0]
+    box = (c0 / scale, (rows_all - r1) / scale, c1 / scale, (rows_all - r0) / scale)
+    return FlatStill(png, box, version, scale)
+
+
 class PageRenderer:
     """Draws a :class:`~rigidrel_app.view.layout.CanvasLayout` page into one client's scene: the
     diagrams' static pictures once per scene, the lanes and the moving parts every frame."""
@@ -547,9 +590,24 @@ class PageRenderer:
         scene.configure_default_lights(enabled=False)
         scene.add_light_ambient("/page/ambient", intensity=AMBIENT)
         scene.add_light_directional("/page/front_light", intensity=FRONT, position=(0.0, -10.0, 4.0))
+        # the still picture's nodes hang under these (before any of them exists), so that one
+        # message each shows or hides them all
+        self._vector_roots = tuple(scene.add_frame(name, show_axes=False) for name in _VECTOR_ROOTS)
+        self.vectors_shown = True
+        """Whether the still picture shows as lines, dots and labels (else only as its image)."""
+        self._flat: viser.ImageHandle | None = None
+        self.flat_version: int | None = None
+        """The page version whose image is shown (``None``: no image shown)."""
+        self.flat_scale = 0.0
+        """The image px per page px of the image shown."""
+        self.version = 0
+        """Counts :meth:`set_static` calls: an image made for an older version is not shown."""
+        self.still = PagePicture()
+        """The still picture as last sent: the diagrams and the legend (the rulers' names apart)."""
         self._static_lines = _LineNodes(scene, "/page/static")
         self._static_dots = _DotNodes(scene, "/page/static_dots")
         self.static_texts = _Texts(scene, "/page/text")
+        self.axis_names = _Texts(scene, "/page/axis_name")
         self._moving_lines = _LineNodes(scene, "/page/moving")
         self._moving_dots = _DotNodes(scene, "/page/moving_dots")
         # in front of the rods' boxes (which reach to y = -_PAGE_ROD_DEPTH / 2): the ticks, clock
@@ -583,7 +641,65 @@ class PageRenderer:
             PageText(lane.band.x0, lane.ruler_z, name, layout.theme.title_px, "center-left")
             for lane, name in zip(layout.lanes, axis_names, strict=True)
         ]
-        self.static_texts.show([*picture.texts, *names])
+        self.static_texts.show(picture.texts)
+        self.axis_names.show(names)
+        self.still = picture
+        self.version += 1
+        self.show_vectors()
+
+    def show_vectors(self) -> None:
+        """The still picture as lines, dots and labels; its image, if any, taken away."""
+        if not self.vectors_shown:
+            for root in self._vector_roots:
+                root.visible = True
+            self.vectors_shown = True
+        if self._flat is not None and self.flat_version is not None:
+            self._flat.visible = False
+            self.flat_version = None
+
+    def show_flat(self, flat: FlatStill) -> bool:
+        """Put ``flat`` (an image of the still picture) behind the picture's lines, dots and labels;
+        ``False`` (nothing sent) if it was made for an older picture. :meth:`hide_vectors` then
+        leaves it alone, once the browser has had time to decode it."""
+        if flat.version != self.version:
+            return False
+        layout = self.layout
+        assert layout is not None, "set_static first"
+        # behind the page, scaled about the camera's axis so that it looks the page's size: each
+        # image px on one canvas px (a texture drawn even slightly smaller blurs)
+        pose = self.pose(layout)
+        grow = (abs(pose.position[1]) + _FLAT_Y) / abs(pose.position[1])
+        xc, zc = pose.look_at[0], pose.look_at[2]
+        left, bottom, right, top = flat.box
+        w, h = grow * (right - left), grow * (top - bottom)
+        position = (xc + grow * (0.5 * (left + right) - xc), _FLAT_Y, zc + grow * (0.5 * (bottom + top) - zc))
+        # the image's plane faces the camera (on -y), its first row at the top (+z)
+        wxyz = (np.sqrt(0.5), -np.sqrt(0.5), 0.0, 0.0)
+        if self._flat is None:
+            message = _messages.ImageMessage(
+                name="/page/flat",
+                props=_messages.ImageProps(
+                    _format="png", _data=flat.png, render_width=w, render_height=h,
+                    cast_shadow=False, receive_shadow=False, scale=1.0,
+                ),
+            )  # fmt: skip
+            self._flat = viser.ImageHandle._make(self._scene, message, "/page/flat", wxyz, position, True)  # pyright: ignore[reportPrivateUsage]
+        else:
+            self._flat._data = flat.png  # pyright: ignore[reportPrivateUsage]
+            if (self._flat.render_width, self._flat.render_height) != (w, h):
+                self._flat.render_width, self._flat.render_height = w, h
+            if tuple(self._flat.position) != position:
+                self._flat.position = position
+            self._flat.visible = True
+        self.flat_version, self.flat_scale = flat.version, flat.scale
+        return True
+
+    def hide_vectors(self) -> None:
+        """Leave the still picture to its image (:meth:`show_flat`): its lines, dots and labels hidden."""
+        if self.vectors_shown and self.flat_version == self.version:
+            for root in self._vector_roots:
+                root.visible = False
+            self.vectors_shown = False
 
     def update(self, lanes: Sequence[LanePicture], moving: PagePicture) -> None:
         """One instant: both lanes and the diagrams' moving parts (call inside ``atomic()``)."""

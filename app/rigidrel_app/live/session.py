@@ -19,7 +19,8 @@ import viser
 
 import rigidrel_core as rr
 
-from ..backends.viser import PageRenderer
+from ..backends.raster import page_image
+from ..backends.viser import FlatStill, PageRenderer, flat_still
 from ..lessons import Lesson
 from ..lessons.tour import arrival, caption_html, clamp_step, lock_notice, lock_reason, locked_changes
 from ..view import camera as cam
@@ -89,6 +90,14 @@ def scenario_problem(exc: ScenarioError) -> str:
     return text if exc.parameter == "scene" or text.startswith(flag) else f"{flag}: {text}"
 
 
+#: While it plays, a tab sends its still picture (the diagrams, the legend) as one image once the
+#: picture has not changed for this long (s): a software renderer then draws one textured
+#: rectangle instead of its hundreds of lines, thousands of fill dots and fifty labels.
+FLAT_AFTER_S = 0.3
+#: ... and leaves the picture to the image this long (s) after sending it (the browser decodes it).
+FLAT_SWAP_S = 0.5
+
+
 class Session:
     """State and controls of one client; :meth:`tick` is called by the server's animation loop."""
 
@@ -153,6 +162,16 @@ class Session:
         self.renderer_lanes: list[LanePicture] = []
         """The lanes as last drawn."""
         self._last_plot = 0.0
+        self._still_seen = (-1, 0.0)
+        """The renderer's still-picture version last seen by :meth:`_flatten`, and when."""
+        self._flat_asked = (-1, 0.0)
+        """The still-picture version and scale whose image was last asked for."""
+        self._flat_sent_at = 0.0
+        self.slow_canvas = False
+        """The browser has lowered its canvas' resolution (viser does while frames come slower
+        than 38 a second, as in a software renderer): from then on, while it plays, the still
+        picture goes as one image (:meth:`_flatten`). A canvas that keeps up never gets one."""
+        self._top_resolution = 0.0
         resolved = resolve_settings(self.settings)
         if isinstance(resolved, str):  # a start state given from outside that makes no scene
             self.notice, self.settings = resolved, Settings()
@@ -603,3 +622,49 @@ class Session:
                 return
             self.set_playback(self.playback.advance(dt))
             self.draw_now(force_plots=not self.playback.playing)  # stopped at the end: the box shows the end
+            self._flatten()
+
+    def _flatten(self) -> None:
+        """While playing on a slow canvas (:attr:`slow_canvas`): once the still picture has stood
+        for :data:`FLAT_AFTER_S`, have its image
+        made (in a thread of its own; :meth:`_show_flat` sends it), and :data:`FLAT_SWAP_S` after
+        the image went out, hide the picture's lines, dots and labels. Any redraw of the picture
+        shows them again at once (:meth:`PageRenderer.set_static`), so a control's answer is
+        never held up by the image; the image follows when the picture stands still again."""
+        r, layout, wall = self.renderer, self.layout, time.monotonic()
+        # the image's px on the canvas' rendered pixels (CSS px times the screen's pixel ratio
+        # times the client's adaptive resolution): a texture drawn at another scale blurs
+        scale = self.canvas_size.resolution
+        self._top_resolution = max(self._top_resolution, scale)
+        if scale < self._top_resolution - 1e-3:
+            self.slow_canvas = True
+        if layout is None or not self.slow_canvas:
+            return
+        if r.flat_version == r.version:
+            if r.vectors_shown and wall - self._flat_sent_at >= FLAT_SWAP_S:
+                r.hide_vectors()
+            if abs(r.flat_scale - scale) < 1e-3:
+                return
+        if self._still_seen[0] != r.version:
+            self._still_seen = (r.version, wall)
+        if self._flat_asked == (r.version, scale) or wall - self._still_seen[1] < FLAT_AFTER_S:
+            return
+        self._flat_asked = (r.version, scale)
+        picture, version, shade = r.still, r.version, layout.theme.shade
+        page_w, page_h = layout.width, layout.height
+
+        def make() -> None:
+            flat = flat_still(page_image(picture, page_w, page_h, scale), scale, shade, version)
+            if flat is not None:
+                self._show_flat(flat)
+
+        threading.Thread(target=make, name="flat-still", daemon=True).start()
+
+    def _show_flat(self, flat: FlatStill) -> None:
+        with self.lock:
+            if self.closed:
+                return
+            with self.client.atomic():
+                if self.renderer.show_flat(flat):
+                    self._flat_sent_at = time.monotonic()
+        self.client.flush()
