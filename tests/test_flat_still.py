@@ -18,11 +18,10 @@ from PIL import Image
 
 from rigidrel_app.backends.raster import page_image
 from rigidrel_app.backends.viser import FlatStill, flat_still, sent_for_shade
-from rigidrel_app.live.server import App
 from rigidrel_app.live.session import FLAT_AFTER_S, FLAT_SWAP_S, Session
 from rigidrel_app.view.canvas import PageDots, PageLines, PagePicture, PageText
 from rigidrel_app.view.state import presets
-from tests.viser_client import LightClient, decode_frame, light_tab, wait_until
+from tests.viser_client import Recorder, recorded_tab, wait_until
 
 BLUE = np.array([0, 114, 178], dtype=np.uint8)
 ORANGE = np.array([230, 159, 0], dtype=np.uint8)
@@ -95,23 +94,10 @@ def test_the_flat_image_is_cut_to_its_ink_and_coloured_for_the_page() -> None:
 # --------------------------------------------------------------------------- a tab
 
 
-class Recorder(LightClient):
-    def __init__(self, url: str) -> None:
-        super().__init__(url)
-        self.messages: list[dict[str, Any]] = []
-
-    def _consume(self, data: bytes) -> None:
-        self.messages += decode_frame(data)
-        super()._consume(data)
-
-
 @pytest.fixture
 def tab() -> Iterator[tuple[Session, Recorder]]:
-    with App(port=0) as app, light_tab(app, Recorder) as t:
-        client = t.client
-        assert isinstance(client, Recorder)
-        wait_until(lambda: "V" in client.gui_uuid, timeout=60)
-        yield t.session, client
+    with recorded_tab() as t:
+        yield t
 
 
 def _visibility(messages: list[dict[str, Any]], name: str) -> list[bool]:

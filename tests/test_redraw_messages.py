@@ -12,30 +12,14 @@ import pytest
 
 from rigidrel_app.backends.viser import _Texts  # pyright: ignore[reportPrivateUsage]
 from rigidrel_app.live.keys import Action
-from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
-from tests.viser_client import LightClient, decode_frame, light_tab, wait_until
-
-
-class Recorder(LightClient):
-    """A light client that keeps every message the server sent it, decoded."""
-
-    def __init__(self, url: str) -> None:
-        super().__init__(url)
-        self.messages: list[dict[str, Any]] = []
-
-    def _consume(self, data: bytes) -> None:
-        self.messages += decode_frame(data)
-        super()._consume(data)
+from tests.viser_client import Recorder, recorded_tab, wait_until
 
 
 @pytest.fixture
 def tab() -> Iterator[tuple[Session, Recorder]]:
-    with App(port=0) as app, light_tab(app, Recorder) as t:
-        client = t.client
-        assert isinstance(client, Recorder)
-        wait_until(lambda: "V" in client.gui_uuid, timeout=60)
-        yield t.session, client
+    with recorded_tab() as t:
+        yield t
 
 
 def labels_as_sent(messages: list[dict[str, Any]], prefix: str) -> dict[str, dict[str, Any]]:

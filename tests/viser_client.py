@@ -250,6 +250,31 @@ def light_tab(app: App, make_client: Callable[[str], LightClient] = LightClient)
         loop.close()
 
 
+class Recorder(LightClient):
+    """A light client that keeps every message the server sent it, decoded."""
+
+    def __init__(self, url: str) -> None:
+        super().__init__(url)
+        self.messages: list[dict[str, Any]] = []
+
+    def _consume(self, data: bytes) -> None:
+        self.messages += decode_frame(data)
+        super()._consume(data)
+
+
+@contextlib.contextmanager
+def recorded_tab() -> Iterator[tuple[Session, Recorder]]:
+    """An app of its own with one :class:`Recorder` tab, once its controls have arrived: (the
+    tab's session, the client); the app stopped after, whatever happened."""
+    from rigidrel_app.live.server import App
+
+    with App(port=0) as app, light_tab(app, Recorder) as t:
+        client = t.client
+        assert isinstance(client, Recorder)
+        wait_until(lambda: "V" in client.gui_uuid, timeout=60)
+        yield t.session, client
+
+
 def swarm_main(url: str, n: int, seconds: float) -> None:
     """In a child process: ``n`` clients read for SWARM_WARMUP + ``seconds``; print one JSON line.
 
