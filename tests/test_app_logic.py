@@ -681,3 +681,12 @@ def test_a_run_of_solid_curves_is_stroked_as_each_alone(kind: str) -> None:
         assert together.texts == tuple(t for p in alone for t in p.texts)
         runs += len(together.lines) < sum(len(p.lines) for p in alone)
     assert runs > 0  # some chart has a run of more than one curve
+
+
+def test_a_value_for_no_parameter_of_the_scene_is_an_error_not_ignored() -> None:
+    """``with_value`` with a name the scene does not have (``"V"`` for ``"v"``) raises, naming the
+    scene's parameters, instead of returning the settings unchanged."""
+    s = Settings("rod-collision")
+    with pytest.raises(KeyError, match="its parameters: v1, "):
+        s.with_value("V1", 0.9)
+    assert s.with_value("v1", 0.9).value("v1") == 0.9

@@ -88,6 +88,9 @@ class Settings:
         return dict(self._by_name)
 
     def with_value(self, name: str, value: float | None) -> Settings:
+        """``name`` (a parameter of this scene: KeyError for any other) set to ``value``."""
+        if name not in self._by_name:
+            raise KeyError(f"{name!r} is not a parameter of {self.scene} (its parameters: {', '.join(self._by_name)})")
         return replace(self, values=tuple((k, value if k == name else v) for k, v in self.values))
 
     def with_scene(self, kind: str) -> Settings:
