@@ -79,12 +79,8 @@ _TAG = re.compile(r"<sub>(.*?)</sub>|<[^>]+>")
 
 
 def text_box_px(text: str, size: float) -> tuple[float, float]:
-    """The (width, height) in CSS pixels that ``text`` (the vocabulary's small HTML subset) takes at
-    font ``size``: ``CHAR_EM * size`` per character, subscripts at ``SUB_SCALE`` of that."""
-    subscript = sum(len(m.group(1)) for m in _TAG.finditer(text) if m.group(1) is not None)
-    plain = len(_TAG.sub("", text))
-    width = CHAR_EM * size * (plain + SUB_SCALE * subscript)
-    return width, LINE_EM * size
+    """The label box estimate is an input of the search, not part of it: the module's own."""
+    return fast.text_box_px(text, size)
 
 
 def candidate_offsets(

@@ -20,7 +20,7 @@ import numpy.typing as npt
 
 from .layout import LEGEND_ROW_EM, MIN_TEXT_PX, ChartLayout, Rect, Theme, text_width
 from .placement import AXIS_NAME_DROP_EM, AXIS_NAME_INSET_PX, place_labels
-from .vocabulary import Area, Chart, Dash, Item, Label, Points, Polyline, Segments, Style, rgb
+from .vocabulary import Area, Chart, Dash, Item, Label, Points, Polyline, Segments, Style, rgb, unicode_subscript
 
 FloatArray = npt.NDArray[np.float64]
 Anchor = Literal["center-left", "center-right", "center-center", "top-left", "top-center", "bottom-left"]
@@ -313,17 +313,14 @@ def line_width(style: Style, theme: Theme) -> float:
     return round(max(theme.line_px, style.width * theme.line_scale), 1)
 
 
-_SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
-
-
 def page_text(text: str) -> str:
     """Plotly's small HTML subset as plain canvas text: a subscript in Unicode subscripts where each
     of its characters has one (``T<sub>1</sub>`` -> ``T₁``), else after an underscore (``T_B``)."""
 
     def sub(m: re.Match[str]) -> str:
         s = m.group(1)
-        t = s.translate(_SUB)
-        return t if all(ch != o for ch, o in zip(t, s, strict=True)) else f"_{s}"
+        t = unicode_subscript(s)
+        return f"_{s}" if t is None else t
 
     text = re.sub(r"<sub>(.*?)</sub>", sub, text)
     return re.sub(r"</?b>", "", text)

@@ -23,7 +23,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .vocabulary import Chart, FloatArray, Item, Label, Points, Polyline, Segments
+from .vocabulary import Chart, FloatArray, Item, Label, Points, Polyline, Segments, unicode_subscript
 
 #: Width of one character of bold text, per font size (sans-serif bold digits and capitals are
 #: about 0.62 em; a safe upper bound, so that estimated boxes hold the drawn text).
@@ -77,9 +77,12 @@ _TAG = re.compile(r"<sub>(.*?)</sub>|<[^>]+>")
 
 def text_box_px(text: str, size: float) -> tuple[float, float]:
     """The (width, height) in CSS pixels that ``text`` (the vocabulary's small HTML subset) takes at
-    font ``size``: ``CHAR_EM * size`` per character, subscripts at ``SUB_SCALE`` of that."""
-    subscript = sum(len(m.group(1)) for m in _TAG.finditer(text) if m.group(1) is not None)
-    plain = len(_TAG.sub("", text))
+    font ``size``: ``CHAR_EM * size`` per character, subscripts at ``SUB_SCALE`` of that. A
+    subscript with a character Unicode has no subscript for is written ``_B1`` on the canvas, at
+    full size, and counted so (:func:`~.vocabulary.unicode_subscript`)."""
+    subs = [m.group(1) for m in _TAG.finditer(text) if m.group(1) is not None]
+    subscript = sum(len(s) for s in subs if unicode_subscript(s) is not None)
+    plain = len(_TAG.sub("", text)) + sum(len(s) + 1 for s in subs if unicode_subscript(s) is None)
     width = CHAR_EM * size * (plain + SUB_SCALE * subscript)
     return width, LINE_EM * size
 

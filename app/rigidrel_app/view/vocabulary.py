@@ -167,6 +167,16 @@ def event_label(name: str) -> str:
     return f"<b>{sign}{core}{prime}</b>"
 
 
+_SUBSCRIPTS = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
+
+
+def unicode_subscript(text: str) -> str | None:
+    """``text`` in Unicode subscript characters (``"12"`` -> ``"₁₂"``), or ``None`` if one of its
+    characters has none (``"B1"``: the canvas then writes ``_B1``, at full size)."""
+    t = text.translate(_SUBSCRIPTS)
+    return t if all(ch != o for ch, o in zip(t, text, strict=True)) else None
+
+
 def plain_text(text: str) -> str:
     """Strip the small HTML subset for text drawn in 3-D."""
     for tag in ("<b>", "</b>", "<sub>", "</sub>"):
