@@ -20,6 +20,7 @@ from rigidrel_app.backends.raster import page_image
 from rigidrel_app.backends.viser import FlatStill, flat_still, sent_for_shade
 from rigidrel_app.live.session import FLAT_AFTER_S, FLAT_SWAP_S, Session
 from rigidrel_app.view.canvas import PageDots, PageLines, PagePicture, PageText
+from rigidrel_app.view.layout import CanvasSize
 from rigidrel_app.view.state import presets
 from tests.viser_client import Recorder, recorded_tab, wait_until
 
@@ -150,3 +151,16 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
     wait_until(lambda: not r.vectors_shown and r.flat_version == r.version, timeout=30)
     with session.lock:
         session.toggle_play()
+
+
+def test_the_same_canvas_at_a_lower_resolution_marks_it_slow(tab: tuple[Session, Recorder]) -> None:
+    """The browser lowering its resolution (the same CSS size, fewer rendered pixels) is what marks
+    a canvas slow; a new size at another resolution (a window moved to another screen) is not."""
+    session, _ = tab
+    with session.lock:
+        w, h = session.canvas_size.width, session.canvas_size.height
+        session._resize(CanvasSize.measured_by_page(w + 10, h, 1.0))  # pyright: ignore[reportPrivateUsage]
+        session._resize(CanvasSize.measured_by_page(w, h, 2.0))  # pyright: ignore[reportPrivateUsage]
+        assert not session.slow_canvas
+        session._resize(CanvasSize.measured_by_page(w, h, 1.5))  # pyright: ignore[reportPrivateUsage]
+        assert session.slow_canvas

@@ -48,12 +48,17 @@ _FONTS = (
 _MARGIN = 0.02
 
 
-@lru_cache(maxsize=8)
-def _font(size: int) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
-    for path in _FONTS:
+@lru_cache(maxsize=64)
+def _first_font(paths: tuple[str, ...], size: int) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
+    """The first of the font files ``paths`` this machine has, at ``size`` px; else Pillow's own."""
+    for path in paths:
         if Path(path).exists():
             return ImageFont.truetype(path, size)
     return ImageFont.load_default(size=size)
+
+
+def _font(size: int) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
+    return _first_font(_FONTS, size)
 
 
 class LaneRaster:
@@ -222,12 +227,8 @@ _ANCHORS = {
 }  # fmt: skip
 
 
-@lru_cache(maxsize=64)
 def _page_font(size: int, fallback: bool) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
-    for path in _PAGE_FONTS[1:] if fallback else _PAGE_FONTS:
-        if Path(path).exists():
-            return ImageFont.truetype(path, size)
-    return ImageFont.load_default(size=size)
+    return _first_font(_PAGE_FONTS[1:] if fallback else _PAGE_FONTS, size)
 
 
 def _needs_fallback(ch: str) -> bool:
@@ -311,7 +312,8 @@ def _page_label(img: Image.Image, t: PageText, height: float, scale: float) -> N
     box_w, box_h = max(widths), step * (len(lines) - 1) + ascent + descent
     x, y = t.x * scale, (height - t.z) * scale
     horizontal, vertical = _ANCHORS[t.anchor]
-    left = x - {"l": 0.0, "m": 0.5, "r": 1.0}[horizontal] * box_w
+    across = {"l": 0.0, "m": 0.5, "r": 1.0}[horizontal]  # the share of a line's width left of x
+    left = x - across * box_w
     top = y - {"a": 0.0, "m": 0.5, "d": 1.0}[vertical] * box_h
     pad = LABEL_BOX_PAD_EM * size
     box = (round(left - pad), round(top - pad), round(left + box_w + pad), round(top + box_h + pad))
@@ -320,7 +322,7 @@ def _page_label(img: Image.Image, t: PageText, height: float, scale: float) -> N
     ink = Image.new("L", region.size, 0)
     d = ImageDraw.Draw(ink)
     for k, (line, lw) in enumerate(zip(lines, widths, strict=True)):
-        u = left - box[0] + {"l": 0.0, "m": 0.5, "r": 1.0}[horizontal] * (box_w - lw)
+        u = left - box[0] + across * (box_w - lw)
         for run, fb in _runs(line):
             d.text((u, top - box[1] + k * step + ascent), run, fill=255, font=fonts[fb], anchor="ls")
             u += fonts[fb].getlength(run)

@@ -162,8 +162,8 @@ class Session:
         self.renderer_lanes: list[LanePicture] = []
         """The lanes as last drawn."""
         self._last_plot = 0.0
-        self._still_seen = (-1, 0.0)
-        """The renderer's still-picture version last seen by :meth:`_flatten`, and when."""
+        self._still_at = 0.0
+        """When the still picture was last drawn (``time.monotonic``)."""
         self._flat_asked = (-1, 0.0)
         """The still-picture version and scale whose image was last asked for."""
         self._flat_sent_at = 0.0
@@ -171,7 +171,6 @@ class Session:
         """The browser has lowered its canvas' resolution (viser does while frames come slower
         than 38 a second, as in a software renderer): from then on, while it plays, the still
         picture goes as one image (:meth:`_flatten`). A canvas that keeps up never gets one."""
-        self._top_resolution = 0.0
         resolved = resolve_settings(self.settings)
         if isinstance(resolved, str):  # a start state given from outside that makes no scene
             self.notice, self.settings = resolved, Settings()
@@ -216,8 +215,11 @@ class Session:
             self.client.flush()
 
     def _resize(self, size: CanvasSize) -> None:
-        """Take the canvas' new size (CSS px); lay the page out again if it changed."""
+        """Take the canvas' new size (CSS px); lay the page out again if it changed. The same size
+        at a lower resolution is the browser finding its frames slow (:attr:`slow_canvas`)."""
         resized = (size.width, size.height) != (self.canvas_size.width, self.canvas_size.height)
+        if not resized and size.resolution < self.canvas_size.resolution - 1e-3:
+            self.slow_canvas = True
         self.canvas_size = size
         if resized and self.drawn is not None and self.layout is not None:
             with self.client.atomic():
@@ -552,6 +554,7 @@ class Session:
         picture += legend_picture(legend, layout.legend, layout.theme)
         self.chart_frames, self.static_picture = tuple(frames), picture
         self.renderer.set_static(layout, picture, RULER_NAMES)
+        self._still_at = time.monotonic()
         if refit:
             self.fit_camera()
         c.readout.content = readout(resolved)
@@ -632,22 +635,17 @@ class Session:
         shows them again at once (:meth:`PageRenderer.set_static`), so a control's answer is
         never held up by the image; the image follows when the picture stands still again."""
         r, layout, wall = self.renderer, self.layout, time.monotonic()
+        if layout is None or not self.slow_canvas:
+            return
         # the image's px on the canvas' rendered pixels (CSS px times the screen's pixel ratio
         # times the client's adaptive resolution): a texture drawn at another scale blurs
         scale = self.canvas_size.resolution
-        self._top_resolution = max(self._top_resolution, scale)
-        if scale < self._top_resolution - 1e-3:
-            self.slow_canvas = True
-        if layout is None or not self.slow_canvas:
-            return
         if r.flat_version == r.version:
             if r.vectors_shown and wall - self._flat_sent_at >= FLAT_SWAP_S:
                 r.hide_vectors()
             if abs(r.flat_scale - scale) < 1e-3:
                 return
-        if self._still_seen[0] != r.version:
-            self._still_seen = (r.version, wall)
-        if self._flat_asked == (r.version, scale) or wall - self._still_seen[1] < FLAT_AFTER_S:
+        if self._flat_asked == (r.version, scale) or wall - self._still_at < FLAT_AFTER_S:
             return
         self._flat_asked = (r.version, scale)
         picture, version, shade = r.still, r.version, layout.theme.shade

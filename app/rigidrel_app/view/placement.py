@@ -425,11 +425,8 @@ def _walk(
     grown_taken = [(b.left - m, b.top - m, b.right + m, b.bottom + m) for b in taken] if check_leader else []
     ax, ay = anchor.ax, anchor.ay
     for spot in spots[np.lexsort((spots, counts[spots]))].tolist():
-        g = table.grown[k, spot]
-        grown = (float(g[0]), float(g[1]), float(g[2]), float(g[3]))
-        if any(_meets(grown, b) for b in placed):
-            continue
-        if use_leaders and any(_leader_enters(segment, grown) for segment in leaders):
+        grown = _grown_box(table, k, spot)
+        if not _clear_of_placed(grown, placed, leaders if use_leaders else []):
             continue
         dx, dy, leader = anchor.spots.offsets[spot]
         if check_leader and leader:
@@ -441,6 +438,19 @@ def _walk(
                 continue
         return (int(counts[spot]), spot, dx, dy, leader)
     return None
+
+
+def _grown_box(table: _Table, row: int, spot: int) -> tuple[float, float, float, float]:
+    g = table.grown[row, spot]
+    return float(g[0]), float(g[1]), float(g[2]), float(g[3])
+
+
+def _clear_of_placed(
+    grown: tuple[float, float, float, float], placed: list[Box], leaders: list[tuple[float, float, float, float]]
+) -> bool:
+    """Whether a spot's grown box meets none of the label boxes placed so far and none of the
+    ``leaders``: what of a spot :func:`_table` cannot know, the placement's order deciding it."""
+    return not any(_meets(grown, b) for b in placed) and not any(_leader_enters(sg, grown) for sg in leaders)
 
 
 def _sign(v: float) -> int:
@@ -614,11 +624,7 @@ def _place(prepared: _Prepared, order: list[int]) -> tuple[dict[int, Item], list
         k = table.row[index]
         free = table.ok[k, : anchor.spots.n_bare] & (table.counts[k, : anchor.spots.n_bare] == 0)
         for spot in np.flatnonzero(free).tolist():
-            g = table.grown[k, spot]
-            grown = (float(g[0]), float(g[1]), float(g[2]), float(g[3]))
-            if not any(_meets(grown, b) for b in taken[fixed:]) and not any(
-                _leader_enters(segment, grown) for segment in leaders
-            ):
+            if _clear_of_placed(_grown_box(table, k, spot), taken[fixed:], leaders):
                 dx, dy, _ = anchor.spots.offsets[spot]
                 best = (0, spot, dx, dy, False)
                 break
