@@ -295,7 +295,10 @@ class LaneRenderer:
 _LAYER_Y = 0.4
 _PAGE_ROD_DEPTH = 2.0
 _LANE_LINES_Y = -_PAGE_ROD_DEPTH - 1.0
-_TEXT_Y = -8.0
+#: Depth of the page's labels: on the page itself. viser draws labels over everything (no depth
+#: test), so they need no place in front; one in front would sit off its point by its share of
+#: the camera's distance (at 8 px in front, 2 px at the foot of a 720 px page).
+_TEXT_Y = 0.0
 #: Ruler numbers per lane kept as label nodes (more than a lane ever shows).
 RULER_SLOTS = 24
 #: A viser screen-space label's em is 12 CSS px times its ``font_screen_scale``.
