@@ -487,3 +487,36 @@ def test_a_crowded_plot_is_placed_again_with_the_stuck_labels_first() -> None:
                 assert_same_placement(placed, first)
             better += stuck < stuck_first
     assert better > 0  # some crowded plots gain from another order
+
+
+def test_a_crowded_labels_far_rings_are_made_once_per_size(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A crowded plot is placed in up to four orders. A stuck label's far rings and their table do
+    not depend on the order, so each label's are made once per label size, and the placement is
+    the one made with them made afresh in every order."""
+    made: list[tuple[int, float]] = []
+    table, far = fast._table, fast._far  # pyright: ignore[reportPrivateUsage]
+
+    def counted(anchors: list[fast._Anchor], *args: object) -> object:  # pyright: ignore[reportPrivateUsage]
+        if len(anchors) == 1:
+            made.append((anchors[0].index, anchors[0].w))
+        return table(anchors, *args)  # type: ignore[arg-type]
+
+    def afresh(prepared: fast._Prepared, anchor: fast._Anchor) -> object:  # pyright: ignore[reportPrivateUsage]
+        prepared.far.pop(anchor.index, None)
+        return far(prepared, anchor)
+
+    monkeypatch.setattr(fast, "_table", counted)
+    saved = 0
+    for seed in range(40):
+        chart = crowded_chart(seed)
+        for area in ((360.0, 240.0), (200.0, 150.0)):
+            made.clear()
+            kept = fast.place_labels(chart, area, smallest=10.0)
+            assert len(made) == len(set(made))  # once per label and size
+            once = len(made)
+            with monkeypatch.context() as m:
+                m.setattr(fast, "_far", afresh)
+                made.clear()
+                assert_same_placement(kept, fast.place_labels(chart, area, smallest=10.0))
+            saved += len(made) - once
+    assert saved > 0  # the crowded cases are placed in several orders, some labels stuck in more than one

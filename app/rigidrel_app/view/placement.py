@@ -17,6 +17,7 @@ library: every backend draws the placed offsets.
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from dataclasses import dataclass, replace
 from functools import lru_cache
@@ -577,6 +578,21 @@ class _Prepared:
     fixed: tuple[Box, ...]
     anchors: dict[int, _Anchor]
     table: _Table | None
+    far: dict[int, tuple[_Anchor, _Table]] = dataclasses.field(default_factory=dict, compare=False)
+    """A crowded label's far rings and their table, by its index, made the first time the label
+    needs them (:func:`_place`) and kept for the other orders: like :attr:`table`, what they hold
+    does not depend on the order of placement."""
+
+
+def _far(prepared: _Prepared, anchor: _Anchor) -> tuple[_Anchor, _Table]:
+    """The far rings (:data:`FAR_RINGS`) of ``anchor`` and their table, once per :class:`_Prepared`."""
+    if anchor.index not in prepared.far:
+        item = prepared.chart.items[anchor.index]
+        assert isinstance(item, Label)
+        spots = _spots(anchor.w, anchor.h, item.size, item.anchor, FAR_RINGS)
+        far = _Anchor(anchor.index, anchor.ax, anchor.ay, anchor.w, anchor.h, spots)
+        prepared.far[anchor.index] = (far, _table([far], prepared.area, prepared.field, list(prepared.fixed)))
+    return prepared.far[anchor.index]
 
 
 def _prepare(chart: Chart, area: tuple[float, float], obs: Obstacles, reserved: list[Box]) -> _Prepared:
@@ -606,7 +622,7 @@ def _place(prepared: _Prepared, order: list[int]) -> tuple[dict[int, Item], list
     lines placed before it either (the spot :func:`_walk` would choose, without the sort); else
     :func:`_walk` over the first rings, then over the far ones, and at last over the far ones
     across leader lines."""
-    chart, area, field, table = prepared.chart, prepared.area, prepared.field, prepared.table
+    chart, area, table = prepared.chart, prepared.area, prepared.table
     taken = list(prepared.fixed)
     fixed = len(taken)
     leaders: list[tuple[float, float, float, float]] = []
@@ -617,7 +633,7 @@ def _place(prepared: _Prepared, order: list[int]) -> tuple[dict[int, Item], list
         if anchor is None:
             continue
         assert table is not None
-        ax, ay, w, h = anchor.ax, anchor.ay, anchor.w, anchor.h
+        ax, ay = anchor.ax, anchor.ay
         item = chart.items[index]
         assert isinstance(item, Label)
         best: tuple[int, int, float, float, bool] | None = None
@@ -631,8 +647,7 @@ def _place(prepared: _Prepared, order: list[int]) -> tuple[dict[int, Item], list
         if best is None:  # every spot of the first rings, the fewest crossings first
             best = _walk(anchor, table, taken, fixed, leaders, True)
         if best is None:  # crowded: farther out, and at last across other leader lines
-            far = _Anchor(index, ax, ay, w, h, _spots(w, h, item.size, item.anchor, FAR_RINGS))
-            rings = _table([far], area, field, list(prepared.fixed))
+            far, rings = _far(prepared, anchor)
             best = _walk(far, rings, taken, fixed, leaders, True) or _walk(far, rings, taken, fixed, leaders, False)
         if best is None:  # nowhere free of labels and markers: keep the old spot, with a leader line
             out[index] = replace(item, leader=True)
