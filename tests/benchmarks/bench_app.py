@@ -1,6 +1,6 @@
 """Speed of the app, server side and in the browser (a script that prints figures, not a test).
 
-    python -m tests.benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--phases]
+    python -m tests.benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--phases] [--drawing]
 
 * rebuild: a slider change to every drawing rebuilt (scene, diagrams, lanes), median
   per scene, timed in the server process (target <= 16 ms); ``--phases`` prints only where
@@ -8,6 +8,8 @@
 * answer: a slider value sent by a client, from the server's socket receiving it to the
   server's socket sending the last frame of the answer (target <= 10 ms), with the session
   flushing its answer and, alternated with it, without (viser's 1/60 s send window);
+* drawing (only with ``--drawing``, which prints nothing else): what the answer's redraw computes, without viser,
+  over the answer's values, at the pace of clicks and back to back (:func:`bench_drawing`);
 * animation: N lightweight viser clients (another process) playing at once: delivered
   rod frames per second per client (target >= 30) and server CPU per client (target <= 15 %
   of one core);
@@ -235,6 +237,73 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
     return out
 
 
+def answer_settings() -> list[Settings]:
+    """The settings :func:`bench_answer` sends, in its order: ``per_scene`` = 6 values across each
+    linear slider of every scene, each from the one before, leaving out those that make no scene."""
+    out: list[Settings] = []
+    for kind in rr.scene_descriptions():
+        s = Settings(kind)
+        for p in rr.describe(kind).parameters:
+            if p.slider is None or p.slider.scale == "log":
+                continue
+            for value in np.linspace(p.slider.lo, p.slider.hi, 6):
+                new = s.with_value(p.name, float(value))
+                if not isinstance(resolve(new), str):
+                    out.append(new)
+                    s = new
+    return out
+
+
+def bench_drawing(repeats: int = 2, quiet: float = 0.15) -> dict[str, float]:
+    """The drawing a slider's answer makes, without viser: what ``Session._apply`` and its
+    ``draw_now`` compute (the scene, the three charts with their labels placed, their pictures, the
+    legend, the lanes and the moving parts) on the 960 x 720 canvas of :func:`bench_answer`'s tab, over the
+    values of :func:`answer_settings`; each made ``quiet`` s after the last (as clicks come) and
+    back to back, alternated ``repeats`` times. Medians and p90 in ms: the part of the answer that
+    no message costs."""
+    from rigidrel_app.view.canvas import MOVING, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
+    from rigidrel_app.view.layout import NORMAL, canvas_layout
+    from rigidrel_app.view.scene_view import build_drawing
+
+    layout = canvas_layout(960.0, 720.0, NORMAL)  # the canvas the benchmarks' light tab reports
+
+    def draw(s: Settings) -> None:
+        resolved = resolve(s)
+        assert not isinstance(resolved, str)
+        d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
+        legend = d.legend()
+        legend_rows(legend, layout.legend.width, layout.theme)
+        frames, picture = [], PagePicture()
+        for chart, place in zip(d.charts, layout.charts, strict=True):
+            f, p = chart_picture(chart, place, layout.theme)
+            frames.append(f)
+            picture += p
+        picture += legend_picture(legend, layout.legend, layout.theme)
+        lanes = d.lane_pictures(d.window[0], layout)
+        moving = PagePicture()
+        for f, items in zip(frames, d.moving_items(d.window[0], [lane.ends for lane in lanes]), strict=True):
+            moving += items_picture(items, f, layout.theme, MOVING)
+
+    values = answer_settings()
+    for s in values[:30]:  # warm
+        draw(s)
+    times: dict[str, list[float]] = {"idle": [], "back_to_back": []}
+    for _ in range(repeats):
+        for variant in times:
+            for s in values:
+                if variant == "idle":
+                    time.sleep(quiet)
+                t0 = time.perf_counter()
+                draw(s)
+                times[variant].append(time.perf_counter() - t0)
+    out: dict[str, float] = {}
+    for variant, ts in times.items():
+        out[f"drawing_ms_median[{variant}]"] = 1e3 * statistics.median(ts)
+        out[f"drawing_ms_p90[{variant}]"] = 1e3 * float(np.percentile(ts, 90))
+    out["drawing_samples"] = float(len(values))
+    return out
+
+
 def bench_animation(n_clients: int, seconds: float) -> dict[str, float]:
     """The load benchmark's run (tests/load.py) at the app's own animation rate."""
     r = load.run(n_clients, seconds, ANIMATION_HZ)
@@ -287,12 +356,17 @@ def main() -> None:
     parser.add_argument("--no-browser", action="store_true")
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--phases", action="store_true", help="only where a slider's redraw goes, per scene")
+    parser.add_argument("--drawing", action="store_true", help="only the answer's drawing, without viser")
     args = parser.parse_args()
     figures: dict[str, float] = {}
     if args.phases:
         figures.update(bench_phases())
         for k, v in figures.items():
             print(f"{k:70s} {v:8.2f}")
+        return
+    if args.drawing:
+        for k, v in bench_drawing().items():
+            print(f"{k:40s} {v:8.2f}")
         return
     figures.update(bench_rebuild())
     figures.update(bench_answer())
