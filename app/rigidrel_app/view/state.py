@@ -136,8 +136,11 @@ def presets() -> dict[str, Settings]:
 
 
 def scene_presets(kind: str) -> dict[str, Settings]:
-    """The paper figures of one scene, by menu label, in the description's order."""
-    return {label: s for label, s in presets().items() if s.scene == kind}
+    """The paper figures of one scene, by menu label, in the description's order (menu labels are
+    unique across scenes: :func:`presets` holds these same entries)."""
+    return {
+        p.label: Settings(kind, tuple(p.values.items()), p.frame, 0.0, p.overlay) for p in rr.describe(kind).presets
+    }
 
 
 def preset_of(settings: Settings) -> str:
