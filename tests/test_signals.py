@@ -20,7 +20,8 @@ from tests.strategies import scene_and_frame
 
 SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
-#: An arrival on the point's worldline: |x(t_arrival) - x_arrival|, relative to max(|t|, |x|, rest length).
+#: An arrival on the point's worldline: |x(t_arrival) - x_arrival|, relative to the largest of the
+#: source's and the arrival's |t| and |x| and the rest length.
 TOL_ON_WORLDLINE = 1e-13
 #: The same arrival computed in two frames, relative to max(|t'|, |x'|, rest length) times gamma.
 TOL_COVARIANT = 1e-12
@@ -55,6 +56,18 @@ def test_the_kick_is_the_far_ends_horizon() -> None:
     assert x == pytest.approx(1.0 + 0.6 * (t - t_stop) + (scene.events["T_F"][1] - 1.0), rel=1e-15)
 
 
+def test_an_arrival_far_from_its_source_is_on_the_light_cone_to_the_sources_rounding() -> None:
+    """A source 26 units from where its signal arrives (a slow rod, a long window): the arrival is on
+    the light cone to the rounding of coordinates that large (a case the property test below found,
+    when its tolerance went only with the arrival's coordinates)."""
+    scene = rr.build_scene("constant-acceleration", v=0.5569031991501275, length=1.9, a_front=0.010000000000000002)
+    t0, _ = scene.time_window(rr.LAB)
+    source = (t0, 27.0)
+    t, x = scene.signal_arrival(source, 0, 0.5) or (math.nan, math.nan)
+    assert t - source[0] == pytest.approx(26.017190215183827, rel=1e-14)
+    assert abs(abs(x - source[1]) - (t - source[0])) <= 4 * 2.0**-52 * 27.0
+
+
 @SETTINGS
 @given(scene_frame=scene_and_frame(), f=st.floats(0.0, 1.0), u=st.floats(0.0, 1.0), data=st.data())
 def test_arrivals_lie_on_the_worldline_and_the_light_cone(
@@ -69,7 +82,9 @@ def test_arrivals_lie_on_the_worldline_and_the_light_cone(
     arrival = scene.signal_arrival(source, rod, f, frame=frame)
     assert arrival is not None  # toward the point, a signal always arrives (every change ends)
     t, x = arrival
-    scale = max(abs(t), abs(x), length)
+    # the arrival is worked out from the source's coordinates: its rounding, and the rounding of the
+    # differences below, go with the larger of the two events' coordinates
+    scale = max(abs(t), abs(x), abs(source[0]), abs(source[1]), length)
     on_line = scene.material_positions(np.array([t]), frame, fractions=[f])[rod, 0, 0]
     assert abs(on_line - x) <= TOL_ON_WORLDLINE * scale
     assert t >= source[0] - 4 * 2.0**-52 * scale  # in the source's future (to rounding)
