@@ -24,7 +24,7 @@ import json
 import math
 import statistics
 import time
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -191,40 +191,32 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
             change(*args, **kwargs)
             changed.append((t0, time.perf_counter()))
 
-        k = 0
-        for kind in rr.scene_descriptions():
-            session.change(Settings(kind))
-            for p in rr.describe(kind).parameters:
-                if p.slider is None or p.slider.scale == "log":
-                    continue
-                control = session.controls.parameters[p].slider
-                for value in np.linspace(p.slider.lo, p.slider.hi, per_scene):
-                    if isinstance(resolve(session.settings.with_value(p.name, float(value))), str):
-                        continue
-                    variant = ("flushed", "window")[k % 2]
-                    k += 1
-                    session.client.flush = flush if variant == "flushed" else (lambda: None)  # type: ignore[method-assign]
-                    time.sleep(quiet)
-                    n_in, handled = len(clock.received), session.messages_handled
-                    message = {
-                        "type": "GuiUpdateMessage",
-                        "uuid": control._impl.uuid,
-                        "updates": {"value": float(value)},
-                    }
-                    session.change = timed_change  # type: ignore[method-assign]
-                    loop.run(client.send_raw(message))
-                    wait_until(lambda h=handled: session.messages_handled > h, interval=0.005)
-                    session.change = change  # type: ignore[method-assign]
-                    t_in = clock.received[n_in]
+        previous = ""
+        for k, v in enumerate(answer_values(per_scene)):
+            if v.settings.scene != previous:
+                session.change(Settings(v.settings.scene))
+                previous = v.settings.scene
+            control = session.controls.parameters[v.parameter].slider
+            variant = ("flushed", "window")[k % 2]
+            session.client.flush = flush if variant == "flushed" else (lambda: None)  # type: ignore[method-assign]
+            time.sleep(quiet)
+            n_in, handled = len(clock.received), session.messages_handled
+            message = {"type": "GuiUpdateMessage", "uuid": control._impl.uuid, "updates": {"value": v.value}}
+            session.change = timed_change  # type: ignore[method-assign]
+            loop.run(client.send_raw(message))
+            wait_until(lambda h=handled: session.messages_handled > h, interval=0.005)
+            session.change = change  # type: ignore[method-assign]
+            assert session.settings == v.settings, (session.settings, v.settings)
+            t_in = clock.received[n_in]
 
-                    def answered(t: float = t_in) -> bool:  # sent, then quiet for ``quiet`` s
-                        return bool(clock.sent) and time.perf_counter() - max(clock.sent[-1], t) > quiet
+            def answered(t: float = t_in) -> bool:  # sent, then quiet for ``quiet`` s
+                return bool(clock.sent) and time.perf_counter() - max(clock.sent[-1], t) > quiet
 
-                    wait_until(answered, interval=0.01)
-                    times[variant].append(clock.sent[-1] - t_in)
-                    redraw_start, redraw_end = changed[-1]
-                    redraws.append(redraw_end - redraw_start)
-                    after_redraw[variant].append(clock.sent[-1] - redraw_end)
+            wait_until(answered, interval=0.01)
+            times[variant].append(clock.sent[-1] - t_in)
+            redraw_start, redraw_end = changed[-1]
+            redraws.append(redraw_end - redraw_start)
+            after_redraw[variant].append(clock.sent[-1] - redraw_end)
         session.client.flush = flush  # type: ignore[method-assign]
     out: dict[str, float] = {}
     for variant, ts in times.items():
@@ -237,19 +229,30 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
     return out
 
 
-def answer_settings() -> list[Settings]:
-    """The settings :func:`bench_answer` sends, in its order: ``per_scene`` = 6 values across each
-    linear slider of every scene, each from the one before, leaving out those that make no scene."""
-    out: list[Settings] = []
+@dataclass(frozen=True)
+class AnswerValue:
+    """One value :func:`bench_answer` sends to a slider."""
+
+    parameter: rr.Parameter
+    value: float
+    settings: Settings
+    """The tab's settings once it has taken the value."""
+
+
+def answer_values(per_scene: int = 6) -> list[AnswerValue]:
+    """What :func:`bench_answer` sends, in its order: ``per_scene`` values across each linear slider
+    of every scene (each scene from its defaults), each value taken from the settings the one
+    before left, leaving out those that make no scene."""
+    out: list[AnswerValue] = []
     for kind in rr.scene_descriptions():
         s = Settings(kind)
         for p in rr.describe(kind).parameters:
             if p.slider is None or p.slider.scale == "log":
                 continue
-            for value in np.linspace(p.slider.lo, p.slider.hi, 6):
+            for value in np.linspace(p.slider.lo, p.slider.hi, per_scene):
                 new = s.with_value(p.name, float(value))
                 if not isinstance(resolve(new), str):
-                    out.append(new)
+                    out.append(AnswerValue(p, float(value), new))
                     s = new
     return out
 
@@ -258,7 +261,7 @@ def bench_drawing(repeats: int = 2, quiet: float = 0.15) -> dict[str, float]:
     """The drawing a slider's answer makes, without viser: what ``Session._apply`` and its
     ``draw_now`` compute (the scene, the three charts with their labels placed, their pictures, the
     legend, the lanes and the moving parts) on the 960 x 720 canvas of :func:`bench_answer`'s tab, over the
-    values of :func:`answer_settings`; each made ``quiet`` s after the last (as clicks come) and
+    values of :func:`answer_values`; each made ``quiet`` s after the last (as clicks come) and
     back to back, alternated ``repeats`` times. Medians and p90 in ms: the part of the answer that
     no message costs."""
     from rigidrel_app.view.canvas import MOVING, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
@@ -284,7 +287,7 @@ def bench_drawing(repeats: int = 2, quiet: float = 0.15) -> dict[str, float]:
         for f, items in zip(frames, d.moving_items(d.window[0], [lane.ends for lane in lanes]), strict=True):
             moving += items_picture(items, f, layout.theme, MOVING)
 
-    values = answer_settings()
+    values = [v.settings for v in answer_values()]
     for s in values[:30]:  # warm
         draw(s)
     times: dict[str, list[float]] = {"idle": [], "back_to_back": []}
