@@ -264,7 +264,7 @@ def bench_drawing(repeats: int = 2, quiet: float = 0.15) -> dict[str, float]:
     values of :func:`answer_values`; each made ``quiet`` s after the last (as clicks come) and
     back to back, alternated ``repeats`` times. Medians and p90 in ms: the part of the answer that
     no message costs."""
-    from rigidrel_app.view.canvas import MOVING, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
+    from rigidrel_app.view.canvas import legend_rows, moving_picture, still_picture
     from rigidrel_app.view.layout import NORMAL, canvas_layout
     from rigidrel_app.view.scene_view import build_drawing
 
@@ -276,16 +276,9 @@ def bench_drawing(repeats: int = 2, quiet: float = 0.15) -> dict[str, float]:
         d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
         legend = d.legend()
         legend_rows(legend, layout.legend.width, layout.theme)
-        frames, picture = [], PagePicture()
-        for chart, place in zip(d.charts, layout.charts, strict=True):
-            f, p = chart_picture(chart, place, layout.theme)
-            frames.append(f)
-            picture += p
-        picture += legend_picture(legend, layout.legend, layout.theme)
+        frames, _ = still_picture(d.charts, layout.charts, legend, layout.legend, layout.theme)
         lanes = d.lane_pictures(d.window[0], layout)
-        moving = PagePicture()
-        for f, items in zip(frames, d.moving_items(d.window[0], [lane.ends for lane in lanes]), strict=True):
-            moving += items_picture(items, f, layout.theme, MOVING)
+        moving_picture(frames, d.moving_items(d.window[0], [lane.ends for lane in lanes]), layout.theme)
 
     values = [v.settings for v in answer_values()]
     for s in values[:30]:  # warm

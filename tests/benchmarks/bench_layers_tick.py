@@ -15,7 +15,7 @@ import time
 
 import numpy as np
 
-from rigidrel_app.view.canvas import MOVING, PagePicture, chart_picture, items_picture
+from rigidrel_app.view.canvas import chart_picture, moving_picture
 from rigidrel_app.view.layers import DEFAULT_LAYERS, Layer
 from rigidrel_app.view.layout import canvas_layout
 from rigidrel_app.view.scene_view import build_drawing
@@ -35,9 +35,7 @@ def per_frame_ms(preset: str, layers: frozenset[Layer]) -> tuple[float, float]:
 
     def draw(now: float) -> None:
         lanes = d.lane_pictures(now, layout)
-        moving = PagePicture()
-        for f, items in zip(frames, d.moving_items(now, [lane.ends for lane in lanes]), strict=True):
-            moving += items_picture(items, f, layout.theme, MOVING)
+        moving_picture(frames, d.moving_items(now, [lane.ends for lane in lanes]), layout.theme)
 
     times = np.linspace(*d.window, FRAMES)
     for t in times[:10]:

@@ -106,7 +106,7 @@ def measure(
                 session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
                 layout = session.layout
                 assert layout is not None
-                smallest = min([t.px for t in session.static_picture.texts] + [layout.theme.text_px])
+                smallest = min([t.px for t in session.renderer.still.texts] + [layout.theme.text_px])
                 session.toggle_play()
             time.sleep(warm)  # warm (viser's adaptive resolution steps every 2.5 s at most)
             f0, k0, m0 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")

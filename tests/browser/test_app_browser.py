@@ -491,7 +491,7 @@ def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, sh
     tab.page.wait_for_selector("text=so that the rods collide", timeout=20_000)
     assert tab.session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
     tab.page.screenshot(path=str(shots / "notice.png"))
-    assert all(np.isfinite(ln.points).all() for ln in tab.session.static_picture.lines)  # no NaN drawn
+    assert all(np.isfinite(ln.points).all() for ln in tab.session.renderer.still.lines)  # no NaN drawn
     tab.type_into_slider("V2", -0.3)
     wait_until(lambda: tab.session.drawn.resolved.scene is not scene_before)  # type: ignore[union-attr]
     wait_until(lambda: not tab.page.locator("text=so that the rods collide").is_visible())

@@ -24,6 +24,7 @@ complement at equal lightness (:func:`sent_for_shade`), so that after the invers
 from __future__ import annotations
 
 import functools
+import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Literal
@@ -607,6 +608,8 @@ class PageRenderer:
         """Counts :meth:`set_static` calls: an image made for an older version is not shown."""
         self.still = PagePicture()
         """The still picture as last sent: the diagrams and the legend (the rulers' names apart)."""
+        self.still_at = 0.0
+        """When it was sent (``time.monotonic``)."""
         self._static_lines = _LineNodes(scene, "/page/static")
         self._static_dots = _DotNodes(scene, "/page/static_dots")
         self.static_texts = _Texts(scene, "/page/text")
@@ -646,7 +649,7 @@ class PageRenderer:
         ]
         self.static_texts.show(picture.texts)
         self.axis_names.show(names)
-        self.still = picture
+        self.still, self.still_at = picture, time.monotonic()
         self.version += 1
         self.show_vectors()
 

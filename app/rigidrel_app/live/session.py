@@ -24,7 +24,7 @@ from ..backends.viser import FlatStill, PageRenderer, flat_still
 from ..lessons import Lesson
 from ..lessons.tour import arrival, caption_html, clamp_step, lock_notice, lock_reason, locked_changes
 from ..view import camera as cam
-from ..view.canvas import MOVING, ChartFrame, PagePicture, chart_picture, items_picture, legend_picture, legend_rows
+from ..view.canvas import ChartFrame, legend_rows, moving_picture, still_picture
 from ..view.lanes import LanePicture
 from ..view.layers import Layer
 from ..view.layout import (
@@ -157,13 +157,9 @@ class Session:
         """The canvas in CSS px, which the page is laid out in (its camera reports rendered pixels)."""
         self.chart_frames: tuple[ChartFrame, ...] = ()
         """Each diagram's data -> page px (the plot areas of this layout)."""
-        self.static_picture = PagePicture()
-        """What the diagrams show that does not move (as last sent)."""
         self.renderer_lanes: list[LanePicture] = []
         """The lanes as last drawn."""
         self._last_plot = 0.0
-        self._still_at = 0.0
-        """When the still picture was last drawn (``time.monotonic``)."""
         self._flat_asked = (-1, 0.0)
         """The still-picture version and scale whose image was last asked for."""
         self._flat_sent_at = 0.0
@@ -545,16 +541,8 @@ class Session:
             self.one_line_titles = False
             self.layout = layout = self._canvas_layout(rows, one_line_titles=False)
             self.drawn = d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
-        frames: list[ChartFrame] = []
-        picture = PagePicture()
-        for chart, place in zip(d.charts, layout.charts, strict=True):
-            f, p = chart_picture(chart, place, layout.theme)
-            frames.append(f)
-            picture += p
-        picture += legend_picture(legend, layout.legend, layout.theme)
-        self.chart_frames, self.static_picture = tuple(frames), picture
+        self.chart_frames, picture = still_picture(d.charts, layout.charts, legend, layout.legend, layout.theme)
         self.renderer.set_static(layout, picture, RULER_NAMES)
-        self._still_at = time.monotonic()
         if refit:
             self.fit_camera()
         c.readout.content = readout(resolved)
@@ -603,10 +591,8 @@ class Session:
         wall = time.monotonic()
         instant = d.ride_instant(now)  # the riding lane's instant (None unless it rides a point)
         lanes = d.lane_pictures(now, layout, instant)
-        moving = PagePicture()
         ends = [lane.ends for lane in lanes]
-        for f, items in zip(self.chart_frames, d.moving_items(now, ends, instant), strict=True):
-            moving += items_picture(items, f, layout.theme, MOVING)
+        moving = moving_picture(self.chart_frames, d.moving_items(now, ends, instant), layout.theme)
         self.renderer_lanes = lanes
         with self.client.atomic():
             self.renderer.update(lanes, moving)
@@ -645,7 +631,7 @@ class Session:
                 r.hide_vectors()
             if abs(r.flat_scale - scale) < 1e-3:
                 return
-        if self._flat_asked == (r.version, scale) or wall - self._still_at < FLAT_AFTER_S:
+        if self._flat_asked == (r.version, scale) or wall - r.still_at < FLAT_AFTER_S:
             return
         self._flat_asked = (r.version, scale)
         picture, version, shade = r.still, r.version, layout.theme.shade

@@ -670,3 +670,27 @@ def _legend_picture(entries: tuple[LegendEntry, ...], box: Rect, theme: Theme) -
         texts.append(PageText(x + swatch + 6.0, z, name, theme.text_px, "center-left"))
         x += w
     return PagePicture(tuple(lines), tuple(dots), tuple(texts))
+
+
+def still_picture(
+    charts: Sequence[Chart], chart_places: Sequence[ChartLayout], legend: Sequence[LegendEntry], box: Rect, theme: Theme
+) -> tuple[tuple[ChartFrame, ...], PagePicture]:
+    """What a page shows that does not move with playback: each chart's picture
+    (:func:`chart_picture`, on its place) and the legend's (in ``box``); and each chart's
+    data -> px frame, on which its moving parts are drawn (:func:`moving_picture`)."""
+    frames: list[ChartFrame] = []
+    picture = PagePicture()
+    for chart, place in zip(charts, chart_places, strict=True):
+        f, p = chart_picture(chart, place, theme)
+        frames.append(f)
+        picture += p
+    return tuple(frames), picture + legend_picture(legend, box, theme)
+
+
+def moving_picture(frames: Sequence[ChartFrame], items: Sequence[Iterable[Item]], theme: Theme) -> PagePicture:
+    """The charts' moving parts at one instant (``items``: each chart's, on its frame), in the
+    :data:`MOVING` layer."""
+    picture = PagePicture()
+    for f, its in zip(frames, items, strict=True):
+        picture += items_picture(its, f, theme, MOVING)
+    return picture

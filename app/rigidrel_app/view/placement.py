@@ -81,9 +81,9 @@ def text_box_px(text: str, size: float) -> tuple[float, float]:
     font ``size``: ``CHAR_EM * size`` per character, subscripts at ``SUB_SCALE`` of that. A
     subscript with a character Unicode has no subscript for is written ``_B1`` on the canvas, at
     full size, and counted so (:func:`~.vocabulary.unicode_subscript`)."""
-    subs = [m.group(1) for m in _TAG.finditer(text) if m.group(1) is not None]
-    subscript = sum(len(s) for s in subs if unicode_subscript(s) is not None)
-    plain = len(_TAG.sub("", text)) + sum(len(s) + 1 for s in subs if unicode_subscript(s) is None)
+    subs = [(len(m.group(1)), unicode_subscript(m.group(1)) is not None) for m in _TAG.finditer(text) if m.group(1)]
+    subscript = sum(n for n, small in subs if small)
+    plain = len(_TAG.sub("", text)) + sum(n + 1 for n, small in subs if not small)
     width = CHAR_EM * size * (plain + SUB_SCALE * subscript)
     return width, LINE_EM * size
 

@@ -128,16 +128,11 @@ class Resolved:
 
 def presets() -> dict[str, Settings]:
     """Every paper figure of every registered scene, by its menu label, in teaching order."""
-    out: dict[str, Settings] = {}
-    for kind, d in rr.scene_descriptions().items():
-        for p in d.presets:
-            out[p.label] = Settings(kind, tuple(p.values.items()), p.frame, 0.0, p.overlay)
-    return out
+    return {label: s for kind in rr.scene_descriptions() for label, s in scene_presets(kind).items()}
 
 
 def scene_presets(kind: str) -> dict[str, Settings]:
-    """The paper figures of one scene, by menu label, in the description's order (menu labels are
-    unique across scenes: :func:`presets` holds these same entries)."""
+    """The paper figures of one scene, by menu label, in the description's order."""
     return {
         p.label: Settings(kind, tuple(p.values.items()), p.frame, 0.0, p.overlay) for p in rr.describe(kind).presets
     }
