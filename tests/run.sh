@@ -18,4 +18,5 @@ python3 -m venv .venv
 .venv/bin/ruff format --check .
 .venv/bin/pyright
 .venv/bin/lint-imports
-.venv/bin/python -m pytest -q "$@"
+# every lane: the fast one (plain `pytest`), slow and browser
+.venv/bin/python -m pytest -q -m "" "$@"

@@ -105,17 +105,23 @@ def _visibility(messages: list[dict[str, Any]], name: str) -> list[bool]:
     return [m["visible"] for m in messages if m["type"] == "SetSceneNodeVisibilityMessage" and m["name"] == name]
 
 
+@pytest.mark.slow  # a served tab
 def test_a_canvas_that_keeps_up_never_gets_the_image(tab: tuple[Session, Recorder]) -> None:
     session, client = tab
     with session.lock:
         session.toggle_play()
-    time.sleep(FLAT_AFTER_S + FLAT_SWAP_S + 1.0)
+    # A slow canvas has its image asked for FLAT_AFTER_S after the still picture and shown
+    # FLAT_SWAP_S later. Frames are sent in order on one socket: once ten frames of playback that
+    # left after that have arrived, an image asked for by then would have arrived before them.
+    image_due = time.monotonic() + FLAT_AFTER_S + FLAT_SWAP_S
+    wait_until(lambda: sum(t > image_due for t in client.stats.lane_times) >= 10, timeout=30)
     with session.lock:
         session.toggle_play()
         assert session.renderer.flat_version is None and session.renderer.vectors_shown
     assert not any(m.get("name") == "/page/flat" for m in client.messages)
 
 
+@pytest.mark.slow  # a served tab
 def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: tuple[Session, Recorder]) -> None:
     session, client = tab
     r = session.renderer
@@ -153,6 +159,7 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
         session.toggle_play()
 
 
+@pytest.mark.slow  # a served tab
 def test_the_same_canvas_at_a_lower_resolution_marks_it_slow(tab: tuple[Session, Recorder]) -> None:
     """The browser lowering its resolution (the same CSS size, fewer rendered pixels) is what marks
     a canvas slow; a new size at another resolution (a window moved to another screen) is not."""

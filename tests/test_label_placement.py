@@ -1,5 +1,10 @@
 """Event labels that overprint nothing: the placement in the pure view layer, at the settings the
-sliders allow, for every registered scene, as the app and the diagram page draw them."""
+sliders allow, for every registered scene, as the app and the diagram page draw them.
+
+The fast lane places the cases the hall found overprinted at each canvas size, and settings drawn
+at random (hypothesis) from the sliders' ranges; the slow lane sweeps every scene with each slider
+at either end, in frames at beta = +-0.99, at each canvas size.
+"""
 
 from __future__ import annotations
 
@@ -7,6 +12,8 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import rigidrel_core as rr
 from rigidrel_app.backends.plotly import label_to_annotation
@@ -53,7 +60,6 @@ def extreme_settings() -> list[Settings]:
     return out
 
 
-SETTINGS = extreme_settings()
 HALL = [
     Settings.of("constant-acceleration", v=0.99),
     replace(presets()["Fig. 1: acceleration to V = 0.6"]),
@@ -97,10 +103,69 @@ def assert_placed_clear(chart: Chart) -> None:
         assert not any(box.meets(n) for n in names), (label.text, "an axis name")
 
 
-@pytest.mark.parametrize("settings", SETTINGS + HALL, ids=setting_id)
-def test_labels_overprint_nothing_at_the_slider_extremes(settings: Settings) -> None:
-    for chart in app_and_page_charts(settings):
+#: The canvases the labels are placed for: the app's own sizes and the diagram page's (``None``),
+#: and a projector's canvas in presenter mode (the panel folded, a lesson's caption above).
+CANVASES = {
+    "app-and-page": None,
+    "presenter-1280x720": (1240.0, 720.0 - 100.0),
+    "presenter-1920x1080": (1880.0, 1080.0 - 120.0),
+}
+
+
+def placed_charts(s: Settings, canvas: tuple[float, float] | None) -> list[Chart]:
+    return app_and_page_charts(s) if canvas is None else placed_on_the_canvas(s, *canvas, presenter=True)
+
+
+@pytest.mark.parametrize("canvas", CANVASES.values(), ids=CANVASES.keys())
+@pytest.mark.parametrize("settings", HALL, ids=setting_id)
+def test_the_hall_cases_overprint_nothing(settings: Settings, canvas: tuple[float, float] | None) -> None:
+    for chart in placed_charts(settings, canvas):
         assert_placed_clear(chart)
+
+
+@st.composite
+def slider_settings(draw: st.DrawFn) -> Settings:
+    """Any scene, each slider anywhere in its range (log sliders over their decades), in a frame of
+    any beta the slider allows; combinations the scene refuses are drawn again."""
+    kind = draw(st.sampled_from(sorted(rr.scene_descriptions())))
+    s = Settings(kind)
+    for p in rr.describe(kind).parameters:
+        if p.slider is not None:
+            lo, hi = p.slider.lo, p.slider.hi
+            if p.slider.scale == "log":
+                value = draw(
+                    st.floats(np.log10(lo), np.log10(hi)).map(lambda u, lo=lo, hi=hi: min(max(10.0**u, lo), hi))
+                )
+            else:
+                value = draw(st.floats(lo, hi))
+            s = s.with_value(p.name, value)
+    s = replace(s, frame=CUSTOM_FRAME, beta=draw(st.floats(-0.99, 0.99)))
+    if isinstance(resolve(s), str):
+        return draw(slider_settings())
+    return s
+
+
+@settings(max_examples=12, deadline=None, derandomize=True)
+@given(slider_settings(), st.sampled_from(list(CANVASES.values())))
+def test_labels_overprint_nothing_anywhere_the_sliders_go(
+    settings: Settings, canvas: tuple[float, float] | None
+) -> None:
+    for chart in placed_charts(settings, canvas):
+        assert_placed_clear(chart)
+
+
+@pytest.mark.slow  # every scene at every slider's ends, in three frames, at three canvases: about 10 s in all
+@pytest.mark.parametrize("canvas", CANVASES.values(), ids=CANVASES.keys())
+@pytest.mark.parametrize("kind", sorted(rr.scene_descriptions()))
+def test_labels_overprint_nothing_at_the_slider_extremes(kind: str, canvas: tuple[float, float] | None) -> None:
+    cases = [s for s in extreme_settings() if s.scene == kind]
+    assert cases
+    for s in cases:
+        for chart in placed_charts(s, canvas):
+            try:
+                assert_placed_clear(chart)
+            except AssertionError as e:
+                raise AssertionError(f"{setting_id(s)}: {e}") from e
 
 
 def test_the_hall_cases_overprinted_before_placement() -> None:
@@ -239,15 +304,6 @@ def placed_on_the_canvas(s: Settings, width: float, height: float, presenter: bo
         labels = [i for i in chart.items if isinstance(i, Label) and i.movable]
         assert all(MIN_TEXT_PX <= label.size <= layout.theme.text_px for label in labels)
     return list(d.charts)
-
-
-@pytest.mark.parametrize("settings", SETTINGS + HALL, ids=setting_id)
-@pytest.mark.parametrize("canvas", [(1240.0, 720.0 - 100.0), (1880.0, 1080.0 - 120.0)], ids=["1280x720", "1920x1080"])
-def test_labels_drawn_at_the_presenter_size_overprint_nothing(settings: Settings, canvas: tuple[float, float]) -> None:
-    """Presenter mode on a projector (the panel folded away, a lesson's caption above): the labels'
-    boxes are reserved at the size the canvas draws them at, smaller only where the plot is crowded."""
-    for chart in placed_on_the_canvas(settings, *canvas, presenter=True):
-        assert_placed_clear(chart)
 
 
 def test_a_crowded_plot_steps_its_labels_down() -> None:

@@ -97,6 +97,7 @@ def test_scenario_notice_names_the_flag() -> None:
     assert 'data-s="a &#x27;b c&#x27;"' in scenario_html("a 'b c'")  # quoted for its attribute
 
 
+@pytest.mark.slow  # a new interpreter
 @pytest.mark.parametrize(
     ("text", "expected"),
     [
@@ -117,6 +118,7 @@ def test_serve_refuses_a_bad_lesson_before_serving(tmp_path: Path, text: str, ex
     assert run.stderr.count("\n") == 1 and expected in run.stderr, run.stderr
 
 
+@pytest.mark.slow  # a new interpreter
 def test_follow_needs_a_lesson() -> None:
     run = subprocess.run(
         [sys.executable, "-m", "rigidrel_app.cli", "serve", "--follow"], capture_output=True, text=True, timeout=120

@@ -44,6 +44,7 @@ def notebook_block() -> str:
     return m.group(1)
 
 
+@pytest.mark.slow  # records through a viser server
 def test_readme_notebook_example_runs() -> None:
     namespace: dict[str, object] = {}
     exec(compile(notebook_block(), "README.md", "exec"), namespace)
@@ -281,6 +282,7 @@ def test_a_dark_diagram_and_lesson_flip_every_colour(monkeypatch: pytest.MonkeyP
         assert_flipped(light_step, dark_step)
 
 
+@pytest.mark.slow  # records through a viser server
 def test_a_dark_recording_is_the_exports_dark_recording() -> None:
     scene = rr.build_scene("wall-collision", v=0.6)
     dark, light = recording(scene, seconds=0.2, fps=10.0, theme="dark"), recording(scene, seconds=0.2, fps=10.0)

@@ -41,6 +41,7 @@ def labels_as_sent(messages: list[dict[str, Any]], prefix: str) -> dict[str, dic
     return nodes
 
 
+@pytest.mark.slow  # a served tab
 def test_a_label_changes_in_one_message_and_the_browser_and_handle_agree(tab: tuple[Session, Recorder]) -> None:
     session, client = tab
     texts = _Texts(session.client.scene, "/test/text")
@@ -113,6 +114,7 @@ def camera_messages_of(session: Session, client: Recorder, act: Any) -> list[str
     return [m["type"] for m in client.messages[n:end] if m["type"] in CAMERA]
 
 
+@pytest.mark.slow  # a served tab
 def test_a_redraw_with_auto_fit_sends_no_camera_when_it_fits_and_a_reset_always_does(
     tab: tuple[Session, Recorder],
 ) -> None:

@@ -45,6 +45,7 @@ def test_table_lists_the_generators_cases_in_order() -> None:
         assert committed["params"] == {k: None if v is None else float(v).hex() for k, v in params.items()}
 
 
+@pytest.mark.slow  # a new interpreter
 def test_reference_never_imports_the_core_nor_changes_mpmaths_precision() -> None:
     """Import-linter-style: the reference package, its builders and slices, in a fresh interpreter,
     load no rigidrel_core module; mpmath's global precision stays at its default throughout."""

@@ -284,6 +284,12 @@ def _fps(clients: list[LightClient], seconds: float) -> list[float]:
     return [(c.stats.lane_frames - n) / span for c, n in zip(clients, n0, strict=True)]
 
 
+def _playing(clients: list[LightClient], frames: int = 10) -> None:
+    """Wait until each client has received ``frames`` more frames of moving rods (warmed up)."""
+    n0 = [c.stats.lane_frames for c in clients]
+    wait_until(lambda: all(c.stats.lane_frames - n >= frames for c, n in zip(clients, n0, strict=True)), timeout=30)
+
+
 def test_stalled_clients_do_not_slow_the_others() -> None:
     """Tabs that stop reading must not hold up the ones that read. Relative to the same readers
     without them, measured in this process (the absolute rate is the load benchmark's job)."""
@@ -292,12 +298,12 @@ def test_stalled_clients_do_not_slow_the_others() -> None:
         readers = [h.connect() for _ in range(3)]
         for _, s in readers:
             s.toggle_play()
-        time.sleep(1.0)
+        _playing([c for c, _ in readers])
         baseline = min(_fps([c for c, _ in readers], 4.0))
         stalled = [h.connect(read=False) for _ in range(3)]
         for _, s in stalled:
             s.toggle_play()
-        time.sleep(1.0)
+        _playing([c for c, _ in readers])  # the readers go on with the stalled tabs playing too
         with_stalled = min(_fps([c for c, _ in readers], 4.0))
         # held up, they would freeze; the bound is loose as in-process windows of the same readers vary
         # by a quarter on this shared machine (26 to 40 fps in consecutive windows, nothing changed)
@@ -312,12 +318,12 @@ def test_disconnects_and_reconnects_leak_nothing() -> None:
     try:
         keep, keep_session = h.connect()
         keep_session.toggle_play()
-        time.sleep(0.5)
+        _playing([keep])
         threads_before = threading.active_count()
         for _ in range(8):
             c, s = h.connect()
             s.toggle_play()
-            time.sleep(0.3)  # mid-animation
+            _playing([c], frames=3)  # mid-animation
             c.stop()
             h.run(c.close())
             h.clients.remove(c)
@@ -343,7 +349,7 @@ def test_a_flooding_client_is_dropped_and_the_others_keep_playing() -> None:
         for _, s in readers:
             s.toggle_play()
         flooder, flooding = h.connect()
-        time.sleep(1.0)
+        _playing([c for c, _ in readers])
         baseline = min(_fps([c for c, _ in readers], 3.0))
         flooding_for = h.loop.start(flood(flooder, "V", rate=10_000.0, seconds=5.0))
         t0 = time.monotonic()

@@ -184,6 +184,7 @@ def test_a_riding_lesson_step_rides_live() -> None:
     assert "default frame" not in caption_html(step)
 
 
+@pytest.mark.slow  # a new interpreter
 @pytest.mark.parametrize(
     ("args", "message"),
     [

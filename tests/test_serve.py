@@ -129,7 +129,7 @@ def test_bad_serve_arguments(args: list[str]) -> None:
 
 def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
     """SIGINT/SIGTERM while tabs are playing and one stopped reading: exit 0, no traceback, in time."""
-    from tests.viser_client import ClientLoop, LightClient
+    from tests.viser_client import ClientLoop, LightClient, wait_until
 
     loop = ClientLoop()  # pytest may already run an event loop in this thread: playwright's
     try:
@@ -139,7 +139,11 @@ def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
                 for c in clients:
                     loop.run(c.connect(), timeout=30)
                 readers = [loop.start(c.run(30)) for c in clients]
-                time.sleep(2.0)
+                # the reading tabs press Play once their controls have come, and their rods move
+                for c in clients[:3]:
+                    wait_until(lambda c=c: "Play" in c.gui_uuid, timeout=30)
+                    loop.run(c.set_value("Play", True), timeout=30)
+                wait_until(lambda clients=clients: all(c.stats.lane_frames > 1 for c in clients[:3]), timeout=30)
                 t0 = time.monotonic()
                 out = stop(proc, sig)
                 took = time.monotonic() - t0

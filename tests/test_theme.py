@@ -115,6 +115,7 @@ def test_serve_takes_a_theme() -> None:
     assert build_parser().parse_args(["serve", "--theme", "dark", "rod-collision"]).theme == "dark"
 
 
+@pytest.mark.slow  # a new interpreter
 def test_serve_refuses_an_unknown_theme_in_one_line() -> None:
     done = subprocess.run(
         [sys.executable, "-m", "rigidrel_app.cli", "serve", "--theme", "purple"],
@@ -178,6 +179,7 @@ def test_plotly_colour_strings_of_every_form_are_flipped() -> None:
     assert shaded_figure({"data": [{"color": "toself"}]}, "dark")["data"][0]["color"] == "toself"  # not a colour
 
 
+@pytest.mark.slow  # records through a viser server
 def test_the_dark_diagram_page_and_lanes_recording_are_dark() -> None:
     from rigidrel_app.export.diagram_html import diagram_html
     from rigidrel_app.export.recording import record_lanes_html

@@ -7,12 +7,15 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pytest
 from PIL import Image
 
 from rigidrel_app.live.server import App
 from rigidrel_app.view.state import presets
 from tests.browser.test_app_browser import AppPage, show
 from tests.viser_client import wait_until
+
+pytestmark = pytest.mark.browser
 
 #: Largest mean difference (0-255 per channel) between the two forms over the diagrams (about
 #: 7.7 measured; the image one pixel off gives 10 to 11, upside down 34).

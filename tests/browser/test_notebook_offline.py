@@ -13,13 +13,13 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-import nbformat
 import numpy as np
 import pytest
-from nbclient import NotebookClient
 
 from rigidrel_app.notebook.live_state import figure_arrays, live_figure, start
 from tests.viser_client import wait_until
+
+pytestmark = pytest.mark.slow  # a Jupyter kernel runs the notebook; the tests that open it in Chromium are browser too
 
 CELLS = [
     "import rigidrel_core as rr\nfrom rigidrel_app.notebook import diagram, lesson",
@@ -46,6 +46,9 @@ STATIC_CELLS = 4
 
 @pytest.fixture(scope="module")
 def executed(tmp_path_factory: pytest.TempPathFactory) -> Any:
+    import nbformat  # imported here: nbformat takes seconds to import, and the fast lane collects this file
+    from nbclient import NotebookClient
+
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in CELLS])
     # no proxy, no route: a kernel that reached for the network would fail, not hang
     NotebookClient(
@@ -123,6 +126,8 @@ def _free_port() -> int:
 @pytest.fixture
 def jupyterlab(tmp_path: Path) -> Iterator[str]:
     """A JupyterLab on 127.0.0.1 (no token: only this machine reaches it) serving ``live.ipynb``."""
+    import nbformat
+
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(LIVE_CELL)])
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
     nbformat.write(nb, tmp_path / "live.ipynb")
@@ -179,7 +184,6 @@ def _set_slider(page: Any, label: str, value: str) -> None:
 
 
 @pytest.mark.browser
-@pytest.mark.slow
 def test_the_live_view_in_jupyterlab_offline(browser: Any, jupyterlab: str, shots: Path) -> None:
     context = browser.new_context(viewport={"width": 1280, "height": 720})
     elsewhere: list[str] = []

@@ -1,0 +1,3 @@
+"""The suite's plugins: the lanes and their check (:mod:`tests.lanes`)."""
+
+pytest_plugins = ["tests.lanes"]
