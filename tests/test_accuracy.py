@@ -1,6 +1,6 @@
 """rigidrel_core against the independent 50-digit reference (tests/reference/make_reference.py).
 
-The reference (rigidrel_app.bench.reference, which never imports the core) solves each scene
+The reference (tests.reference.oracle, which never imports the core) solves each scene
 by the paper's route in mpmath, slices worldlines by bisection on lab time and reads each
 material point's clock there (its proper time, integrated piece by piece in the lab, 0 where
 the point starts changing velocity); the core evaluates closed forms in the frame.

@@ -18,10 +18,10 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from rigidrel_app.bench.cli import run
-from rigidrel_app.bench.config import SMOKE
-from rigidrel_app.bench.methods import MethodName
-from rigidrel_app.bench.scenes import Regime
+from benchmarks.study.cli import run
+from benchmarks.study.config import SMOKE
+from benchmarks.study.methods import MethodName
+from benchmarks.study.scenes import Regime
 
 ROOT = Path(__file__).resolve().parents[1]
 CHARTS = ("speed_accuracy", "stability_maps", "sampling", "throughput")
@@ -141,3 +141,18 @@ def test_empty_out_is_one_line_naming_out_and_exit_status_2(tmp_path: Path, comm
     assert "--out" in lines[0] and "Traceback" not in proc.stderr
     assert proc.stdout == ""
     assert list(tmp_path.iterdir()) == [], "nothing is written into the current folder"
+
+
+def test_bench_outside_a_checkout_says_where_it_runs(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    """Installed from the wheel (no benchmarks/ beside the package): one line, status 2, no traceback."""
+    from rigidrel_app import cli
+
+    assert cli.checkout_root() == ROOT  # the suite runs from the checkout
+    monkeypatch.setattr(cli, "checkout_root", lambda: None)
+    with pytest.raises(SystemExit) as exit_:
+        cli.main(["bench", "--quick", "--out", str(tmp_path / "out")])
+    assert exit_.value.code == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "source checkout" in err and "Traceback" not in err

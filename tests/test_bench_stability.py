@@ -15,9 +15,9 @@ import warnings
 import numpy as np
 import pytest
 
-from rigidrel_app.bench import scenes as bs
-from rigidrel_app.bench.methods import core, ivp, polyline, textbook
-from rigidrel_app.bench.methods.mpmath_slices import ReferenceSlices, reference_slices, relative_errors
+from benchmarks.study import scenes as bs
+from benchmarks.study.methods import core, ivp, polyline, textbook
+from benchmarks.study.methods.mpmath_slices import ReferenceSlices, reference_slices, relative_errors
 
 #: float64's unit roundoff; "losing k digits" means an error of at least 10^k of it.
 UNIT_ROUNDOFF = 2.0**-53

@@ -13,7 +13,8 @@ from pathlib import Path
 import mpmath as mp
 import pytest
 
-from rigidrel_app.bench.reference import (
+from tests.reference import make_reference
+from tests.reference.oracle import (
     REFERENCE_DIGITS,
     REFERENCES,
     boost_event,
@@ -21,7 +22,6 @@ from rigidrel_app.bench.reference import (
     proper_time_by_quadrature,
     reference_precision,
 )
-from tests.reference import make_reference
 
 TABLE = Path(__file__).parent / "reference" / "reference.json"
 
@@ -54,7 +54,7 @@ def test_reference_never_imports_the_core_nor_changes_mpmaths_precision() -> Non
         import sys
         import mpmath as mp
         dps = mp.mp.dps
-        from rigidrel_app.bench.reference import REFERENCES, F, boost_event, frame_slice
+        from tests.reference.oracle import REFERENCES, F, boost_event, frame_slice
         assert mp.mp.dps == dps, ("import", mp.mp.dps)
         for ref in REFERENCES.values():
             scene = ref.build((0.0, 1.0), **ref.cases[0].params)
@@ -91,7 +91,7 @@ def test_every_registered_scene_has_an_independent_reference() -> None:
     """A scene is its constructor, its description and its reference entry: the 50-digit reference
     has a builder for every scene in the registry, and the committed table has cases of each."""
     import rigidrel_core as rr
-    from rigidrel_app.bench.reference import BUILDERS
+    from tests.reference.oracle import BUILDERS
 
     table = json.loads((Path(__file__).parent / "reference" / "reference.json").read_text())
     kinds = set(rr.scene_descriptions())

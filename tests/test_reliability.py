@@ -342,7 +342,7 @@ def test_disconnects_and_reconnects_leak_nothing() -> None:
 def test_a_flooding_client_is_dropped_and_the_others_keep_playing() -> None:
     """A client sending 10,000 control values a second (each a redraw if acted on) is dropped once it
     spends its message budget; the tabs that play on keep playing (relative to themselves just
-    before, measured in this process; the absolute rate is ``python -m tests.load --flood``'s job)."""
+    before, measured in this process; the absolute rate is ``python -m benchmarks.load --flood``'s job)."""
     h = Harness()
     try:
         readers = [h.connect() for _ in range(3)]

@@ -167,8 +167,8 @@ def test_each_path_matches_its_reference_at_any_size(
 
 
 def test_the_benchmark_cases_match() -> None:
-    """The cases of tests/benchmarks/bench_core.py at a tenth of their size, sorted and shuffled."""
-    from tests.benchmarks.bench_core import curved_case, paper_case
+    """The cases of benchmarks/bench_core.py at a tenth of their size, sorted and shuffled."""
+    from benchmarks.bench_core import curved_case, paper_case
 
     rng = np.random.default_rng(0)
     for scene, frame, t in (paper_case(100_000), curved_case(100_000)):

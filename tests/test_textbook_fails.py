@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from rigidrel_app.bench.paper import textbook_collision, textbook_gamma
+from benchmarks.study.paper import textbook_collision, textbook_gamma
 from tests.test_accuracy import CASES, build, frame
 
 #: The core holds this (relative) ...

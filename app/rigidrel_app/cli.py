@@ -8,11 +8,13 @@ in ``--help``. Every bad argument ends in one line on stderr and exit status 2.
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import sys
 import textwrap
 import time
 from collections.abc import Sequence
+from pathlib import Path
 from typing import Any, NoReturn
 
 import rigidrel_core as rr
@@ -358,12 +360,33 @@ def cmd_figures(args: argparse.Namespace) -> int:
     return 0
 
 
+def checkout_root() -> Path | None:
+    """The source checkout this package runs from (an editable install), or None for a wheel.
+
+    The benchmarks (``benchmarks/``) and the 50-digit oracle (``tests/reference/oracle/``) live in the
+    checkout, beside ``app/rigidrel_app``; the wheel ships neither.
+    """
+    root = Path(__file__).resolve().parents[2]
+    study, oracle = root / "benchmarks" / "study" / "cli.py", root / "tests" / "reference" / "oracle" / "__init__.py"
+    return root if study.is_file() and oracle.is_file() else None
+
+
 def cmd_bench(args: argparse.Namespace) -> int:
+    prog = "rigidrel bench"
+    root = checkout_root()
+    if root is None:
+        fail(
+            prog,
+            "runs from a source checkout (its benchmarks/ are not installed): clone the repository, "
+            "pip install -e '.[bench]' there and run it again",
+        )
+    if str(root) not in sys.path:
+        sys.path.insert(0, str(root))
     try:
-        from .bench.cli import run_bench
+        study = importlib.import_module("benchmarks.study.cli")
     except ImportError as exc:  # scipy / spacetimelib / mpmath are the [bench] extra
-        fail("rigidrel bench", f"{exc.name or exc} is missing: pip install -e '.[bench]'")
-    return run_bench(quick=args.quick, out=args.out)
+        fail(prog, f"{exc.name or exc} is missing: pip install -e '.[bench]'")
+    return study.run_bench(quick=args.quick, out=args.out)
 
 
 def start_settings(prog: str, args: argparse.Namespace) -> Settings | None:

@@ -1,7 +1,7 @@
 """Generate the 50-digit reference table for rigidrel_core's accuracy tests.
 
 Independent of the core by construction: the scenes are those of
-:mod:`rigidrel_app.bench.reference` (one module per scene family; it never imports
+:mod:`tests.reference.oracle` (one module per scene family; it never imports
 rigidrel_core), which solves each scene by the paper's own route in mpmath at 50 digits,
 follows the paper's lab formulas point by point and finds a slice at frame time ``t'`` by
 bisection on lab time ``t`` of ``gamma (t - beta x(t)) = t'`` (the core never inverts
@@ -22,7 +22,7 @@ clocks, to keep the table near 6 MB), and writes the table.
 Per case: kind, group, parameters, material fractions, rest lengths, final velocities and
 their gaps to light speed, derived numbers, the lab events, and the lab arrival of a light
 signal from the origin and from each named event at every material point (``"signals_lab"``,
-:func:`~rigidrel_app.bench.reference.signal_arrival`; a frame's arrival is the boosted one);
+:func:`~tests.reference.oracle.signal_arrival`; a frame's arrival is the boosted one);
 per frame: its velocity and role, the sample times, and at each time the positions and clock
 readings (``"proper_times"``) of every material point, each rod's end-to-end equal-time length,
 and the events seen there.
@@ -50,7 +50,7 @@ from typing import Any
 
 import mpmath as mp
 
-from rigidrel_app.bench.reference import (
+from tests.reference.oracle import (
     BUILDERS,
     PARADOXES,
     REFERENCE_DIGITS,

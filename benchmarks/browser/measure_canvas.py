@@ -1,7 +1,7 @@
 """Measure one tab of the app in headless Chromium: bytes until the first picture, playback fps, and
 slider-to-redraw time. A script, not a test (numbers vary with the machine's load):
 
-    python -m tests.browser.measure_canvas [--width 1280 --height 720 --seconds 5]
+    python -m benchmarks.browser.measure_canvas [--width 1280 --height 720 --seconds 5]
 
 * bytes: websocket payload the page receives from connecting until the server has sent its first
   complete drawing and 1 s has passed quietly.

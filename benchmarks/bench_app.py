@@ -1,6 +1,6 @@
 """Speed of the app, server side and in the browser (a script that prints figures, not a test).
 
-    python -m tests.benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--phases] [--drawing]
+    python -m benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--phases] [--drawing]
 
 * rebuild: a slider change to every drawing rebuilt (scene, diagrams, lanes), median
   per scene, timed in the server process (target <= 16 ms); ``--phases`` prints only where
@@ -30,9 +30,9 @@ from typing import Any
 import numpy as np
 
 import rigidrel_core as rr
+from benchmarks import load
 from rigidrel_app.live.server import ANIMATION_HZ, App
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings, resolve
-from tests import load
 from tests.viser_client import light_tab, wait_until
 
 
@@ -301,7 +301,7 @@ def bench_drawing(repeats: int = 2, quiet: float = 0.15) -> dict[str, float]:
 
 
 def bench_animation(n_clients: int, seconds: float) -> dict[str, float]:
-    """The load benchmark's run (tests/load.py) at the app's own animation rate."""
+    """The load benchmark's run (benchmarks/load.py) at the app's own animation rate."""
     r = load.run(n_clients, seconds, ANIMATION_HZ)
     n = n_clients
     return {

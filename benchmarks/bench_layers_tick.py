@@ -1,7 +1,7 @@
 """What one playback frame costs the server with and without the light-signal layer (a script
 that prints figures, not a test).
 
-    python -m tests.benchmarks.bench_layers_tick
+    python -m benchmarks.bench_layers_tick
 
 Times what ``Session.draw_now`` computes before it sends anything: both lanes' pictures (with the
 light pulses when the signals are shown), the diagrams' moving items and their page pictures, at

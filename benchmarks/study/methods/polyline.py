@@ -1,7 +1,7 @@
 """Method 4: spacetimelib (PyPI, a real peer) with polyline worldlines.
 
 spacetimelib has no hyperbolas: a worldline is a polyline through vertices ``[t, x]``,
-straight between them. Each accelerated piece of :mod:`rigidrel_app.bench.paper` becomes ``N``
+straight between them. Each accelerated piece of :mod:`benchmarks.study.paper` becomes ``N``
 vertices at equally spaced lab times from its start to its stop event, on the printed
 formula; before the first and after the last vertex the worldline continues with the
 paper's velocities (``past_vel_s``, ``future_vel_s``). A kicked end is one vertex.

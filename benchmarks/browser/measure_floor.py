@@ -1,11 +1,11 @@
 """The floor under the app's playback rate: how fast headless Chromium (software WebGL) draws a
 viser page that holds almost nothing. A script, not a test (numbers vary with the machine's load):
 
-    python -m tests.browser.measure_floor [--labels 0 30 60 120] [--width 1280 --height 720]
+    python -m benchmarks.browser.measure_floor [--labels 0 30 60 120] [--width 1280 --height 720]
 
 A bare viser server (none of rigidrel's page) shows one box that moves 40 times a second, as the
 app's playback does, and ``--labels`` screen-space labels that never change. The frames per second
-are counted as :mod:`tests.browser.measure_canvas` counts them (``requestAnimationFrame`` ticks in
+are counted as :mod:`benchmarks.browser.measure_canvas` counts them (``requestAnimationFrame`` ticks in
 which the page handled a new websocket message), over ``--seconds`` after the page has drawn for
 two seconds. What an empty page reaches is the most the app's page, which adds its lanes, diagrams
 and about a hundred labels on top, can reach in this browser.
@@ -20,8 +20,8 @@ import time
 import numpy as np
 import viser
 
+from benchmarks.browser.measure_canvas import COUNT_FRAMES
 from tests.browser.conftest import launch_chromium
-from tests.browser.measure_canvas import COUNT_FRAMES
 from tests.viser_client import wait_until
 
 #: The app's playback rate (pictures sent per second).

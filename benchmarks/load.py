@@ -1,10 +1,10 @@
 """Load benchmark: many lightweight clients playing at once (not a test: machines are noisy).
 
-    python -m tests.load --clients 30 --seconds 60 --fps 30
-    python -m tests.load --find-max --seconds 20 --fps 30      # the most clients held at 25 fps
-    python -m tests.load --churn 10 --clients 30               # 10 rounds of 30 joining and leaving
-    python -m tests.load --flood --clients 20 --seconds 5      # one more sends 10,000 values a second
-    python -m tests.load --soak 20                             # a 20-minute lecture (30 clients)
+    python -m benchmarks.load --clients 30 --seconds 60 --fps 30
+    python -m benchmarks.load --find-max --seconds 20 --fps 30      # the most clients held at 25 fps
+    python -m benchmarks.load --churn 10 --clients 30               # 10 rounds of 30 joining and leaving
+    python -m benchmarks.load --flood --clients 20 --seconds 5      # one more sends 10,000 values a second
+    python -m benchmarks.load --soak 20                             # a 20-minute lecture (30 clients)
 
 The server runs in this process with its animation loop at ``--fps``; the clients (viser's
 websocket protocol, tests/viser_client.py, no browsers) run in another process so they do

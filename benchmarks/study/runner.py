@@ -1,6 +1,6 @@
 """Measure every method on the same scenes, frames and frame times, in one process run.
 
-For each case (:data:`rigidrel_app.bench.scenes.CASES`) the 50-digit reference is computed once
+For each case (:data:`benchmarks.study.scenes.CASES`) the 50-digit reference is computed once
 (that call is also the mpmath method's timing); then every other method setting is
 called on exactly the same ``(scene, frame velocity, times)``:
 

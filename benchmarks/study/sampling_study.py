@@ -31,11 +31,10 @@ import numpy as np
 import numpy.typing as npt
 
 import rigidrel_core as rr
-
-from ..backends.plotly import APP_CONFIG, SplicedFigure
-from ..view.sampling import ADAPTIVE, TOLERANCE_PX, Sampled, Sampler
-from ..view.scene_view import LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX, Drawn, build_drawing
-from ..view.state import Resolved, Settings, presets, resolve
+from rigidrel_app.backends.plotly import APP_CONFIG, SplicedFigure
+from rigidrel_app.view.sampling import ADAPTIVE, TOLERANCE_PX, Sampled, Sampler
+from rigidrel_app.view.scene_view import LENGTH_ASPECT, PLOT_ASPECT, PLOT_PANEL_PX, Drawn, build_drawing
+from rigidrel_app.view.state import Resolved, Settings, presets, resolve
 
 FloatArray = npt.NDArray[np.float64]
 SamplerKind = Literal["adaptive", "fixed"]

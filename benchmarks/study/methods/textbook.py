@@ -1,6 +1,6 @@
 """Method 2: the textbook formulas as the paper prints them, in float64, lab first and then boosted.
 
-For each end (:mod:`rigidrel_app.bench.paper`) and each frame time ``t'``:
+For each end (:mod:`benchmarks.study.paper`) and each frame time ``t'``:
 
 1. find the lab time ``t`` of the event with ``gamma (t - beta x(t)) = t'``, in closed form per
    piece: on an inertial piece ``x = x_0 + v (t - t_0)``,

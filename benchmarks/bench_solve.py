@@ -1,6 +1,6 @@
 """Per-scene solve and construction times, before and after, in one run (not a test: machines are noisy).
 
-    python -m tests.benchmarks.bench_solve [--repeat 41] [--number 200] [--baseline REV] [--only TEXT]
+    python -m benchmarks.bench_solve [--repeat 41] [--number 200] [--baseline REV] [--only TEXT]
                                            [--clock cpu|wall] [--json] [--profile]
 
 "Before" is ``rigidrel_core`` as of git revision ``--baseline`` (default: the last revision that

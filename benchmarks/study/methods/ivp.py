@@ -12,7 +12,7 @@ What a user without closed forms would write (c = 1):
    would be the whole rod for a rod of length 1e-6), dense output on, and a terminal event
    when ``v`` reaches the final velocity. ``1 - v^2`` is clipped at 0 so that a stage
    overshooting light speed gives ``dv/dt = 0`` instead of NaN. The start events, proper
-   accelerations and final velocities are the paper's, in float64 (:mod:`rigidrel_app.bench.paper`):
+   accelerations and final velocities are the paper's, in float64 (:mod:`benchmarks.study.paper`):
    the integrator replaces only the closed-form worldlines. Kicked ends jump and need no
    integration. Before the start and after the event the end coasts (straight lines).
 2. Slice at frame times ``t'``: on the straight lines invert ``t' = gamma (t - beta x)`` in

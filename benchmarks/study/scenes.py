@@ -149,7 +149,7 @@ def sample_times(case: BenchCase, n: int) -> FloatArray:
     (``"window"``), or geometrically spaced out to +-1e6 rest lengths (``"long"``).
 
     The core only chooses *where* to look (its event times and window); the values there
-    come from each method, and the reference from :mod:`rigidrel_app.bench.reference`.
+    come from each method, and the reference from :mod:`tests.reference.oracle`.
     """
     scene = case.scene.core()
     frame = case.frame

@@ -1,6 +1,6 @@
 """Speed and size of the exports (a script that prints figures, not a test).
 
-    python -m tests.benchmarks.bench_export [--seconds 10] [--fps 30]
+    python -m benchmarks.bench_export [--seconds 10] [--fps 30]
 
 Targets: the 3-D HTML of a 10 s animation at 30 fps is written in <= 10 s and
 stays under 3 MB. Also reports the slider page, PNG/SVG (one kaleido start), GIF, MP4.

@@ -1,11 +1,11 @@
 """Speed of rigidrel_core's position sampler, against bare numpy doing the same amount of work.
 
-    python -m tests.benchmarks.bench_core [--n 1000000] [--repeat 21] [--json]
+    python -m benchmarks.bench_core [--n 1000000] [--repeat 21] [--json]
 
 A script that prints figures, not a test: the machine is shared and noisy, so only the
 ratios of one run mean anything. To time another copy of the core with this script, run
 it by path with that copy first on the path:
-``PYTHONPATH=/other/checkout python tests/benchmarks/bench_core.py`` (the first line says
+``PYTHONPATH=/other/checkout python benchmarks/bench_core.py`` (the first line says
 which ``rigidrel_core`` was imported).
 
 **Target.** ``scene.positions(t, frame)`` for 2 rods x 2 ends at ``n = 1e6`` times costs at

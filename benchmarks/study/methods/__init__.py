@@ -1,6 +1,6 @@
 """The methods compared by ``rigidrel bench``, one module each, with one signature.
 
-Every method takes a :class:`~rigidrel_app.bench.scenes.BenchScene`, a frame velocity ``beta``
+Every method takes a :class:`~benchmarks.study.scenes.BenchScene`, a frame velocity ``beta``
 (c = 1, ``|beta| < 1``, a float: the core's method makes its ``rr.Frame`` inside the call) and an
 array of the frame's times ``t'``, and returns ``x'`` of [left end, right end] of each rod at
 those times: shape ``(n_rods, 2, len(t'))``, float64.

@@ -87,7 +87,7 @@ def _environment() -> dict[str, Any]:
 
 
 #: Errors within this factor of each other count as equal (and so do all errors at float64's
-#: rounding level, :data:`~rigidrel_app.bench.methods.mpmath_slices.ROUNDING_LEVEL`).
+#: rounding level, :data:`~benchmarks.study.methods.mpmath_slices.ROUNDING_LEVEL`).
 EQUAL_ERROR_FACTOR = 10.0
 
 

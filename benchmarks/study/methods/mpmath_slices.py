@@ -1,6 +1,6 @@
 """Method 5: mpmath at 50 digits, the accuracy limit and the reference for all the others.
 
-The paper's lab formulas and scene solutions at 50 digits (:mod:`rigidrel_app.bench.reference`),
+The paper's lab formulas and scene solutions at 50 digits (:mod:`tests.reference.oracle`),
 each end sliced at every frame time by bracketing root finding on lab time
 (Anderson-Bjorck, bracket below ``1e-48`` of its scale). The values are kept as
 double-double ``hi + lo`` so that the other methods' errors are measured below one
@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..reference import BUILDERS, F, SliceSolver, frame_slice, reference_precision
+from tests.reference.oracle import BUILDERS, F, SliceSolver, frame_slice, reference_precision
+
 from ..scenes import BenchScene
 from . import FloatArray
 

@@ -1,0 +1,1 @@
+"""Measurements in Chromium: the canvas's frame rate against a bare viser page, and its floor."""
