@@ -89,3 +89,17 @@ def test_every_scene_default_round_trips(kind: str) -> None:
     line = format_scenario(settings, 0.25)
     back = parse_scenario(line)
     assert back.settings == settings and back.t == 0.25
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_rigidrel_serve_reads_every_line_the_app_writes(kind: str) -> None:
+    """One grammar: the line the Scenario folder shows, pasted after ``rigidrel serve``, opens the
+    same state the scenario box would (every option of a scenario line is an option of serve)."""
+    import shlex
+
+    from rigidrel_app.cli import build_parser, start_scenario
+
+    settings = Settings(kind).with_layers(frozenset(Layer))
+    for line in (format_scenario(settings, 0.25), format_scenario(settings.riding(0, 0.5), -0.5)):
+        args = build_parser().parse_args(["serve", *shlex.split(line)])
+        assert start_scenario("rigidrel serve", args) == parse_scenario(line), line

@@ -20,9 +20,17 @@ from typing import Any, NoReturn
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
-from .view.scenario import ride_from_text
+from .view.scenario import (
+    FRAME_HELP,
+    Scenario,
+    ScenarioError,
+    add_scenario_options,
+    add_scene_options,
+    flag,
+    scenario_from_args,
+)
 from .view.signals import signals_in, verdict_lines
-from .view.state import Settings, beta_problem, build, format_value, frame_from_text, settings_for
+from .view.state import beta_problem, format_value, frame_from_text
 from .view.vocabulary import SHADES, Shade
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
@@ -47,10 +55,6 @@ class SceneParser(OneLineParser):
     scene_kind = ""
 
 
-def _flag(p: rr.Parameter) -> str:
-    return "--" + p.name.replace("_", "-")
-
-
 def _number(text: str) -> float:
     try:
         return float(text)
@@ -58,33 +62,24 @@ def _number(text: str) -> float:
         raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
 
 
-def _number_or_none(text: str) -> float | None:
-    if text.strip().lower() in ("none", "impulse", "impulsive"):
-        return None
-    return _number(text)
-
-
 def add_scene_subparsers(
-    parser: argparse.ArgumentParser, common: list[SceneParser], frame_help: str, required: bool = True
+    parser: argparse.ArgumentParser,
+    common: list[SceneParser],
+    frame_help: str,
+    required: bool = True,
+    scenario: bool = False,
 ) -> None:
-    """One sub-command per registered scene, with one option per parameter (defaults: the paper's)."""
+    """One sub-command per registered scene, with the scenario grammar's options (defaults: the
+    paper's): the scene's parameters and ``--frame``, and with ``scenario`` the rest of a scenario
+    line (``--t``, ``--overlay``, ``--layers``, ``--ride``, ``--cone``)."""
     sub = parser.add_subparsers(dest="scene", metavar="SCENE", required=required, parser_class=SceneParser)
     for kind, d in rr.scene_descriptions().items():
         sp = sub.add_parser(kind, help=d.summary, description=f"{d.title} ({d.source}). {d.summary}", parents=common)
         assert isinstance(sp, SceneParser)  # parser_class above
         sp.scene_kind = kind
-        for p in d.parameters:
-            unit = f" [{p.unit}]" if p.unit else ""
-            sp.add_argument(
-                _flag(p),
-                dest=p.name,
-                type=_number_or_none if p.optional else _number,
-                default=argparse.SUPPRESS,
-                metavar=p.symbol.replace("′", "'"),
-                help=f"{p.help}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
-                + ("; 'none' omits it" if p.optional else ""),
-            )
-        sp.add_argument("--frame", default=None, help=frame_help + f"; presets: {', '.join(d.frames)}")
+        add_scene_options(sp, d, frame_help)
+        if scenario:
+            add_scenario_options(sp)
 
 
 def scene_values(args: argparse.Namespace) -> dict[str, float | None]:
@@ -197,7 +192,7 @@ def cmd_scenes(args: argparse.Namespace) -> int:
     for kind, d in rr.scene_descriptions().items():
         print(f"{kind}  ({d.title}; {d.source})\n  {d.summary}")
         for p in d.parameters:
-            print(f"  {_flag(p):<14}{p.symbol:<6}{p.allowed():<52} default {format_value(p.default)}")
+            print(f"  {flag(p):<14}{p.symbol:<6}{p.allowed():<52} default {format_value(p.default)}")
         print(f"  frames: {', '.join(d.frames)} (default {d.default_frame})")
         print(f"  events: {', '.join(f'{e.name} ({e.meaning})' for e in d.events)}\n")
     return 0
@@ -224,7 +219,7 @@ def _port(text: str) -> int:
 def build_parser() -> OneLineParser:
     parser = OneLineParser(prog="rigidrel", description="Born-rigid rods in special relativity (Franklin 2012).")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
-    frame_help = "frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'"
+    frame_help = FRAME_HELP
 
     ev_common = SceneParser(add_help=False)
     ev_common.add_argument("--json", action="store_true", help="machine-readable output")
@@ -248,14 +243,6 @@ def build_parser() -> OneLineParser:
             default="light" if defaults else argparse.SUPPRESS,
             help="the theme every tab opens in: light, or dark for a projector (key T switches a tab)",
         )
-        if not defaults:  # a scene's option: the lower lane rides a point of one of its rods
-            common.add_argument(
-                "--ride",
-                default=None,
-                metavar="ROD:F",
-                help="the lower lane rides point F in [0, 1] (0 the left end, 1 the right) of rod ROD (from 1; "
-                "F alone: rod 1), instead of a --frame",
-            )
         return common
 
     sv = sub.add_parser(
@@ -269,7 +256,11 @@ def build_parser() -> OneLineParser:
         "--follow", action="store_true", help="with --lesson: every tab follows the leading tab's step (key L leads)"
     )
     add_scene_subparsers(
-        sv, [server_options(False)], frame_help + " (default: the scene's default frame)", required=False
+        sv,
+        [server_options(False)],
+        frame_help + " (default: the scene's default frame)",
+        required=False,
+        scenario=True,  # a scenario line, as the app's Scenario folder writes it
     )
     sv.set_defaults(func=cmd_serve)
 
@@ -389,24 +380,18 @@ def cmd_bench(args: argparse.Namespace) -> int:
     return study.run_bench(quick=args.quick, out=args.out)
 
 
-def start_settings(prog: str, args: argparse.Namespace) -> Settings | None:
-    """The state ``rigidrel serve SCENE ...`` opens every tab on (None: the app's default)."""
+def start_scenario(prog: str, args: argparse.Namespace) -> Scenario | None:
+    """The state ``rigidrel serve SCENE ...`` (a scenario line) opens every tab on (None: the app's
+    default); a line that names none is one line on stderr and exit status 2."""
     if args.scene is None:
         return None
-    scene, frame = scene_from_args(prog, args, None)
-    settings = settings_for(scene, frame)
-    if (problem := beta_problem(settings)) is not None:  # every tab shows it on the β slider
+    try:
+        scenario = scenario_from_args(args.scene, args)
+    except ScenarioError as exc:
+        fail(prog, str(exc) if str(exc).startswith("--") else f"--{exc.parameter}: {exc}")
+    if (problem := beta_problem(scenario.settings)) is not None:  # every tab shows it on the β slider
         fail(prog, problem)
-    if getattr(args, "ride", None) is not None:
-        if args.frame is not None:
-            fail(prog, "--ride is a frame of its own (the lower lane rides the point): give --ride or --frame")
-        try:
-            point = ride_from_text(args.ride)
-            settings = settings.riding(point.rod, point.fraction)
-            build(settings)
-        except ValueError as exc:
-            fail(prog, str(exc) if str(exc).startswith("--ride") else f"--ride: {exc}")
-    return settings
+    return scenario
 
 
 def cmd_serve(args: argparse.Namespace) -> int:
@@ -425,7 +410,7 @@ def cmd_serve(args: argparse.Namespace) -> int:
             fail(prog, str(exc))
     elif args.follow:
         fail(prog, "--follow needs --lesson FILE (the tabs follow the leading tab's step)")
-    start = start_settings(prog, args)
+    start = start_scenario(prog, args)
     from .live.server import serve  # viser is imported only here
 
     return serve(args.host, args.port, start, lesson, args.follow, args.theme)
@@ -438,7 +423,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         kind = getattr(args, "scene", None)
         if kind is None:
             parser.error(f"unrecognized arguments: {' '.join(extra)}")
-        options = ", ".join(_flag(p) for p in rr.describe(kind).parameters)
+        options = ", ".join(flag(p) for p in rr.describe(kind).parameters)
         fail(f"rigidrel {args.command} {kind}", f"{extra[0]} is not an option of {kind}; its parameters are {options}")
     return int(args.func(args))
 

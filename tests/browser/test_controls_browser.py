@@ -18,6 +18,7 @@ import pytest
 from rigidrel_app.live.controls import LOG_SLIDER_LABEL
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS
 from rigidrel_app.live.server import App
+from rigidrel_app.view.scenario import Scenario
 from rigidrel_app.view.state import NO_PRESET, Settings, preset_menu
 from rigidrel_app.view.vocabulary import ROD_COLORS
 from tests.browser.test_app_browser import AppPage
@@ -31,7 +32,7 @@ FIG3, FIG4 = preset_menu(Settings("rod-collision")).options[1:3]
 @pytest.fixture
 def collision(browser: Any) -> Iterator[AppPage]:
     """A tab on a server whose tabs open on the rod collision (the paper's Fig. 3)."""
-    app = App(host="127.0.0.1", port=0, start=Settings("rod-collision"))
+    app = App(host="127.0.0.1", port=0, start=Scenario(Settings("rod-collision")))
     page = None
     try:
         page = AppPage(browser, app)

@@ -20,6 +20,7 @@ from viser import _messages as viser_messages
 from viser.infra import WebsockClientConnection
 
 from ..lessons import Lesson
+from ..view.scenario import Scenario
 from ..view.state import Settings
 from ..view.vocabulary import Shade
 from .controls import configure_panel
@@ -145,13 +146,14 @@ class App:
         port: int = 8080,
         animation_hz: float | None = None,
         version: str | None = None,
-        start: Settings | None = None,
+        start: Scenario | None = None,
         budget: MessageBudget | None = None,
         lesson: Lesson | None = None,
         follow: bool = False,
         shade: Shade = "light",
     ) -> None:
-        """``start``: the settings every new tab opens on (default: the first scene's defaults);
+        """``start``: the state every new tab opens on, as a scenario line names it (default: the
+        first scene's defaults);
         ``budget``: how many messages a tab may send before it is dropped; ``lesson``: every tab gives
         it, from step 1 (``start`` is then not used); ``follow``: every tab follows the leading tab's
         step (the first tab to connect leads, or the last to press L; a tab that joins opens on the
@@ -248,7 +250,8 @@ class App:
         try:
             with self._lock:
                 first = self.leader_step if self.follow else 0
-            session = Session(client, self.start, self.lesson, self.follow, self, first, self.shade)
+            start = self.start or Scenario(Settings())
+            session = Session(client, start.settings, self.lesson, self.follow, self, first, self.shade, start.t)
         finally:
             with self._lock:
                 gone = client.client_id in self._departed
@@ -354,7 +357,7 @@ class App:
 def serve(
     host: str = "127.0.0.1",
     port: int = 8080,
-    start: Settings | None = None,
+    start: Scenario | None = None,
     lesson: Lesson | None = None,
     follow: bool = False,
     shade: Shade = "light",

@@ -110,10 +110,12 @@ class Session:
         hooks: LessonHooks | None = None,
         first_step: int = 0,
         shade: Shade = "light",
+        start_time: float | None = None,
     ) -> None:
         """``lesson``: the tab gives it, opening on ``first_step`` (from 0); ``follow``: ``--follow``
         (the Lesson folder says who leads); ``hooks``: where step changes and key L are reported;
-        ``shade``: the theme the tab opens in (key T changes it)."""
+        ``shade``: the theme the tab opens in (key T changes it); ``start_time``: the time the tab
+        opens at, in the settings' frame (a scenario line's ``--t``; not with a lesson)."""
         self.client = client
         self.shade: Shade = shade
         """The tab's theme: light, or the dark projector theme (key T)."""
@@ -184,6 +186,8 @@ class Session:
             else:
                 self._apply(resolved, refit=True)
                 self._set_notice(self.notice, "scene")
+                if start_time is not None and not self.notice:
+                    self.set_playback(self.playback.seek(start_time))
                 if shade != "light":
                     self._send_page()
 

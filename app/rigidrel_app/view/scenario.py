@@ -13,13 +13,21 @@ or the origin event's name, ``contact``). ``rigidrel
 serve``, lesson files and the app's scenario box all read this syntax, and the app shows the
 current state in it, so a state can be copied from a student's screen into a lesson. Everything
 is generated from the scene registry.
+
+The grammar is written once, here, as argparse options (:func:`add_scene_options`,
+:func:`add_scenario_options`): the command line adds them to its scene sub-commands, and
+:func:`parse_scenario` reads a line with the same options, its errors raised as
+:class:`ScenarioError` instead of ending the program.
 """
 
 from __future__ import annotations
 
+import argparse
 import math
 import shlex
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import NoReturn
 
 import rigidrel_core as rr
 
@@ -80,13 +88,37 @@ def format_scenario(settings: Settings, t: float | None = None) -> str:
     return " ".join(parts)
 
 
-def _number(name: str, text: str, allowed: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise ScenarioError(name, f"--{name} needs {allowed}; got {text!r}") from None
-    if not math.isfinite(value):
-        raise ScenarioError(name, f"--{name} needs {allowed}; got {text!r}")
+#: What an optional parameter takes to be omitted (``--a-front none``: the impulsive limit).
+OMITTED = ("none", "impulse", "impulsive")
+
+
+def parameter_value(parameter: rr.Parameter) -> Callable[[str], float | None]:
+    """The text after ``--name`` as the number it names (or None, ``none``, for an optional
+    parameter); its range is the core's to check when the scene is built."""
+
+    def value(text: str) -> float | None:
+        if parameter.optional and text.strip().lower() in OMITTED:
+            return None
+        try:
+            return float(text)
+        except ValueError:
+            takes = parameter.allowed() + ("; 'none' omits it" if parameter.optional else "")
+            raise argparse.ArgumentTypeError(f"not a number: {text!r}; {flag(parameter)} takes {takes}") from None
+
+    value.__name__ = parameter.name
+    return value
+
+
+def _finite(what: str) -> Callable[[str], float]:
+    def value(text: str) -> float:
+        try:
+            number = float(text)
+        except ValueError:
+            number = math.nan
+        if not math.isfinite(number):
+            raise argparse.ArgumentTypeError(f"needs {what}; got {text!r}")
+        return number
+
     return value
 
 
@@ -98,16 +130,27 @@ def ride_from_text(text: str) -> RidePoint:
     """``2:0.5`` -> rod 2 (index 1) at its middle; ``1`` -> rod 1's right end. The rod's range is
     checked against the scene when the scenario is built."""
     rod_text, _, f_text = text.rpartition(":")
+    problem = ScenarioError("ride", f"--ride needs {RIDE_ALLOWED}; got {text!r}")
     rod = 1
     if rod_text:
         try:
             rod = int(rod_text)
         except ValueError:
-            raise ScenarioError("ride", f"--ride needs {RIDE_ALLOWED}; got {text!r}") from None
-    fraction = _number("ride", f_text, RIDE_ALLOWED)
+            raise problem from None
+    try:
+        fraction = float(f_text)
+    except ValueError:
+        raise problem from None
     if not 0.0 <= fraction <= 1.0:
-        raise ScenarioError("ride", f"--ride needs {RIDE_ALLOWED}; got {text!r}")
+        raise problem
     return RidePoint(rod - 1, fraction)
+
+
+def _ride(text: str) -> RidePoint:
+    try:
+        return ride_from_text(text)
+    except ScenarioError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def _layers(text: str) -> frozenset[Layer]:
@@ -120,10 +163,103 @@ def _layers(text: str) -> frozenset[Layer]:
     known = {layer.value: layer for layer in Layer}
     for n in names:
         if n not in known:
-            raise ScenarioError(
-                "layers", f"{n!r} is not a layer; --layers takes a comma-separated list of {', '.join(known)} (or none)"
+            raise argparse.ArgumentTypeError(
+                f"{n!r} is not a layer; --layers takes a comma-separated list of {', '.join(known)} (or none, all)"
             )
     return frozenset(known[n] for n in names)
+
+
+FRAME_HELP = "frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'"
+
+
+def add_scene_options(parser: argparse.ArgumentParser, description: rr.SceneDescription, frame_help: str) -> None:
+    """The scene's own options: one ``--name VALUE`` per parameter (its range and default in the
+    help; left out of the namespace when not given), and ``--frame``."""
+    for p in description.parameters:
+        unit = f" [{p.unit}]" if p.unit else ""
+        parser.add_argument(
+            flag(p),
+            dest=p.name,
+            type=parameter_value(p),
+            default=argparse.SUPPRESS,
+            metavar=p.symbol.replace("′", "'"),
+            help=f"{p.help}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
+            + ("; 'none' omits it" if p.optional else ""),
+        )
+    parser.add_argument("--frame", default=None, help=frame_help + f"; presets: {', '.join(description.frames)}")
+
+
+def add_scenario_options(parser: argparse.ArgumentParser) -> None:
+    """What a scenario names besides the scene: the time shown, the overlay, the layers, a riding
+    point and a light cone."""
+    parser.add_argument(
+        "--t", type=_finite("a time (a finite number)"), default=None, help="the time shown, in the frame"
+    )
+    parser.add_argument("--overlay", action="store_true", help="draw the description's comparison curve")
+    parser.add_argument(
+        "--layers",
+        type=_layers,
+        default=DEFAULT_LAYERS,
+        help=f"the layers drawn, comma-separated ({', '.join(layer.value for layer in Layer)}), or all, or none",
+    )
+    parser.add_argument(
+        "--ride",
+        type=_ride,
+        default=None,
+        metavar="ROD:F",
+        help="the lower lane rides point F in [0, 1] (0 the left end, 1 the right) of rod ROD (from 1; "
+        "F alone: rod 1), instead of a --frame",
+    )
+    parser.add_argument("--cone", default=None, metavar="EVENT", help="the diagrams draw this event's light cone")
+
+
+def scenario_from_args(kind: str, args: argparse.Namespace) -> Scenario:
+    """The state the parsed options of scene ``kind`` name (the options of :func:`add_scene_options`
+    and :func:`add_scenario_options`), checked by building it: a :class:`ScenarioError` names the
+    flag at fault."""
+    d = rr.describe(kind)
+    values = {p.name: getattr(args, p.name) for p in d.parameters if hasattr(args, p.name)}
+    frame, beta = args.frame, 0.0
+    if frame is not None and frame not in d.frames:
+        allowed = f"a velocity in (-1, 1) or one of {', '.join(repr(f) for f in d.frames)}"
+        try:
+            beta = float(frame)
+        except ValueError:
+            beta = math.nan
+        if not -1.0 < beta < 1.0:
+            raise ScenarioError("frame", str(rr.ParameterError("frame", allowed, frame)))
+        frame = CUSTOM_FRAME
+    ride: RidePoint | None = getattr(args, "ride", None)
+    if ride is not None and frame is not None:
+        raise ScenarioError("ride", "--ride is a frame of its own (the lane rides the point): give --ride or --frame")
+    layers = getattr(args, "layers", DEFAULT_LAYERS)
+    overlay, cone = getattr(args, "overlay", False), getattr(args, "cone", None)
+    settings = Settings(kind, tuple(values.items()), frame, beta, overlay, layers, cone=cone)
+    if ride is not None:
+        settings = settings.riding(ride.rod, ride.fraction)
+    try:
+        build(settings)
+    except ValueError as exc:
+        parameter = getattr(exc, "parameter", "scene")
+        raise ScenarioError(str(parameter).replace("_", "-"), str(exc)) from None
+    return Scenario(settings, getattr(args, "t", None))
+
+
+class _LineParser(argparse.ArgumentParser):
+    """argparse over one scenario line: its errors are :class:`ScenarioError` s, never an exit."""
+
+    def __init__(self, kind: str) -> None:
+        super().__init__(prog=kind, add_help=False, allow_abbrev=False, exit_on_error=False)
+
+    def error(self, message: str) -> NoReturn:
+        raise ScenarioError("scene", message)
+
+
+def _line_parser(kind: str) -> _LineParser:
+    parser = _LineParser(kind)
+    add_scene_options(parser, rr.describe(kind), FRAME_HELP)
+    add_scenario_options(parser)
+    return parser
 
 
 def parse_scenario(text: str) -> Scenario:
@@ -139,60 +275,14 @@ def parse_scenario(text: str) -> Scenario:
     kind, rest = tokens[0], tokens[1:]
     if kind not in kinds:
         raise ScenarioError("scene", f"{kind!r} is not a scene; the scenes are {', '.join(kinds)}")
-    d = kinds[kind]
-    by_flag = {flag(p): p for p in d.parameters}
-    values: dict[str, float | None] = {}
-    frame: str | None = None
-    beta = 0.0
-    overlay = False
-    layers = DEFAULT_LAYERS
-    t: float | None = None
-    ride: RidePoint | None = None
-    cone: str | None = None
-    i = 0
-    while i < len(rest):
-        name = rest[i]
-        if name == "--overlay":
-            overlay, i = True, i + 1
-            continue
-        if name not in (*by_flag, "--frame", "--t", "--layers", "--ride", "--cone"):
-            options = ", ".join((*by_flag, "--frame", "--t", "--overlay", "--layers", "--ride", "--cone"))
-            raise ScenarioError("scene", f"{name!r} is not an option of {kind}; its options are {options}")
-        if i + 1 >= len(rest):
-            raise ScenarioError(name.lstrip("-"), f"{name} needs a value")
-        value = rest[i + 1]
-        i += 2
-        if name == "--frame":
-            if value in d.frames:
-                frame = value
-            else:
-                allowed = f"a velocity in (-1, 1) or one of {', '.join(repr(f) for f in d.frames)}"
-                beta = _number("frame", value, allowed)
-                if not -1.0 < beta < 1.0:
-                    raise ScenarioError("frame", f"--frame needs {allowed}; got {value!r}")
-                frame = CUSTOM_FRAME
-        elif name == "--t":
-            t = _number("t", value, "a time (a finite number)")
-        elif name == "--layers":
-            layers = _layers(value)
-        elif name == "--ride":
-            ride = ride_from_text(value)
-        elif name == "--cone":
-            cone = value
-        else:
-            p = by_flag[name]
-            if p.optional and value.strip().lower() == "none":
-                values[p.name] = None
-            else:
-                values[p.name] = _number(p.name.replace("_", "-"), value, p.allowed())
-    if ride is not None and frame is not None:
-        raise ScenarioError("ride", "--ride is a frame of its own (the lane rides the point): give --ride or --frame")
-    settings = Settings(kind, tuple(values.items()), frame, beta, overlay, layers, cone=cone)
-    if ride is not None:
-        settings = settings.riding(ride.rod, ride.fraction)
+    parser = _line_parser(kind)
     try:
-        build(settings)
-    except ValueError as exc:
-        parameter = getattr(exc, "parameter", "scene")
-        raise ScenarioError(str(parameter).replace("_", "-"), str(exc)) from None
-    return Scenario(settings, t)
+        args, extra = parser.parse_known_args(rest)
+    except argparse.ArgumentError as exc:
+        name = exc.argument_name or "--scene"
+        needs = "needs a value" if exc.message.startswith("expected one argument") else exc.message
+        raise ScenarioError(name.split("/")[0].lstrip("-"), f"{name} {needs}") from None
+    if extra:
+        options = ", ".join(o for a in parser._actions for o in a.option_strings)  # pyright: ignore[reportPrivateUsage]
+        raise ScenarioError("scene", f"{extra[0]!r} is not an option of {kind}; its options are {options}")
+    return scenario_from_args(kind, args)
