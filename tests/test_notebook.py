@@ -1,4 +1,4 @@
-"""The README's notebook example, run outside a notebook; the live view's callbacks, run without a browser."""
+"""The example of docs/notebooks.md, run outside a notebook; the live view's callbacks, run without a browser."""
 
 from __future__ import annotations
 
@@ -34,20 +34,20 @@ from rigidrel_app.view.comoving import RIDE_LINE_NAME
 from rigidrel_app.view.state import CUSTOM_FRAME, DEFAULT_RIDE, RIDE_FRAME
 from rigidrel_app.view.vocabulary import lightness_flipped, rgb
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+NOTEBOOKS_PAGE = Path(__file__).resolve().parents[1] / "docs" / "notebooks.md"
 
 
 def notebook_block() -> str:
-    text = README.read_text()
+    text = NOTEBOOKS_PAGE.read_text()
     m = re.search(r"<!-- notebook-example[^>]*-->\s*```python\n(.*?)```", text, re.S)
-    assert m, "README has no notebook example"
+    assert m, "docs/notebooks.md has no notebook example"
     return m.group(1)
 
 
 @pytest.mark.slow  # records through a viser server
-def test_readme_notebook_example_runs() -> None:
+def test_the_notebook_page_example_runs() -> None:
     namespace: dict[str, object] = {}
-    exec(compile(notebook_block(), "README.md", "exec"), namespace)
+    exec(compile(notebook_block(), "docs/notebooks.md", "exec"), namespace)
     fig = namespace["fig"]
     rec = namespace["rec"]
     assert isinstance(fig, go.Figure)
