@@ -4,7 +4,8 @@ The slow test builds the site (``mkdocs build --strict``, as ``mkdocs.yml`` asks
 folder and follows every internal link and anchor of the built HTML; the site must also load
 nothing from the network. The fast tests hold the README to a front page (at most
 :data:`README_MAX_LINES` lines) whose relative links and pictures are files of the repository, keep
-the architecture page's list of layers the one import-linter enforces, and check that the link
+the architecture page's list of layers the one import-linter enforces, run the Python examples of
+the README and the pages (those that need no server, browser or kernel), and check that the link
 checker itself finds a broken link and a missing anchor.
 """
 
@@ -114,6 +115,35 @@ def test_the_architecture_page_lists_the_layers_import_linter_enforces() -> None
     block = re.search(r"```\n((?:\s*\w+(?: \| \w+)*\n)+)\s*```", page)
     assert block, "docs/architecture.md has no code block of the layers"
     assert [line.strip() for line in block.group(1).splitlines()] == layers
+
+
+#: Pages whose Python examples run in the fast lane; the notebook page's need a server or a kernel
+#: (tests/test_notebook.py runs its first one).
+EXAMPLE_PAGES = ("README.md", "docs/getting-started.md", "docs/core.md", "docs/causality.md", "docs/adding-a-scene.md")
+
+
+def python_blocks(page: str) -> list[str]:
+    return re.findall(r"```python\n(.*?)```", (ROOT / page).read_text(encoding="utf-8"), re.S)
+
+
+@pytest.mark.parametrize("page", EXAMPLE_PAGES)
+def test_the_python_examples_of_the_docs_run(page: str) -> None:
+    """Every example that is a script (it starts with an import) runs as written; the others (a module's
+    source, a fragment of one) at least compile. A scene an example registers is unregistered after it."""
+    import rigidrel_core as rr
+
+    blocks = python_blocks(page)
+    assert blocks, f"{page} has no Python example"
+    for k, block in enumerate(blocks):
+        code = compile(block, f"{page} (example {k + 1})", "exec")
+        if not block.startswith(("import ", "from ")) or "from . import" in block:
+            continue
+        before = set(rr.scene_descriptions())
+        try:
+            exec(code, {"__name__": f"docs_example_{k}"})
+        finally:
+            for kind in set(rr.scene_descriptions()) - before:
+                rr.unregister_scene(kind)
 
 
 def test_the_link_checker_finds_a_broken_link_and_a_missing_anchor(tmp_path: Path) -> None:
