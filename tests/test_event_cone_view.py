@@ -40,7 +40,7 @@ def test_every_event_cone_has_its_apex_at_the_core_event_in_both_diagrams(kind: 
         d = build_drawing(r)
         for chart, frame in ((d.lab_chart, rr.LAB), (d.frame_chart, r.frame)):
             t, x = _cone_apex(chart.items)
-            te, xe = scene.source_event(event, frame)
+            te, xe = scene.source_event(event, frame=frame)
             size = max(1.0, abs(te), abs(xe))
             assert abs(t - te) <= 1e-9 * size and abs(x - xe) <= 1e-9 * size, (kind, event, frame.name)
             shaded = [it for it in chart.items if isinstance(it, Area) and it.style.group == "event cone"]

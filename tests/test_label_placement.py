@@ -76,7 +76,7 @@ def app_and_page_charts(s: Settings) -> list[Chart]:
     d = build_drawing(r)
     page = [
         minkowski_in_frame(r.scene, r.frame, DIAGRAM_PX, r.overlay),
-        length_static(r.scene, rr.LAB, r.frame, r.scene.time_window(r.frame), LENGTH_PX),
+        length_static(r.scene, rr.LAB, r.frame, r.scene.time_window(frame=r.frame), LENGTH_PX),
     ]
     return [*d.charts, *page]
 

@@ -90,12 +90,12 @@ def test_a_parameter_slider_redraws_the_figure_as_the_core_says() -> None:
     # and, straight from the core: the rods' ends now (diamonds on the lab diagram) and the lengths now
     scene = rr.build_scene("rod-collision", v1=0.8)
     frame = scene.frame("barycentric")
-    lab_ends = scene.snapshot(0.5, rr.LAB, fractions=[0.0, 1.0])[0]
+    lab_ends = scene.snapshot(0.5, frame=rr.LAB, fractions=[0.0, 1.0])[0]
     drawn_ends = sorted(x for t in traces(view) if t.xaxis == "x" and t.legendgroup == "rods now" for x in t.x)
     assert np.array_equal(np.sort(lab_ends.ravel()), np.array(drawn_ends))
     length_markers = [t for t in traces(view) if t.xaxis == "x3" and t.legendgroup == "rods now"]
     drawn_lengths = sorted(y for t in length_markers for y in t.y)
-    core_lengths = np.concatenate([scene.lengths(0.5, rr.LAB), scene.lengths(0.5, frame)])
+    core_lengths = np.concatenate([scene.lengths(0.5, frame=rr.LAB), scene.lengths(0.5, frame=frame)])
     assert np.array_equal(np.sort(core_lengths), np.array(drawn_lengths))
     assert f"{scene.final_velocities[0]:+.4f}" in view.readout.value
 
@@ -115,7 +115,9 @@ def test_the_time_slider_moves_only_the_moving_parts() -> None:
     now = view.time.value
     length_markers = [t for t in traces(view) if t.xaxis == "x3" and t.legendgroup == "rods now"]
     drawn = sorted(y for t in length_markers for y in t.y)
-    assert np.array_equal(np.sort(np.concatenate([scene.lengths(now, rr.LAB), scene.lengths(now, frame)])), drawn)
+    assert np.array_equal(
+        np.sort(np.concatenate([scene.lengths(now, frame=rr.LAB), scene.lengths(now, frame=frame)])), drawn
+    )
 
 
 def test_a_refused_value_shows_a_notice_and_keeps_the_picture() -> None:

@@ -78,7 +78,7 @@ def test_lab_first_then_boost_loses_digits_in_a_chasing_frame() -> None:
         late = t_lab > t_front_stops
         x_lab = g * L + v * (t_lab - t_front_stops)
         textbook = gb * (x_lab - beta * t_lab)
-        core = scene.positions(t, frame(beta))[0, 1]
+        core = scene.positions(t, frame=frame(beta))[0, 1]
         ref_len = np.abs(np.array([float(x) for x in fr["lengths"][0]]))
         scale = np.maximum(np.abs(ref), ref_len)
         assert np.all(np.abs(core - ref) <= TOL_CORE * scale)

@@ -17,7 +17,7 @@ def main() -> None:
     for name in ("lab", "barycentric"):
         frame = scene.frame(name)
         print(f"events in the {name} frame (beta = {frame.beta:.6f}):")
-        for event, (t, x) in scene.events_in(frame).items():
+        for event, (t, x) in scene.events_in(frame=frame).items():
             print(f"  {event:4s}  t = {t:+.6f}  x = {x:+.6f}")
     for rod, v in zip(scene.rods, scene.final_velocities):
         print(f"{rod.name} leaves with V' = {v:+.6f} = {Fraction(v).limit_denominator(100)}")

@@ -152,24 +152,24 @@ class BellScene(Scene):
         phi = theta + np.arcsinh(q / r)
         return np.where(phi <= theta_v, on_hyperbola, coasting)
 
-    def string_rapidities(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def string_rapidities(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """The rear ship's lab rapidity when its front end (the string's rear end) is at frame time
         ``t'``: its clock ``tau`` over its radius ``R = 1/a + l`` (proper acceleration ``1/R``),
         clipped to ``[0, theta_V]``; an invariant of the event."""
         frame = check_frame(frame)
         tt = check_times("t", t)
-        tau = self.proper_times(tt, frame, fractions=np.array([1.0]))[REAR_SHIP, 0]
+        tau = self.proper_times(tt, frame=frame, fractions=np.array([1.0]))[REAR_SHIP, 0]
         radius = 1.0 / self.acceleration + self.ship_length
         return np.clip(tau / radius, 0.0, self.rods[0].motion.velocity_final.rapidity())
 
-    def string_rest_lengths(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def string_rest_lengths(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """The string's proper length when its rear end is at frame time ``t'``: its rest length in
         the rear ship's momentarily comoving frame. Shape of ``t``."""
-        return self.string_rest_length_at_rapidity(self.string_rapidities(t, frame))
+        return self.string_rest_length_at_rapidity(self.string_rapidities(t, frame=frame))
 
-    def string_strains(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def string_strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
-        return self.string_rest_lengths(t, frame) / self.string_unstretched - 1.0
+        return self.string_rest_lengths(t, frame=frame) / self.string_unstretched - 1.0
 
     @property
     def final_strain(self) -> float:
@@ -205,19 +205,19 @@ class BellScene(Scene):
         front end ``(0, 1.0)``, its front end the front ship's rear end ``(1, 0.0)``."""
         return ((REAR_SHIP, 1.0), (FRONT_SHIP, 0.0))
 
-    def string_broken(self, t: npt.ArrayLike, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
+    def string_broken(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
         """Whether the string has broken when its rear end is at frame time ``t'``: ``t' >= t'_b``,
         ``t'_b`` the frame time of the break event :meth:`string_break_in` (its rear end, where the
         strain reaches the breaking strain; the strain grows along that end's worldline, so this is
         the same as ``strain(t') >= e_b``); all ``False`` if it never breaks. Shape of ``t``."""
         frame = check_frame(frame)
         tt = check_times("t", t)
-        event = self.string_break_in(frame)
+        event = self.string_break_in(frame=frame)
         if event is None:
             return np.zeros(tt.shape, dtype=np.bool_)
         return tt >= event[0]
 
-    def notes(self, frame: Frame = LAB) -> tuple[str, ...]:
+    def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
         """The string's story and the rear ends' distance in the ships' frame after, in words."""
         frame = check_frame(frame)
         g = self.rods[0].motion.velocity_final.lorentz_factor()
@@ -227,7 +227,7 @@ class BellScene(Scene):
             f"the string's rest length grows from s - l = {self.string_unstretched:.6g} to gamma s - l = "
             f"{self.string_final:.6g} (strain {self.final_strain:.4g}); the Born-rigid rod keeps {self.separation:.6g}",
         ]
-        event = self.string_break_in(frame)
+        event = self.string_break_in(frame=frame)
         if self.breaking_strain is None:
             lines.append("no breaking strain given: the string stretches and holds")
         elif event is None:
@@ -239,7 +239,7 @@ class BellScene(Scene):
             )
         return tuple(lines)
 
-    def string_break_in(self, frame: Frame = LAB) -> tuple[float, float] | None:
+    def string_break_in(self, *, frame: Frame = LAB) -> tuple[float, float] | None:
         """The break event in ``frame`` (``None`` if the string never breaks)."""
         frame = check_frame(frame)
         event = self.string_break

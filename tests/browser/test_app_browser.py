@@ -223,8 +223,8 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     found = measured_rods(tab, img)
     separation = []
     for lane, runs, lane_frame in zip(tab.session.renderer_lanes, found, (rr.LAB, frame), strict=True):
-        x = scene.positions(np.array([now]), lane_frame)[:, :, 0]
-        x_lab = scene.positions(np.array([now]), rr.LAB)[:, :, 0]
+        x = scene.positions(np.array([now]), frame=lane_frame)[:, :, 0]
+        x_lab = scene.positions(np.array([now]), frame=rr.LAB)[:, :, 0]
         for r in range(2):
             lo, hi = lane.origin_px + x[r] * lane.scale
             a, b = runs[r]

@@ -153,8 +153,8 @@ def sample_times(case: BenchCase, n: int) -> FloatArray:
     """
     scene = case.scene.core()
     frame = case.frame
-    t0, t1 = scene.time_window(frame)
-    events = np.array([t for t, _ in scene.events_in(frame).values()])
+    t0, t1 = scene.time_window(frame=frame)
+    events = np.array([t for t, _ in scene.events_in(frame=frame).values()])
     if case.spread == "window":
         grid = np.linspace(t0, t1, max(n - events.size, 2))
     else:

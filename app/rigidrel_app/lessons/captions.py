@@ -88,7 +88,7 @@ class _Table(Mapping[Any, Any]):
 def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
     """The values a caption may name, all asked of the core."""
     signals = signals_in(scene, frame)
-    lengths = scene.lengths(np.array(scene.time_window(frame)), frame)
+    lengths = scene.lengths(np.array(scene.time_window(frame=frame)), frame=frame)
     rods = {
         str(k + 1): RodValues(
             rod.motion.velocity_initial.value,
@@ -105,15 +105,15 @@ def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
     }
     verdicts: Sequence[str] = verdict_lines(scene)
     return {
-        "event": _Table("event", {k: EventValue(*v) for k, v in scene.events_in(frame).items()}),
+        "event": _Table("event", {k: EventValue(*v) for k, v in scene.events_in(frame=frame).items()}),
         "lab": _Table("lab", {k: EventValue(*v) for k, v in scene.events.items()}),
         "signal": _Table("signal", {leg.name: EventValue(*leg.arrival) for leg in signals.legs}),
         "rod": _Table("rod", rods),
         "param": _Table("param", {k: v for k, v in scene.parameters.items()}),
         "frame": FrameValues(frame.beta, frame.label()),
-        "heat": scene.budget(frame).heat,
+        "heat": scene.budget(frame=frame).heat,
         "verdict": _Table("verdict", {str(k + 1): v for k, v in enumerate(verdicts)}),
-        "note": _Table("note", {str(k + 1): n[:1].upper() + n[1:] for k, n in enumerate(scene.notes(frame))}),
+        "note": _Table("note", {str(k + 1): n[:1].upper() + n[1:] for k, n in enumerate(scene.notes(frame=frame))}),
     }
 
 
