@@ -30,7 +30,9 @@ from ._validate import ParameterError, as_real, check_fractions, check_times, ch
 FloatArray = npt.NDArray[np.float64]
 
 #: The two ends of a rod as material coordinates (fractions of the rest length from the left end).
-ENDS = np.array([0.0, 1.0])
+#: Read-only, and for good (a view of immutable bytes: its ``writeable`` flag cannot be set again):
+#: it is the samplers' default argument and part of the plan cache's key.
+ENDS: FloatArray = np.frombuffer(np.array([0.0, 1.0]).tobytes(), dtype=np.float64)
 _ENDS_BYTES = ENDS.tobytes()
 _MAX_CACHED_PLANS = 64
 

@@ -210,3 +210,18 @@ def test_a_bad_time_in_a_long_sorted_input_is_refused(bad: float, where: int) ->
     with pytest.raises(rr.ParameterError, match="t must be finite real numbers") as caught:
         scene.positions(t)
     assert repr(bad) in str(caught.value)
+
+
+def test_ends_are_read_only() -> None:
+    """``rr.ENDS`` is the samplers' default argument and part of the plan cache's key (by identity):
+    writing to it, or making it writeable again, is refused, and the scene's answers stay put."""
+    scene = rr.build_scene("rod-collision")
+    before = scene.velocities([0.1]).tobytes()
+    with pytest.raises(ValueError, match="read-only"):
+        rr.ENDS[1] = 0.5
+    with pytest.raises(ValueError, match="WRITEABLE"):
+        rr.ENDS.flags.writeable = True
+    with pytest.raises(ValueError, match="read-only"):
+        rr.ENDS *= 2.0
+    assert rr.ENDS.tolist() == [0.0, 1.0]
+    assert scene.velocities([0.1]).tobytes() == before
