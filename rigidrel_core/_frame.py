@@ -122,8 +122,9 @@ class Frame:
         """The boost back: the lab seen from this frame moves with ``-beta``."""
         return Frame(self.velocity.negated(), None)
 
-    def relative_to(self, other: Frame) -> float:
-        """Rapidity of this frame seen from ``other`` (``psi - psi_other``), to a few ulp of itself."""
+    def rapidity_relative_to(self, other: Frame) -> float:
+        """The rapidity of this frame seen from ``other``, ``psi - psi_other`` (a number, not a frame;
+        the frame itself is ``self @ other.inverse()``), to a few ulp of itself."""
         return relative_rapidity(self.velocity, other.velocity)
 
     @overload

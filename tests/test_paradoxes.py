@@ -269,7 +269,7 @@ def test_signal_pole_changes_velocity_only_inside_the_stop_fronts_future_cone(
     t = np.linspace(t0, t1, 41)
     x = scene.material_positions(t, frame=frame, fractions=fractions)[1]
     v = scene.velocities(t, frame=frame, fractions=fractions)[1]
-    v_initial = math.tanh(rr.Frame(scene.rods[1].motion.velocity_initial).relative_to(frame))
+    v_initial = math.tanh(rr.Frame(scene.rods[1].motion.velocity_initial).rapidity_relative_to(frame))
     outside = t[None, :] < np.abs(x)
     assert np.all(np.abs(v[outside] - v_initial) <= 1e-12)
     motion = scene.rods[1].motion

@@ -91,6 +91,19 @@ def test_composition_adds_rapidities(x: float, y: float) -> None:
 
 
 @SETTINGS
+@given(x=rapidities, y=rapidities)
+def test_rapidity_relative_to_is_the_rapidity_of_the_relative_frame(x: float, y: float) -> None:
+    """``a.rapidity_relative_to(b)`` is a number, the rapidity of ``a @ b.inverse()`` (``x - y``); the
+    method's old name, which read as if it returned a frame, is gone."""
+    a, b = rr.Frame.from_rapidity(x), rr.Frame.from_rapidity(y)
+    relative = a.rapidity_relative_to(b)
+    assert isinstance(relative, float)
+    assert abs(relative - (x - y)) <= 1e-15 * (abs(x) + abs(y)) + 1e-300
+    assert abs(relative - (a @ b.inverse()).rapidity) <= 1e-15 * (abs(x) + abs(y)) + 1e-300
+    assert not hasattr(rr.Frame, "relative_to")
+
+
+@SETTINGS
 @given(data=st.data(), shape=batch_shapes)
 def test_lab_frame_is_the_exact_identity(data: st.DataObject, shape: tuple[int, ...]) -> None:
     """``rr.LAB @ e`` is ``e`` bit for bit, and the lab composed with a frame is that frame."""
