@@ -141,7 +141,7 @@ def test_default_frames_differ_from_the_lab() -> None:
 
 
 def test_settings_round_trip_and_frames_from_text() -> None:
-    scene = rr.build_scene("rod-collision", m2=3.0)
+    scene = rr.build_scene("rod-collision", mass2=3.0)
     for frame in (scene.frame("barycentric"), rr.Frame.from_velocity(0.3, "custom")):
         r = resolve(settings_for(scene, frame))
         assert isinstance(r, Resolved) and r.frame == frame and r.scene.parameters == scene.parameters
@@ -400,9 +400,9 @@ EXTREMES = [
     Settings.of("wall-collision", v=0.99),
     Settings("constant-acceleration", (), CUSTOM_FRAME, 0.99),
     Settings("constant-acceleration", (), CUSTOM_FRAME, -0.99),
-    Settings.of("rod-collision", m2=0.01),
-    Settings.of("rod-collision", m2=100.0),
-    Settings.of("rod-collision", l2=0.1),
+    Settings.of("rod-collision", mass2=0.01),
+    Settings.of("rod-collision", mass2=100.0),
+    Settings.of("rod-collision", length2=0.1),
     Settings.of("velocity-change", v_initial=-0.99, v_final=0.99),
     *ALL_SETTINGS,
 ]

@@ -65,7 +65,7 @@ def test_the_cone_is_named_chosen_and_refused_like_any_setting() -> None:
 
 
 def test_scenario_strings_carry_the_cone() -> None:
-    line = "rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --frame barycentric --cone T_2"
+    line = "rod-collision --v1 0.6 --mass2 2 --v2 0 --length2 1 --eps 1 --frame barycentric --cone T_2"
     scenario = parse_scenario(line)
     assert scenario.settings.cone == "T_2"
     assert format_scenario(scenario.settings) == line

@@ -127,13 +127,13 @@ def test_a_refused_value_shows_a_notice_and_keeps_the_picture() -> None:
     assert "v2 must be less than v1" in view.state.notice and "V2 = 0 refused" in view.notice.value
     assert same_arrays(before, widget_arrays(view))
     assert view.sliders["v1"].value == 0.6  # the slider goes back to the scene on screen
-    view.set("m2", -1.0)  # beyond the core's range: its range is named
-    assert view.state.notice.startswith("M2/M1 = -1 refused: m2 must be a finite number in (0, ")
-    assert same_arrays(before, widget_arrays(view)) and view.sliders["m2"].value == 2.0
-    view.set("m2", 1000.0)  # beyond the log slider but a scene: the slider widens to show it, never clamps
-    assert view.state.notice == "" and view.sliders["m2"].value == 1000.0 and view.sliders["m2"].max == 3.0
+    view.set("mass2", -1.0)  # beyond the core's range: its range is named
+    assert view.state.notice.startswith("M2/M1 = -1 refused: mass2 must be a finite number in (0, ")
+    assert same_arrays(before, widget_arrays(view)) and view.sliders["mass2"].value == 2.0
+    view.set("mass2", 1000.0)  # beyond the log slider but a scene: the slider widens to show it, never clamps
+    assert view.state.notice == "" and view.sliders["mass2"].value == 1000.0 and view.sliders["mass2"].max == 3.0
     # the next valid change clears the notice
-    view.sliders["m2"].value = 10.0
+    view.sliders["mass2"].value = 10.0
     assert view.state.notice == "" and view.notice.value == "" and not same_arrays(before, widget_arrays(view))
 
 
@@ -185,7 +185,12 @@ def test_sliders_are_the_registry_parameters(kind: str) -> None:
 
 @pytest.mark.parametrize(
     ("values", "frame"),
-    [({"v1": 0.99}, 0.99), ({"v1": 0.99, "v2": -0.99}, -0.99), ({"m2": 0.01}, "barycentric"), ({"m2": 100.0}, None)],
+    [
+        ({"v1": 0.99}, 0.99),
+        ({"v1": 0.99, "v2": -0.99}, -0.99),
+        ({"mass2": 0.01}, "barycentric"),
+        ({"mass2": 100.0}, None),
+    ],
 )
 def test_extremes_draw_finite_figures(values: dict[str, float], frame: float | str | None) -> None:
     s = start("rod-collision", frame, theme="light", **values)
@@ -264,7 +269,7 @@ def shown_colors(view: LiveView) -> list[Color]:
 
 
 def test_a_dark_diagram_and_lesson_flip_every_colour(monkeypatch: pytest.MonkeyPatch) -> None:
-    scene = rr.rod_collision(v1=0.6, v2=0.0, m1=1.0, m2=2.0, l1=1.0, l2=1.0, eps=1.0)
+    scene = rr.rod_collision(v1=0.6, v2=0.0, mass1=1.0, mass2=2.0, length1=1.0, length2=1.0, eps=1.0)
     light = diagram(scene, scene.frame("barycentric")).to_plotly_json()
     dark = diagram(scene, scene.frame("barycentric"), theme="dark").to_plotly_json()
     assert_flipped(light, dark)

@@ -143,7 +143,7 @@ def test_bell_comparison_rod_keeps_its_rest_length_and_its_front_accelerates_les
     assert both[rod, 0, 0] == both[REAR_SHIP, 0, 0]
     g = scene.rods[0].motion.velocity_final.lorentz_factor()
     v = scene.rods[0].motion.velocity_final.value
-    assert scene.events["T_Frod"][0] == pytest.approx(g * v * (1.0 / scene.acceleration + scene.separation), rel=TOL)
+    assert scene.events["T_Frod"][0] == pytest.approx(g * v * (1.0 / scene.a_back + scene.separation), rel=TOL)
     assert scene.events["T_Frod"][0] > scene.events["T_B2"][0]
 
 
@@ -196,7 +196,7 @@ def test_rod_groups_part_the_alternatives_and_the_comparison_rod() -> None:
 def test_bell_events_command_prints_the_string(capsys: pytest.CaptureFixture[str]) -> None:
     from rigidrel_app.cli import main
 
-    assert main(["events", "bell-spaceships", "--v", "0.6", "--separation", "1", "--acceleration", "0.5"]) == 0
+    assert main(["events", "bell-spaceships", "--v", "0.6", "--separation", "1", "--a-back", "0.5"]) == 0
     out = capsys.readouterr().out
     assert "gamma s = 1.25 apart" in out
     assert "gamma s - l = 1.15" in out

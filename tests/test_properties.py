@@ -412,13 +412,13 @@ def test_speeds_closer_to_light_than_float64_shows_stay_below_one() -> None:
     """Within half an ulp of light speed (1 - |v| < 5.6e-17) tanh rounds to exactly 1; the core reports
     the largest float below 1 instead (one ulp off at most) and keeps the exact gap."""
     # hypothesis's find: rod 1 recoils at 1 - 1.1e-10, seen from beta = 0.999999 (rapidity -19)
-    s = rr.rod_collision(v1=0.0, v2=-0.999999999, m1=1.0, m2=3.0, l1=1.0, l2=1.0, eps=1.0)
+    s = rr.rod_collision(v1=0.0, v2=-0.999999999, mass1=1.0, mass2=3.0, length1=1.0, length2=1.0, eps=1.0)
     frame = rr.Frame.from_velocity(0.999999)
     t = np.linspace(*s.time_window(frame=frame), 257)
     v = s.velocities(t, frame=frame, fractions=np.linspace(0, 1, 5))
     assert np.all(np.abs(v) < 1.0) and v.min() == -BELOW_ONE
     # a light rod hit by a heavy one at 1 - 1e-12 leaves at 1 - 2.9e-24
-    heavy = rr.rod_collision(v1=1 - 1e-12, v2=0.0, m1=1e6, m2=1.0, l1=1.0, l2=1.0, eps=1.0)
+    heavy = rr.rod_collision(v1=1 - 1e-12, v2=0.0, mass1=1e6, mass2=1.0, length1=1.0, length2=1.0, eps=1.0)
     assert heavy.final_velocities[1] == BELOW_ONE
     assert heavy.rods[1].motion.velocity_final.gap == pytest.approx(2.914e-24, rel=1e-3)
     beta = heavy.frames["rod 2 after"].beta

@@ -162,7 +162,7 @@ def test_the_frame_menu_and_the_settings() -> None:
 
 
 def test_scenario_strings_ride() -> None:
-    line = "rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --ride 2:0.25"
+    line = "rod-collision --v1 0.6 --mass2 2 --v2 0 --length2 1 --eps 1 --ride 2:0.25"
     scenario = parse_scenario(line)
     assert scenario.settings.frame == RIDE_FRAME and scenario.settings.ride == RidePoint(1, 0.25)
     assert format_scenario(scenario.settings) == line

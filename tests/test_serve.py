@@ -157,18 +157,18 @@ def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
 
 
 def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
-    """``rigidrel serve rod-collision --m2 3 --frame 0.4``: a new tab shows that scene in that frame."""
+    """``rigidrel serve rod-collision --mass2 3 --frame 0.4``: a new tab shows that scene in that frame."""
     from rigidrel_app.cli import build_parser, start_settings
     from rigidrel_app.live.server import App
     from tests.viser_client import light_tab
 
-    args = build_parser().parse_args(["serve", "rod-collision", "--m2", "3", "--frame", "0.4", "--port", "0"])
+    args = build_parser().parse_args(["serve", "rod-collision", "--mass2", "3", "--frame", "0.4", "--port", "0"])
     start = start_settings("rigidrel serve", args)
     assert start is not None and args.port == 0
     with App(port=0, start=start) as app, light_tab(app) as tab:
         session, drawn = tab.session, tab.session.drawn
         assert session.settings == start and drawn is not None
-        assert drawn.resolved.scene.parameters["m2"] == 3.0
+        assert drawn.resolved.scene.parameters["mass2"] == 3.0
         assert drawn.resolved.frame.beta == 0.4
 
 

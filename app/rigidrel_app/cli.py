@@ -46,7 +46,22 @@ class SceneParser(OneLineParser):
 
 
 def _flag(p: rr.Parameter) -> str:
-    return "--" + p.name.replace("_", "-")
+    return _flag_of(p.name)
+
+
+def _flag_of(name: str) -> str:
+    return "--" + name.replace("_", "-")
+
+
+class _Renamed(argparse.Action):
+    """The option of a renamed parameter: a usage error that names the new option."""
+
+    def __init__(self, option_strings: list[str], dest: str, new: str, **kwargs: Any) -> None:
+        super().__init__(option_strings, dest, nargs=1, default=argparse.SUPPRESS, **kwargs)
+        self.new = new
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace, *_: object) -> None:
+        parser.error(f"{'/'.join(self.option_strings)} is now {self.new}")
 
 
 def _number(text: str) -> float:
@@ -82,6 +97,8 @@ def add_scene_subparsers(
                 help=f"{p.help}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
                 + ("; 'none' omits it" if p.optional else ""),
             )
+        for old, new in d.renamed.items():  # an old option is refused, naming its new name
+            sp.add_argument(_flag_of(old), action=_Renamed, new=_flag_of(new), help=argparse.SUPPRESS)
         sp.add_argument("--frame", default=None, help=frame_help + f"; presets: {', '.join(d.frames)}")
 
 

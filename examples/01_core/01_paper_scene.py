@@ -13,7 +13,7 @@ import rigidrel_core as rr
 
 
 def main() -> None:
-    scene = rr.build_scene("rod-collision", m1=1.0, m2=2.0)  # Fig. 3: the defaults are the paper's
+    scene = rr.build_scene("rod-collision", mass1=1.0, mass2=2.0)  # Fig. 3: the defaults are the paper's
     for name in ("lab", "barycentric"):
         frame = scene.frame(name)
         print(f"events in the {name} frame (beta = {frame.beta:.6f}):")

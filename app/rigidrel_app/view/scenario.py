@@ -1,6 +1,6 @@
 """Scenario strings: one line that names a whole state, the way the command line writes it.
 
-    rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --frame barycentric --t 0.3
+    rod-collision --v1 0.6 --mass2 2 --v2 0 --length2 1 --eps 1 --frame barycentric --t 0.3
 
 The scene's name, then one ``--flag value`` per parameter (the flag is the parameter's name with
 ``-`` for ``_``; ``none`` omits an optional one), then ``--frame`` (a preset name, quoted if it has
@@ -156,6 +156,10 @@ def parse_scenario(text: str) -> Scenario:
             overlay, i = True, i + 1
             continue
         if name not in (*by_flag, "--frame", "--t", "--layers", "--ride", "--cone"):
+            old = name.removeprefix("--").replace("-", "_")
+            if name.startswith("--") and old in d.renamed:  # a line written before the parameter was renamed
+                new = "--" + d.renamed[old].replace("_", "-")
+                raise ScenarioError(old.replace("_", "-"), f"{name} is now {new} (the parameter was renamed)")
             options = ", ".join((*by_flag, "--frame", "--t", "--overlay", "--layers", "--ride", "--cone"))
             raise ScenarioError("scene", f"{name!r} is not an option of {kind}; its options are {options}")
         if i + 1 >= len(rest):
