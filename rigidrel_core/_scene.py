@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import math
+import numbers
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -24,7 +25,7 @@ from ._frame import LAB, Frame, check_frame
 from ._kinds import ObstacleKind, OriginEvent
 from ._motion import PIECEWISE_MIN, MotionPlan
 from ._plastic import Motion, plan_rods
-from ._signals import ChangeVerdict, Exact, _event, change_verdict, signal_arrival_on
+from ._signals import ChangeVerdict, Exact, as_event, change_verdict, signal_arrival_on
 from ._validate import ParameterError, as_real, check_fractions, check_times, check_times_ordered
 
 FloatArray = npt.NDArray[np.float64]
@@ -35,6 +36,8 @@ FloatArray = npt.NDArray[np.float64]
 ENDS: FloatArray = np.frombuffer(np.array([0.0, 1.0]).tobytes(), dtype=np.float64)
 _ENDS_BYTES = ENDS.tobytes()
 _MAX_CACHED_PLANS = 64
+#: Plans by (frame velocity, fractions' bytes, rod or None for all).
+PlanCache = dict[tuple[object, ...], MotionPlan]
 
 
 @dataclass(frozen=True, init=False)
@@ -104,7 +107,7 @@ class Scene:
     """Invariant rest energy created (epsilon < 1), see :class:`FourMomentumBudget`."""
     origin_event: OriginEvent
     obstacles: tuple[Obstacle, ...] = ()
-    _plans: dict[tuple[object, ...], MotionPlan] = field(default_factory=dict, init=False, repr=False)
+    _plans: PlanCache = field(default_factory=PlanCache, init=False, repr=False)
 
     def __init__(
         self,
@@ -330,7 +333,8 @@ class Scene:
 
     # ------------------------------------------------------------------ signals
     def _rod_index(self, rod: object) -> int:
-        if isinstance(rod, bool) or not isinstance(rod, (int, np.integer)) or not 0 <= int(rod) < self.n_rods:
+        """``rod`` as an index of :attr:`rods`: an integer (a Python or numpy one, not a bool) in range."""
+        if isinstance(rod, bool) or not isinstance(rod, numbers.Integral) or not 0 <= int(rod) < self.n_rods:
             raise ParameterError("rod", f"a rod index from 0 to {self.n_rods - 1}", rod)
         return int(rod)
 
@@ -352,7 +356,7 @@ class Scene:
                 names = ", ".join(repr(n) for n in (self.origin_event.value, *events))
                 raise ParameterError("source", f"one of {names} or a (t, x) pair", source)
             return events[source]
-        return _event("source", source)
+        return as_event("source", source)
 
     def signal_arrival(
         self,

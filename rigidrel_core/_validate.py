@@ -6,7 +6,7 @@ import functools
 import math
 import numbers
 from collections.abc import Callable, Iterable, Mapping
-from typing import ParamSpec, TypeVar
+from typing import Any, ParamSpec, TypeVar, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -92,18 +92,21 @@ _FLOAT64 = np.dtype(np.float64)
 
 def _real_array(name: str, allowed: str, value: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """``value`` as a float64 array; complex, object or text arrays are refused, never cut to a part."""
+    got: object = value  # what the error names
     if isinstance(value, np.ndarray):
-        dtype = value.dtype
+        # isinstance narrows ArrayLike to ndarray[Unknown, ...]: numpy's stubs cannot say the shape type
+        array = cast(npt.NDArray[Any], value)
+        dtype = array.dtype
         if dtype == _FLOAT64:
-            return value  # what astype(float64, copy=False) returns, without the call
+            return array  # what astype(float64, copy=False) returns, without the call
         if dtype.kind in "biuf":
-            return value.astype(np.float64, copy=False)
+            return array.astype(np.float64, copy=False)
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):
-        raise ParameterError(name, allowed, value) from None
+        raise ParameterError(name, allowed, got) from None
     if raw.dtype.kind not in "biuf":
-        raise ParameterError(name, allowed, value)
+        raise ParameterError(name, allowed, got)
     return raw.astype(np.float64, copy=False)
 
 

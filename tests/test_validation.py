@@ -133,6 +133,12 @@ def test_unknown_scene_lists_the_scenes() -> None:
             assert kind in msg
 
 
+@pytest.mark.parametrize("rapidity", [True, "0.5", None, math.nan, math.inf, 700.5, -701.0, 1j])
+def test_bad_rapidity_is_named(rapidity: Any) -> None:
+    with pytest.raises(rr.ParameterError, match=r"^rapidity must be a finite number with \|rapidity\| <= 700"):
+        rr.Frame.from_rapidity(rapidity)
+
+
 def test_unknown_frame_lists_the_frames() -> None:
     """``scene.frame`` lists the scene's preset frames when given an unknown name."""
     for description in descriptions():

@@ -197,7 +197,7 @@ class PoleBarnScene(Scene):
     def verdicts(self) -> tuple[PoleVerdict, ...]:
         """One :class:`PoleVerdict` per pole, in words for the readout and the command line."""
         pole = self.frames["pole before"]
-        out = []
+        out: list[PoleVerdict] = []
         for i, model in enumerate(self.models):
             inside = (self.inside_in(i, frame=LAB), self.inside_in(i, frame=pole))
             door = (self.door_order_in(i, frame=LAB), self.door_order_in(i, frame=pole))
