@@ -65,7 +65,7 @@ def paper_case(n: int) -> tuple[rr.Scene, rr.Frame, FloatArray]:
     """Case (a): Fig. 3's collision, ``n`` sorted times across its time window in the boosted frame."""
     scene = rr.build_scene("rod-collision")
     frame = rr.Frame.from_velocity(FRAME_BETA)
-    return scene, frame, np.linspace(*scene.time_window(frame), n)
+    return scene, frame, np.linspace(*scene.time_window(frame=frame), n)
 
 
 def curved_case(n: int) -> tuple[rr.Scene, rr.Frame, FloatArray]:
@@ -78,7 +78,7 @@ def curved_case(n: int) -> tuple[rr.Scene, rr.Frame, FloatArray]:
     second = rr.constant_acceleration(v=0.8, length=1.5, a_front=0.04)
     scene = replace(first, rods=first.rods + second.rods)
     frame = rr.Frame.from_velocity(FRAME_BETA)
-    switch = scene.switch_times(frame).reshape(-1, 2)
+    switch = scene.switch_times(frame=frame).reshape(-1, 2)
     start, stop = float(switch[:, 0].max()), float(switch[:, 1].min())
     pad = 1e-6 * (stop - start)
     return scene, frame, np.linspace(start + pad, stop - pad, n)
@@ -86,7 +86,7 @@ def curved_case(n: int) -> tuple[rr.Scene, rr.Frame, FloatArray]:
 
 def curved_fraction(scene: rr.Scene, frame: rr.Frame, t: FloatArray) -> float:
     """Share of (end, time) samples on a curved piece: ``start <= t <= stop`` of that end (``switch_times``)."""
-    switch = scene.switch_times(frame).reshape(-1, 2)
+    switch = scene.switch_times(frame=frame).reshape(-1, 2)
     on = [np.count_nonzero((t >= a) & (t <= b)) for a, b in switch.tolist()]
     return sum(on) / (len(on) * t.size)
 
@@ -157,20 +157,22 @@ def run(n: int = 1_000_000, repeat: int = 21) -> dict[str, float]:
     figures: dict[str, float] = {"n_times": float(n), "rows": 4.0, "repeat": float(repeat)}
     figures["load_average_before"] = os.getloadavg()[0]
     for name, scene, frame, t in cases:
-        assert scene.positions(t[:1], frame).shape == (2, 2, 1)  # 2 rods x 2 ends: the same 4n outputs
-        base, sampled = alternated(baseline(t), lambda s=scene, f=frame, tt=t: s.positions(tt, f), repeat)
+        assert scene.positions(t[:1], frame=frame).shape == (2, 2, 1)  # 2 rods x 2 ends: the same 4n outputs
+        base, sampled = alternated(baseline(t), lambda s=scene, f=frame, tt=t: s.positions(tt, frame=f), repeat)
         figures[f"{name}_curved_fraction"] = curved_fraction(scene, frame, t)
         figures[f"{name}_baseline_ms"] = base * 1e3
         figures[f"{name}_positions_ms"] = sampled * 1e3
         figures[f"{name}_ratio"] = sampled / base
 
-    t256 = np.linspace(*paper.time_window(frame_a), 256)
+    t256 = np.linspace(*paper.time_window(frame=frame_a), 256)
     t1 = np.array([0.25])
     fresh = [rr.Frame.from_velocity(float(b)) for b in np.linspace(-0.9, 0.9, 20_001)]
     frames = itertools.cycle(fresh)  # the plan cache holds at most 64 frames: each call plans anew
-    figures["calls_256_times_planned_frame_us"] = per_call(lambda: paper.positions(t256, frame_a), 15, 1000) * 1e6
-    figures["calls_256_times_new_frame_us"] = per_call(lambda: paper.positions(t256, next(frames)), 15, 1000) * 1e6
-    figures["calls_1_time_planned_frame_us"] = per_call(lambda: paper.positions(t1, frame_a), 15, 2000) * 1e6
+    figures["calls_256_times_planned_frame_us"] = per_call(lambda: paper.positions(t256, frame=frame_a), 15, 1000) * 1e6
+    figures["calls_256_times_new_frame_us"] = (
+        per_call(lambda: paper.positions(t256, frame=next(frames)), 15, 1000) * 1e6
+    )
+    figures["calls_1_time_planned_frame_us"] = per_call(lambda: paper.positions(t1, frame=frame_a), 15, 2000) * 1e6
     figures["scene_construction_us"] = per_call(lambda: rr.build_scene("rod-collision"), 9, 100) * 1e6
     figures["load_average_after"] = os.getloadavg()[0]
     return figures

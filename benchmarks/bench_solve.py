@@ -48,7 +48,7 @@ import rigidrel_core as rr
 #: The last revision whose scenes were solved in 60-digit decimal.
 DECIMAL_REVISION = "e1aa9d5"
 BASELINE_NAME = "rigidrel_core_baseline"
-#: The benchmark collision of bench_core: v1, v2, m1, m2, l1, l2, eps.
+#: The benchmark collision of bench_core: v1, v2, mass1, mass2, length1, length2, eps.
 COLLISION = (0.6, -0.3, 1.0, 2.0, 1.0, 1.5, 0.8)
 
 #: The other collisions of the speed-accuracy bench and its stability map (v1, v2, m1, m2, eps):
@@ -144,9 +144,12 @@ def cases(core: ModuleType) -> dict[str, Case]:
         after, _ = _wall_solution(core, p["v"], p["eps"], p["mass"])
         return rigid(velocity(-p["v"]), after, p["length"], zero, 0.0)
 
+    p = d["rod-collision"]
+    # the paper's defaults; the masses were named m1, m2 before the parameters took one name per quantity
+    defaults = (p["v1"], p["v2"], *((p["mass1"], p["mass2"]) if "mass1" in p else (p["m1"], p["m2"])), p["eps"])
+
     def solve_default_collision() -> object:
-        p = d["rod-collision"]
-        return collision.solve_collision(p["v1"], p["v2"], p["m1"], p["m2"], p["eps"])
+        return collision.solve_collision(*defaults)
 
     v1, v2, m1, m2, _, _, eps = COLLISION
     out: dict[str, Case] = {

@@ -6,9 +6,9 @@ scalar solution is double-double arithmetic on Python floats); it never imports 
 viser or plotly.
 
     import rigidrel_core as rr
-    scene = rr.build_scene("rod-collision", m2=2.0)          # Fig. 3, case I
+    scene = rr.build_scene("rod-collision", mass2=2.0)          # Fig. 3, case I
     frame = scene.frame("barycentric")
-    x = scene.positions([0.0, 0.5], frame)                    # ends of both rods in that frame
+    x = scene.positions([0.0, 0.5], frame=frame)              # ends of both rods in that frame
     events_frame = frame @ [[t, x] for t, x in scene.events.values()]
 """
 

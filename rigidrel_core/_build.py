@@ -32,7 +32,7 @@ V = Parameter(
     "c",
     SPEED,
     0.6,
-    "final speed V (c = 1)",
+    "speed V (c = 1), before or after the change as the scene's summary says",
     Slider(0.01, 0.99, 0.01),
 )
 LENGTH = Parameter("length", "L0", "L0", "length unit", SIZE, 1.0, "rest length L0", typical=(0.1, 10.0))

@@ -18,9 +18,9 @@ subnormal, so a value under ~1e-292 carries an absolute (not relative) error of 
 
 These are plain functions on floats and ``(hi, lo)`` tuples, for code that runs once per
 call (composing frames, a frame from its rapidity, the wall, the accelerations, the
-barycentric velocities of a collision). A Python call costs about as much as the arithmetic
-it wraps, so :func:`rigidrel_core.scenes.collision.solve_collision` writes the same steps out
-inline, naming them in comments.
+barycentric velocities of a collision). A Python call costs about as much as a few float
+operations, so each operation writes its error-free transformations out (one call per
+operation, none nested); :func:`one_minus_abs` gives a velocity's gap to light speed.
 """
 
 from __future__ import annotations
@@ -67,45 +67,105 @@ def two_prod(a: float, b: float) -> DD:
 
 
 def add(a: DD, b: DD) -> DD:
-    """``a + b``, normalised; also accurate when the two nearly cancel (both parts summed exactly)."""
-    s, e = two_sum(a[0], b[0])
-    t, f = two_sum(a[1], b[1])
-    s, e = fast_two_sum(s, e + t)
-    return fast_two_sum(s, e + f)
+    """``a + b``, normalised; also accurate when the two nearly cancel (both parts summed exactly):
+    two_sum of the high parts and of the low parts, then two fast_two_sums (written out, here and
+    in the operations below: a call costs as much as a few float operations)."""
+    ah, al = a
+    bh, bl = b
+    s = ah + bh
+    t = s - ah
+    e = (ah - (s - t)) + (bh - t)
+    f = al + bl
+    t = f - al
+    g = (al - (f - t)) + (bl - t)
+    e += f
+    h = s + e
+    e -= h - s
+    e += g
+    s = h + e
+    return s, e - (s - h)
 
 
 def add_float(a: DD, b: float) -> DD:
     """``a + b`` for a float ``b``, normalised."""
-    s, e = two_sum(a[0], b)
-    return fast_two_sum(s, e + a[1])
+    s = a[0] + b
+    t = s - a[0]
+    e = ((a[0] - (s - t)) + (b - t)) + a[1]
+    h = s + e
+    return h, e - (h - s)
 
 
 def mul(a: DD, b: DD) -> DD:
-    """``a b``, normalised."""
-    p, e = two_prod(a[0], b[0])
-    return fast_two_sum(p, e + (a[0] * b[1] + a[1] * b[0]))
+    """``a b``, normalised: two_prod of the high parts plus the cross terms."""
+    ah, al = a
+    bh, bl = b
+    p = ah * bh
+    t = SPLITTER * ah
+    a_h = t - (t - ah)
+    a_t = ah - a_h
+    t = SPLITTER * bh
+    b_h = t - (t - bh)
+    b_t = bh - b_h
+    e = (((a_h * b_h - p) + a_h * b_t + a_t * b_h) + a_t * b_t) + (ah * bl + al * bh)
+    s = p + e
+    return s, e - (s - p)
 
 
 def mul_float(a: DD, b: float) -> DD:
     """``a b`` for a float ``b``, normalised."""
-    p, e = two_prod(a[0], b)
-    return fast_two_sum(p, e + a[1] * b)
+    ah = a[0]
+    p = ah * b
+    t = SPLITTER * ah
+    a_h = t - (t - ah)
+    a_t = ah - a_h
+    t = SPLITTER * b
+    b_h = t - (t - b)
+    b_t = b - b_h
+    e = (((a_h * b_h - p) + a_h * b_t + a_t * b_h) + a_t * b_t) + a[1] * b
+    s = p + e
+    return s, e - (s - p)
+
+
+def one_minus_abs(a: DD) -> float:
+    """``1 - |a|`` for ``|a| <= 1``, rounded once to float64 (``1 - |a_hi|`` is taken exactly, by
+    fast_two_sum): the gap of a velocity to light speed, correctly rounded where ``|a| >= 1/2``."""
+    ah, al = a
+    if ah < 0.0:
+        ah, al = -ah, -al
+    g = 1.0 - ah
+    return g + (((1.0 - g) - ah) - al)
 
 
 def div(a: DD, b: DD) -> DD:
     """``a / b``, normalised: ``q = fl(a_hi / b_hi)`` corrected by the exact residual ``(a - q b) / b``."""
-    q = a[0] / b[0]
-    p, e = two_prod(q, b[0])
-    return fast_two_sum(q, (((a[0] - p) - e) + a[1] - q * b[1]) / b[0])
+    bh = b[0]
+    q = a[0] / bh
+    p = q * bh
+    t = SPLITTER * q
+    q_h = t - (t - q)
+    q_t = q - q_h
+    t = SPLITTER * bh
+    b_h = t - (t - bh)
+    b_t = bh - b_h
+    e = ((q_h * b_h - p) + q_h * b_t + q_t * b_h) + q_t * b_t
+    r = (((a[0] - p) - e) + a[1] - q * b[1]) / bh
+    s = q + r
+    return s, r - (s - q)
 
 
 def sqrt(a: DD) -> DD:
     """``sqrt(a)`` for ``a >= 0``, normalised: ``r = fl(sqrt(a_hi))`` plus ``(a - r^2) / (2 r)``."""
-    if a[0] <= 0.0:
+    ah = a[0]
+    if ah <= 0.0:
         return 0.0, 0.0
-    r = math.sqrt(a[0])
-    p, e = two_prod(r, r)
-    return fast_two_sum(r, (((a[0] - p) - e) + a[1]) / (2.0 * r))
+    r = math.sqrt(ah)
+    p = r * r
+    t = SPLITTER * r
+    h = t - (t - r)
+    lo = r - h
+    c = (((ah - p) - (((h * h - p) + h * lo + lo * h) + lo * lo)) + a[1]) / (2.0 * r)
+    s = r + c
+    return s, c - (s - r)
 
 
 def _exact_dd(x: Fraction) -> DD:

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Literal
 
 from ._kinds import ObstacleKind as ObstacleKind
 from ._kinds import OriginEvent as OriginEvent
-from ._validate import ParameterError, as_real
+from ._validate import ParameterError, RenamedParameterError, as_real
 
 if TYPE_CHECKING:
     from ._scene import Scene
@@ -183,6 +183,10 @@ class SceneDescription:
     overlay: Overlay | None = None
     order: int = 100
     """Position in the app's menu (teaching order)."""
+    renamed: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}))
+    """Old parameter names and the names that replaced them (``{"m2": "mass2"}``): the constructor,
+    the registry, scenario strings, lesson files and the command line refuse an old name and name
+    the new one."""
     parameter_map: Mapping[str, Parameter] = field(init=False, repr=False, compare=False)
     _defaults: Mapping[str, float | None] = field(init=False, repr=False, compare=False)
 
@@ -190,6 +194,9 @@ class SceneDescription:
         names = [p.name for p in self.parameters]
         if len(set(names)) != len(names):
             raise ValueError(f"{self.kind}: duplicate parameter names {names}")
+        stale = [old for old, new in self.renamed.items() if old in names or new not in names]
+        if stale:
+            raise ValueError(f"{self.kind}: renamed {stale} must be old names of its parameters, not current ones")
         if self.default_frame not in self.frames or self.frames[:1] != ("lab",) or self.default_frame == "lab":
             raise ValueError(f"{self.kind}: frames must start with 'lab' and hold a default other than the lab")
         object.__setattr__(self, "parameter_map", MappingProxyType({p.name: p for p in self.parameters}))
@@ -199,6 +206,8 @@ class SceneDescription:
         try:
             return self.parameter_map[name]
         except KeyError:
+            if name in self.renamed:
+                raise RenamedParameterError(f"the scene {self.kind!r}", self.renamed, (name,)) from None
             allowed = f"one of the parameters of {self.kind}: {', '.join(self.parameter_map)}"
             raise ParameterError(name, allowed, name) from None
 
@@ -214,6 +223,8 @@ class SceneDescription:
         known = self.parameter_map
         for name in values:
             if name not in known:
+                if name in self.renamed:  # every old name given, with its new one
+                    raise RenamedParameterError(f"the scene {self.kind!r}", self.renamed, values)
                 self.parameter(name)  # names the parameters there are
         given = {**self._defaults, **values}
         scene = self.constructor(**given)

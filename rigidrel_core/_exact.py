@@ -151,7 +151,7 @@ def compose_velocities(a: ExactVelocity, b: ExactVelocity) -> ExactVelocity:
         denominator = _dd.add_float(_dd.mul((a.hi, a.lo), (b.hi, b.lo)), 1.0)
     v = _dd.div(_dd.add((a.hi, a.lo), (b.hi, b.lo)), denominator)
     if abs(v[0]) < 0.5:  # 1 - |v| >= 1/2: no cancellation
-        gap = _dd.add_float((-v[0], -v[1]) if v[0] >= 0.0 else v, 1.0)[0]
+        gap = _dd.one_minus_abs(v)
     elif v[0] > 0.0:
         gap = _dd.div(_dd.mul(a_minus, b_minus), denominator)[0]
     else:

@@ -24,7 +24,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ._exact import REST, ExactVelocity, compose_velocities, relative_rapidity, velocity_from_rapidity
-from ._validate import ParameterError, check_velocity
+from ._validate import ParameterError, as_real, check_velocity
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -67,9 +67,7 @@ class Frame:
         2/(exp(2|psi|) + 1)`` to double-double, so that the velocity and its gap to light speed agree
         and rapidities of frames add exactly under ``@``."""
         allowed = "a finite number with |rapidity| <= 700"
-        if isinstance(rapidity, bool) or not isinstance(rapidity, (int, float)):
-            raise ParameterError("rapidity", allowed, rapidity)
-        psi = float(rapidity)
+        psi = as_real("rapidity", rapidity, allowed)  # also refuses what is not a number at run time
         if not abs(psi) <= 700.0:
             raise ParameterError("rapidity", allowed, rapidity)
         return cls(velocity_from_rapidity(psi), name)
@@ -122,8 +120,9 @@ class Frame:
         """The boost back: the lab seen from this frame moves with ``-beta``."""
         return Frame(self.velocity.negated(), None)
 
-    def relative_to(self, other: Frame) -> float:
-        """Rapidity of this frame seen from ``other`` (``psi - psi_other``), to a few ulp of itself."""
+    def rapidity_relative_to(self, other: Frame) -> float:
+        """The rapidity of this frame seen from ``other``, ``psi - psi_other`` (a number, not a frame;
+        the frame itself is ``self @ other.inverse()``), to a few ulp of itself."""
         return relative_rapidity(self.velocity, other.velocity)
 
     @overload

@@ -314,7 +314,8 @@ def lab_row(m: RigidMotion, f: float, sums: Sequence[_AnchorSum], exact: bool = 
     if rho < 0.0:  # a point beyond the centre cannot be (radii are >= 0); only rounding gets here
         rho, rho_lo = 0.0, 0.0
     srho, srho_lo, axc, ax = sig * rho, sig * rho_lo, abs(xc), abs(x_lab)
-    highs, lows = [], []
+    highs: list[float] = []
+    lows: list[float] = []
     for k, (f_float, f1_float, abs_f, abs_f1) in enumerate(sums):
         by_centre, by_vertex = axc + rho * abs_f, ax + rho * abs_f1
         from_centre = by_centre <= by_vertex
@@ -357,7 +358,7 @@ def _float_lab_rows(m: RigidMotion, fractions: list[float]) -> tuple[LabRow, ...
         ),
     ) = sums
     c = _CANCELLATION
-    rows = []
+    rows: list[LabRow] = []
     for f in fractions:
         along = 0.0 if f == 0.0 else length if f == 1.0 else f * length  # lab_row's, without the low parts
         rho = r_left + sig * along  # the high parts of lab_row's two_sums
@@ -416,7 +417,8 @@ def _redo_cancelled(
     rho_lo = two_sum(m.radius_left, sig * along)[1] + sig * along_lo
     x_lo = two_sum(m.vertex_left, along)[1] + along_lo
     srho = (sig * rho, sig * rho_lo)
-    highs, lows = [], []
+    highs: list[float] = []
+    lows: list[float] = []
     for k, (total, b, d) in enumerate(zip(totals, by_centre, by_vertex, strict=True)):
         from_centre = b <= d
         if abs(total) * _CANCELLATION >= (b if from_centre else d):
@@ -429,9 +431,6 @@ def _redo_cancelled(
         highs.append(hi)
         lows.append(lo)
     return LabRow._make((rho, x_lab, *highs, tuple(lows)))
-
-
-_NO_LOW_PARTS = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 
 
 def _factor_dd(v: ExactVelocity, sign: float) -> DD:

@@ -53,15 +53,14 @@ def describe(kind: str | Scene) -> SceneDescription:
     name = kind.kind if isinstance(kind, Scene) else kind
     reg = _ensure_loaded()
     try:
-        return reg[name]  # type: ignore[index]
+        return reg[name]
     except (KeyError, TypeError):
         raise ParameterError("scene", f"one of {', '.join(reg)}", kind) from None
 
 
 def register_scene(description: SceneDescription) -> SceneDescription:
     """Add a scene to the registry (``ValueError`` if its name is taken by another description)."""
-    if not isinstance(description, SceneDescription):
-        raise ParameterError("description", "a SceneDescription", description)
+    description = _checked_description(description)
     global _ordered
     reg = _ensure_loaded()
     with _lock:
@@ -70,6 +69,13 @@ def register_scene(description: SceneDescription) -> SceneDescription:
         reg[description.kind] = description
         _ordered = None
     return description
+
+
+def _checked_description(value: object) -> SceneDescription:
+    """``value`` if it is a :class:`SceneDescription` (callers from notebooks are not type-checked)."""
+    if not isinstance(value, SceneDescription):
+        raise ParameterError("description", "a SceneDescription", value)
+    return value
 
 
 def unregister_scene(kind: str) -> SceneDescription:

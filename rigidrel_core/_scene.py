@@ -1,14 +1,16 @@
 """A solved scene: rods with Born-rigid motions, obstacles, named events and frame presets.
 
 Every sampler takes times of a frame and returns that frame's coordinates, with the
-signature ``(t, frame, *, fractions=...)`` (units c = 1). Nothing here knows which scene it
-is: the constructors in :mod:`rigidrel_core.scenes` fill it in.
+signature ``(t, *, frame=LAB, fractions=...)`` (units c = 1); every query that takes a frame
+takes it by name. Nothing here knows which scene it is: the constructors in
+:mod:`rigidrel_core.scenes` fill it in.
 """
 
 from __future__ import annotations
 
 import functools
 import math
+import numbers
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -23,15 +25,19 @@ from ._frame import LAB, Frame, check_frame
 from ._kinds import ObstacleKind, OriginEvent
 from ._motion import PIECEWISE_MIN, MotionPlan
 from ._plastic import Motion, plan_rods
-from ._signals import ChangeVerdict, Exact, _event, change_verdict, signal_arrival_on
+from ._signals import ChangeVerdict, Exact, as_event, change_verdict, signal_arrival_on
 from ._validate import ParameterError, as_real, check_fractions, check_times, check_times_ordered
 
 FloatArray = npt.NDArray[np.float64]
 
 #: The two ends of a rod as material coordinates (fractions of the rest length from the left end).
-ENDS = np.array([0.0, 1.0])
+#: Read-only, and for good (a view of immutable bytes: its ``writeable`` flag cannot be set again):
+#: it is the samplers' default argument and part of the plan cache's key.
+ENDS: FloatArray = np.frombuffer(np.array([0.0, 1.0]).tobytes(), dtype=np.float64)
 _ENDS_BYTES = ENDS.tobytes()
 _MAX_CACHED_PLANS = 64
+#: Plans by (frame velocity, fractions' bytes, rod or None for all).
+PlanCache = dict[tuple[object, ...], MotionPlan]
 
 
 @dataclass(frozen=True, init=False)
@@ -69,7 +75,7 @@ class Obstacle:
     x0: float
     velocity: ExactVelocity
 
-    def positions(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def positions(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """x' of the obstacle at times ``t'`` of ``frame``: ``x' = x'_0 + w (t' - t'_0)``, with
         ``w`` its velocity in the frame and ``(t'_0, x'_0)`` its lab event at t = 0 seen there
         (``x' = -beta t'`` for a wall at rest at the origin)."""
@@ -101,7 +107,7 @@ class Scene:
     """Invariant rest energy created (epsilon < 1), see :class:`FourMomentumBudget`."""
     origin_event: OriginEvent
     obstacles: tuple[Obstacle, ...] = ()
-    _plans: dict[tuple[object, ...], MotionPlan] = field(default_factory=dict, init=False, repr=False)
+    _plans: PlanCache = field(default_factory=PlanCache, init=False, repr=False)
 
     def __init__(
         self,
@@ -154,9 +160,9 @@ class Scene:
     @functools.cached_property
     def events(self) -> Mapping[str, tuple[float, float]]:
         """Named events as lab ``(t, x)``, in the paper's notation."""
-        return self.events_in(LAB)
+        return self.events_in(frame=LAB)
 
-    def events_in(self, frame: Frame = LAB) -> Mapping[str, tuple[float, float]]:
+    def events_in(self, *, frame: Frame = LAB) -> Mapping[str, tuple[float, float]]:
         """The named events as ``(t', x')`` of ``frame`` (computed there, not boosted)."""
         frame = check_frame(frame)
         out: dict[str, tuple[float, float]] = {}
@@ -185,7 +191,7 @@ class Scene:
             self._plans[key] = plan
         return plan
 
-    def positions(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def positions(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """x' of [left end, right end] of each rod at times ``t'`` of ``frame``.
 
         Shape ``(n_rods, 2, *t.shape)``. Closed form, see :mod:`rigidrel_core._motion`.
@@ -195,7 +201,7 @@ class Scene:
         x = self._plan(frame, ENDS).positions(tt.ravel(), ordered=ordered)
         return x.reshape((self.n_rods, 2, *tt.shape))
 
-    def material_positions(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike) -> FloatArray:
+    def material_positions(self, t: npt.ArrayLike, *, frame: Frame = LAB, fractions: npt.ArrayLike) -> FloatArray:
         """x' of material points (fractions of the rest length from the left end, in [0, 1]).
 
         Shape ``(n_rods, len(fractions), *t.shape)``.
@@ -206,7 +212,7 @@ class Scene:
         x = self._plan(frame, f).positions(tt.ravel(), ordered=ordered)
         return x.reshape((self.n_rods, f.size, *tt.shape))
 
-    def velocities(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = ENDS) -> FloatArray:
+    def velocities(self, t: npt.ArrayLike, *, frame: Frame = LAB, fractions: npt.ArrayLike = ENDS) -> FloatArray:
         """dx'/dt' of material points (default: the ends). Shape ``(n_rods, len(fractions), *t.shape)``."""
         frame = check_frame(frame)
         tt = check_times("t", t)
@@ -214,7 +220,7 @@ class Scene:
         v = self._plan(frame, f).velocities(tt.ravel())
         return v.reshape((self.n_rods, f.size, *tt.shape))
 
-    def proper_times(self, t: npt.ArrayLike, frame: Frame = LAB, *, fractions: npt.ArrayLike = ENDS) -> FloatArray:
+    def proper_times(self, t: npt.ArrayLike, *, frame: Frame = LAB, fractions: npt.ArrayLike = ENDS) -> FloatArray:
         """Clock readings of material points at frame times ``t'``.
 
         Every clock reads 0 where its point starts changing velocity: the clocks are
@@ -228,7 +234,7 @@ class Scene:
         tau = self._plan(frame, f).proper_times(tt.ravel())
         return tau.reshape((self.n_rods, f.size, *tt.shape))
 
-    def snapshot(self, t: float, frame: Frame = LAB, *, fractions: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
+    def snapshot(self, t: float, *, frame: Frame = LAB, fractions: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
         """Positions of material points and the ends' clock readings at one frame time.
 
         The per-frame call of an animation: ``(x' of shape (n_rods, len(fractions)),
@@ -248,7 +254,7 @@ class Scene:
         tau = plan.proper_times(tt).reshape(self.n_rods, f.size)
         return x, tau[:, [0, -1]]
 
-    def lengths(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def lengths(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """Equal-time length ``x'_right(t') - x'_left(t')`` of each rod in ``frame`` (Fig. 2).
 
         Shape ``(n_rods, *t.shape)``. Exactly ``L / cosh(theta')`` while both ends coast.
@@ -260,7 +266,7 @@ class Scene:
         lengths = self._plan(frame, ENDS).equal_time_lengths(tt.ravel(), rest, rest_after)
         return lengths.reshape((self.n_rods, *tt.shape))
 
-    def switch_times(self, frame: Frame = LAB, *, fractions: npt.ArrayLike = ENDS) -> FloatArray:
+    def switch_times(self, *, frame: Frame = LAB, fractions: npt.ArrayLike = ENDS) -> FloatArray:
         """Frame times at which each material point starts and stops changing velocity.
 
         Shape ``(n_rods, len(fractions), 2)``; between them the point is on its hyperbola,
@@ -271,7 +277,7 @@ class Scene:
         plan = self._plan(frame, f)
         return np.stack([plan.t_start, plan.t_stop], axis=-1).reshape((self.n_rods, f.size, 2))
 
-    def time_window(self, frame: Frame = LAB, *, margin: float = 0.35) -> tuple[float, float]:
+    def time_window(self, *, frame: Frame = LAB, margin: float = 0.35) -> tuple[float, float]:
         """A frame-time interval that holds every named event and the origin, padded by ``margin``."""
         frame = check_frame(frame)
         times = [0.0]
@@ -283,7 +289,7 @@ class Scene:
         scale = max(t1 - t0, max(r.motion.length for r in self.rods) / frame.lorentz_factor)
         return (t0 - margin * scale, t1 + margin * scale)
 
-    def notes(self, frame: Frame = LAB) -> tuple[str, ...]:
+    def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
         """What a scene says in words beside its events, seen from ``frame`` (a paradox's verdicts);
         none for most scenes."""
         del frame
@@ -298,7 +304,7 @@ class Scene:
         return (0,) * len(self.rods)
 
     # ------------------------------------------------------------------- budget
-    def budget(self, frame: Frame = LAB) -> FourMomentumBudget:
+    def budget(self, *, frame: Frame = LAB) -> FourMomentumBudget:
         """Energy and momentum of every rod before and after, in ``frame`` (c = 1)."""
         frame = check_frame(frame)
         m0 = np.array([r.mass_before for r in self.rods])
@@ -327,7 +333,8 @@ class Scene:
 
     # ------------------------------------------------------------------ signals
     def _rod_index(self, rod: object) -> int:
-        if isinstance(rod, bool) or not isinstance(rod, (int, np.integer)) or not 0 <= int(rod) < self.n_rods:
+        """``rod`` as an index of :attr:`rods`: an integer (a Python or numpy one, not a bool) in range."""
+        if isinstance(rod, bool) or not isinstance(rod, numbers.Integral) or not 0 <= int(rod) < self.n_rods:
             raise ParameterError("rod", f"a rod index from 0 to {self.n_rods - 1}", rod)
         return int(rod)
 
@@ -337,19 +344,19 @@ class Scene:
             raise ParameterError("fraction", "a number in [0, 1]", fraction)
         return f
 
-    def source_event(self, source: str | npt.ArrayLike, frame: Frame = LAB) -> tuple[float, float]:
+    def source_event(self, source: str | npt.ArrayLike, *, frame: Frame = LAB) -> tuple[float, float]:
         """An event as frame ``(t', x')``: a named event (``"T_1"``), the scene's origin event by its
         name (``"contact"``, ``"kick"``, ... which is ``(0, 0)`` in every frame), or a ``(t', x')`` pair."""
         frame = check_frame(frame)
         if isinstance(source, str):
             if source == self.origin_event.value:
                 return (0.0, 0.0)
-            events = self.events_in(frame)
+            events = self.events_in(frame=frame)
             if source not in events:
                 names = ", ".join(repr(n) for n in (self.origin_event.value, *events))
                 raise ParameterError("source", f"one of {names} or a (t, x) pair", source)
             return events[source]
-        return _event("source", source)
+        return as_event("source", source)
 
     def signal_arrival(
         self,
@@ -376,19 +383,19 @@ class Scene:
         f = self._fraction(fraction)
         if direction is not None and direction not in (1, -1):
             raise ParameterError("direction", "+1, -1 or None (toward the point)", direction)
-        return signal_arrival_on(self.rods[i].motion, f, frame, self._light_cone(source, frame), direction)
+        return signal_arrival_on(self.rods[i].motion, f, frame, self._light_cone(source, frame=frame), direction)
 
-    def _light_cone(self, source: str | npt.ArrayLike, frame: Frame) -> tuple[Exact, Exact]:
+    def _light_cone(self, source: str | npt.ArrayLike, *, frame: Frame) -> tuple[Exact, Exact]:
         """The lab ``(t - x, t + x)`` of a source to double-double: exact for the scene's own events
         (the motion's lab rows), from the given frame pair (boosted back) otherwise."""
         if isinstance(source, str) and source != self.origin_event.value:
-            self.source_event(source, frame)  # names the valid sources if this one is not
+            self.source_event(source, frame=frame)  # names the valid sources if this one is not
             spec = next(s for s in self.event_specs if s.name == source)
             row = self.rods[spec.rod].motion.lab_rows(ENDS, exact=True)[spec.end]
             if spec.phase == "start":
                 return (-row.minus_u_start, -row.low[1]), (row.w_start, row.low[2])
             return (-row.minus_u_stop, -row.low[4]), (row.w_stop, row.low[5])
-        t, x = self.source_event(source, frame)
+        t, x = self.source_event(source, frame=frame)
         up, down = frame.doppler_factors()
         return ((t - x) / up, 0.0), ((t + x) / down, 0.0)
 
@@ -418,7 +425,7 @@ class Scene:
             tt = check_times("t", t)
             if tt.shape != ():
                 raise ParameterError("t", "one time (a real number)", t)
-            tau = float(self.proper_times(tt.reshape(1), frame, fractions=np.array([f]))[i, 0, 0])
+            tau = float(self.proper_times(tt.reshape(1), frame=frame, fractions=np.array([f]))[i, 0, 0])
         else:
             tau = as_real("proper_time", proper_time, "a finite number")
         motion = self.rods[i].motion
@@ -466,7 +473,7 @@ class Scene:
         h = 2.0 * rho * math.sinh(0.5 * tau / rho)
         return float(start[0, 0]) + h * math.cosh(m), float(start[0, 1]) + h * math.sinh(m)
 
-    def horizon_event(self, rod: int, frame: Frame = LAB) -> tuple[float, float]:
+    def horizon_event(self, rod: int, *, frame: Frame = LAB) -> tuple[float, float]:
         """The centre event of ``rod``'s change, ``(t', x')`` of ``frame``: every hyperbola of the change
         is centred on it, so the comoving frames' lines of simultaneity all pass through it (Sec. 3;
         it is the horizon of the points' accelerated frame). Lab ``(0, horizon_x)``, one boost here."""

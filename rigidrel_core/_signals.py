@@ -69,7 +69,9 @@ class CausalRelation:
         return math.sqrt(-self.interval) if self.interval < 0.0 else 0.0
 
 
-def _event(name: str, value: object) -> Event:
+def as_event(name: str, value: object) -> Event:
+    """``value`` as an event ``(t, x)`` of two finite floats; a :class:`ParameterError` naming ``name``
+    otherwise."""
     allowed = "an event (t, x): two finite real numbers"
     try:
         arr = np.asarray(value)
@@ -86,8 +88,8 @@ def causal_relation(a: npt.ArrayLike, b: npt.ArrayLike) -> CausalRelation:
 
     ``s^2 = (dt - dx)(dt + dx)``: positive is timelike, zero lightlike, negative spacelike.
     """
-    ta, xa = _event("a", a)
-    tb, xb = _event("b", b)
+    ta, xa = as_event("a", a)
+    tb, xb = as_event("b", b)
     du = (tb - ta) - (xb - xa)
     dw = (tb - ta) + (xb - xa)
     interval = du * dw
@@ -177,7 +179,7 @@ def signal_arrival_on(
         return up * u_stop[0] + math.exp(-2.0 * th_f) * down * _minus(w0, w_stop)
 
     u0_frame, w0_frame = up * (u0[0] + u0[1]), down * (w0[0] + w0[1])
-    found = []
+    found: list[tuple[float, float]] = []  # light-cone coordinates (u', w') of each meeting
     if direction != -1:
         w = rightward()
         if w >= w0_frame:  # a ray toward +x meets the point in its future

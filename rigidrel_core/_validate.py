@@ -5,9 +5,14 @@ from __future__ import annotations
 import functools
 import math
 import numbers
+from collections.abc import Callable, Iterable, Mapping
+from typing import Any, ParamSpec, TypeVar, cast
 
 import numpy as np
 import numpy.typing as npt
+
+P = ParamSpec("P")
+R = TypeVar("R")
 
 #: Largest |time| accepted by the samplers; beyond it float64 products may overflow.
 MAX_ABS_TIME = 1e300
@@ -20,6 +25,45 @@ class ParameterError(ValueError):
         self.parameter = name
         self.allowed = allowed
         super().__init__(f"{name} must be {allowed}; got {got!r}")
+
+
+class RenamedParameterError(ParameterError, TypeError):
+    """An old name of a renamed parameter, refused with the new one named:
+    ``rod_collision() got 'm2'; it is now 'mass2'``. A ``TypeError``, as Python's own error for an
+    unknown keyword, and a :class:`ParameterError` (a ``ValueError``), as the registry's for an
+    unknown parameter."""
+
+    def __init__(self, who: str, renamed: Mapping[str, str], given: Iterable[str]) -> None:
+        old = [name for name in given if name in renamed]
+        new = [renamed[name] for name in old]
+        if len(old) == 1:
+            text = f"{who} got {old[0]!r}; it is now {new[0]!r}"
+        else:
+            text = f"{who} got {', '.join(map(repr, old))}; they are now {', '.join(map(repr, new))}"
+        self.parameter = old[0]
+        self.allowed = f"now called {new[0]!r}"
+        self.renamed = dict(zip(old, new, strict=True))
+        Exception.__init__(self, text)
+
+
+def refuse_renamed(renamed: Mapping[str, str]) -> Callable[[Callable[P, R]], Callable[P, R]]:
+    """Make a constructor refuse the old names of its renamed keywords (``{old: new}``) with a
+    :class:`RenamedParameterError` naming the new ones (Python's own error names only the old)."""
+
+    def decorate(constructor: Callable[P, R]) -> Callable[P, R]:
+        who = f"{constructor.__name__}()"
+        old_names = tuple(renamed)
+
+        @functools.wraps(constructor)
+        def refusing(*args: P.args, **kwargs: P.kwargs) -> R:
+            for name in old_names:
+                if name in kwargs:
+                    raise RenamedParameterError(who, renamed, kwargs)
+            return constructor(*args, **kwargs)
+
+        return refusing
+
+    return decorate
 
 
 def as_real(name: str, value: object, allowed: str) -> float:
@@ -48,18 +92,21 @@ _FLOAT64 = np.dtype(np.float64)
 
 def _real_array(name: str, allowed: str, value: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """``value`` as a float64 array; complex, object or text arrays are refused, never cut to a part."""
+    got: object = value  # what the error names
     if isinstance(value, np.ndarray):
-        dtype = value.dtype
+        # isinstance narrows ArrayLike to ndarray[Unknown, ...]: numpy's stubs cannot say the shape type
+        array = cast(npt.NDArray[Any], value)
+        dtype = array.dtype
         if dtype == _FLOAT64:
-            return value  # what astype(float64, copy=False) returns, without the call
+            return array  # what astype(float64, copy=False) returns, without the call
         if dtype.kind in "biuf":
-            return value.astype(np.float64, copy=False)
+            return array.astype(np.float64, copy=False)
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):
-        raise ParameterError(name, allowed, value) from None
+        raise ParameterError(name, allowed, got) from None
     if raw.dtype.kind not in "biuf":
-        raise ParameterError(name, allowed, value)
+        raise ParameterError(name, allowed, got)
     return raw.astype(np.float64, copy=False)
 
 

@@ -26,9 +26,9 @@ def fig1_impulsive_start() -> Scene:
 
 def fig3_case_one() -> Scene:
     """Fig. 3, case I: M2 = 2 M1, V1 = 0.6, V2 = 0, equal rest lengths, elastic."""
-    return rod_collision(v1=PAPER_V, v2=0.0, m1=1.0, m2=2.0, l1=1.0, l2=1.0, eps=1.0)
+    return rod_collision(v1=PAPER_V, v2=0.0, mass1=1.0, mass2=2.0, length1=1.0, length2=1.0, eps=1.0)
 
 
 def fig4_case_two() -> Scene:
     """Fig. 4, case II: M1 = 2 M2, V1 = 0.6, V2 = 0, equal rest lengths, elastic."""
-    return rod_collision(v1=PAPER_V, v2=0.0, m1=2.0, m2=1.0, l1=1.0, l2=1.0, eps=1.0)
+    return rod_collision(v1=PAPER_V, v2=0.0, mass1=2.0, mass2=1.0, length1=1.0, length2=1.0, eps=1.0)

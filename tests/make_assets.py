@@ -60,7 +60,7 @@ class _Tab:
             drawn = self.session.drawn
             assert drawn is not None and drawn.resolved.scene.kind == settings.scene, settings
             if now is None:
-                times = [t for t, _ in drawn.resolved.scene.events_in(drawn.resolved.frame).values()]
+                times = [t for t, _ in drawn.resolved.scene.events_in(frame=drawn.resolved.frame).values()]
                 now = 0.5 * (min(times) + max(times))
             self.session.seek(now)
 

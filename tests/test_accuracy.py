@@ -89,7 +89,7 @@ def position_errors(scene: rr.Scene, case: dict[str, Any], fr: dict[str, Any]) -
     fractions = np.array([float.fromhex(f) for f in case["fractions"]])
     t = np.array([float.fromhex(x) for x in fr["times"]])
     ref = decimals(fr["positions"])
-    got = scene.material_positions(t, frame(float.fromhex(fr["beta"])), fractions=fractions)
+    got = scene.material_positions(t, frame=frame(float.fromhex(fr["beta"])), fractions=fractions)
     assert got.shape == ref.shape
     ref_len = decimals(fr["lengths"])  # end-to-end equal-time lengths, reference at 50 digits
     scale = np.maximum(np.abs(ref), np.abs(ref_len)[:, None, :])
@@ -102,7 +102,7 @@ def length_errors(scene: rr.Scene, fr: dict[str, Any]) -> FloatArray:
     t = np.array([float.fromhex(x) for x in fr["times"]])
     ref = decimals(fr["positions"])
     ref_len = decimals(fr["lengths"])
-    got = scene.lengths(t, frame(float.fromhex(fr["beta"])))
+    got = scene.lengths(t, frame=frame(float.fromhex(fr["beta"])))
     assert got.shape == ref_len.shape
     ends = np.maximum(np.abs(ref[:, 0]), np.abs(ref[:, -1]))
     return np.abs(got - ref_len) / (TOL_LENGTH_REL * np.abs(ref_len) + TOL_LENGTH_ULP * np.spacing(ends))
@@ -114,7 +114,7 @@ def clock_errors(scene: rr.Scene, case: dict[str, Any], fr: dict[str, Any]) -> F
     fractions = np.array([float.fromhex(f) for f in case["fractions"]])
     t = np.array([float.fromhex(x) for x in fr["times"]])
     ref = decimals(fr["proper_times"])
-    got = scene.proper_times(t, frame(float.fromhex(fr["beta"])), fractions=fractions)
+    got = scene.proper_times(t, frame=frame(float.fromhex(fr["beta"])), fractions=fractions)
     assert got.shape == ref.shape
     rest = decimals(case["lengths_rest"])[:, None, None]
     scale = np.maximum(np.maximum(np.abs(ref), np.abs(t)), rest)
@@ -124,7 +124,7 @@ def clock_errors(scene: rr.Scene, case: dict[str, Any], fr: dict[str, Any]) -> F
 def event_errors(scene: rr.Scene, case: dict[str, Any], beta: float, ref_events: dict[str, Any]) -> dict[str, float]:
     """Per named event, ``max(|t' - t'_ref|, |x' - x'_ref|) / (TOL_EVENT max(|t'_ref|, |x'_ref|, L))``
     with ``L`` the largest rest length of the case."""
-    got = scene.events_in(frame(beta))
+    got = scene.events_in(frame=frame(beta))
     assert set(got) == set(ref_events)
     scale_len = float(max(decimals(case["lengths_rest"])))
     out = {}

@@ -141,7 +141,7 @@ def test_default_frames_differ_from_the_lab() -> None:
 
 
 def test_settings_round_trip_and_frames_from_text() -> None:
-    scene = rr.build_scene("rod-collision", m2=3.0)
+    scene = rr.build_scene("rod-collision", mass2=3.0)
     for frame in (scene.frame("barycentric"), rr.Frame.from_velocity(0.3, "custom")):
         r = resolve(settings_for(scene, frame))
         assert isinstance(r, Resolved) and r.frame == frame and r.scene.parameters == scene.parameters
@@ -224,16 +224,16 @@ def test_worldlines_are_exact_and_within_half_a_pixel(settings: Settings, beta: 
     r = resolve(settings)
     assert isinstance(r, Resolved)
     frame = rr.Frame.from_velocity(beta)
-    window = r.scene.time_window(frame)
+    window = r.scene.time_window(frame=frame)
     px_per_x = 300.0
     fractions = np.array([0.0, 0.5, 1.0])
     lines = sample_worldlines(r.scene, frame, fractions, window, px_per_x)
     dense_t = np.linspace(*window, 4001)
-    dense = r.scene.material_positions(dense_t, frame, fractions=fractions)
+    dense = r.scene.material_positions(dense_t, frame=frame, fractions=fractions)
     for i in range(r.scene.n_rods):
         for k in range(fractions.size):
             w = lines[i][k]
-            exact = r.scene.material_positions(w.t, frame, fractions=[fractions[k]])[i, 0]
+            exact = r.scene.material_positions(w.t, frame=frame, fractions=[fractions[k]])[i, 0]
             assert np.array_equal(w.x, exact)  # exact samples
             error_px = np.abs(np.interp(dense_t, w.t, w.x) - dense[i, k]).max() * px_per_x
             assert error_px <= TOLERANCE_PX + 1e-9
@@ -242,7 +242,7 @@ def test_worldlines_are_exact_and_within_half_a_pixel(settings: Settings, beta: 
 
 def test_lengths_within_half_a_pixel_and_flat_while_coasting() -> None:
     scene = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
-    window = scene.time_window(rr.LAB)
+    window = scene.time_window(frame=rr.LAB)
     curves = sample_lengths(scene, rr.LAB, window, px_per_length=200.0)
     dense_t = np.linspace(*window, 4001)
     dense = scene.lengths(dense_t)
@@ -298,7 +298,7 @@ def test_lane_ticks_sit_on_the_cores_material_points() -> None:
     geo = lane_geometry(scene)
     frame = rr.Frame.from_velocity(0.5)
     st = lane_state(scene, frame, 0.3, geo, "title", -1.0)
-    expected = scene.material_positions([0.3], frame, fractions=TICK_FRACTIONS)[:, :, 0].ravel() / geo.unit
+    expected = scene.material_positions([0.3], frame=frame, fractions=TICK_FRACTIONS)[:, :, 0].ravel() / geo.unit
     assert np.array_equal(st.segments.x0[: expected.size], expected)
     assert [b.x0 for b in st.boxes] == list(expected.reshape(2, -1)[:, 0])
     assert len(st.labels) == 1 and "clocks" in st.labels[0].text and st.labels[0].text.startswith("title")
@@ -379,11 +379,11 @@ def test_playback_markers_come_from_the_core() -> None:
         assert [m.symbol for m in markers] == [NOW_MARKER] * r.scene.n_rods
         assert [m.style.color for m in markers] == list(ROD_COLORS[: r.scene.n_rods])
         np.testing.assert_array_equal(np.concatenate([m.x for m in markers]), lane.ends.ravel())
-        x, _ = r.scene.snapshot(now, frame, fractions=TICK_FRACTIONS)
+        x, _ = r.scene.snapshot(now, frame=frame, fractions=TICK_FRACTIONS)
         np.testing.assert_array_equal(lane.ends, x[:, [0, -1]])
     lengths = [it for it in length_items if isinstance(it, Points)]
     got = np.stack([m.y for m in lengths])  # (rods, frames)
-    expected = np.stack([r.scene.lengths(now), r.scene.lengths(now, r.frame)]).T
+    expected = np.stack([r.scene.lengths(now), r.scene.lengths(now, frame=r.frame)]).T
     np.testing.assert_array_equal(got, expected)
     # no marker of the rods now looks like the events' black dots
     events = [it for it in d.lab_chart.items if isinstance(it, Points) and it.style.name == "events"]
@@ -400,9 +400,9 @@ EXTREMES = [
     Settings.of("wall-collision", v=0.99),
     Settings("constant-acceleration", (), CUSTOM_FRAME, 0.99),
     Settings("constant-acceleration", (), CUSTOM_FRAME, -0.99),
-    Settings.of("rod-collision", m2=0.01),
-    Settings.of("rod-collision", m2=100.0),
-    Settings.of("rod-collision", l2=0.1),
+    Settings.of("rod-collision", mass2=0.01),
+    Settings.of("rod-collision", mass2=100.0),
+    Settings.of("rod-collision", length2=0.1),
     Settings.of("velocity-change", v_initial=-0.99, v_final=0.99),
     *ALL_SETTINGS,
 ]
@@ -423,7 +423,7 @@ def test_lanes_keep_their_rods_in_view_and_large(settings: Settings) -> None:
             d.lane_pictures(float(now), layout), layout.lanes, (rr.LAB, r.frame), strict=True
         ):
             track = place.track
-            x, _ = r.scene.snapshot(float(now), frame, fractions=TICK_FRACTIONS)
+            x, _ = r.scene.snapshot(float(now), frame=frame, fractions=TICK_FRACTIONS)
             px = lane.origin_px + x[:, [0, -1]] * lane.scale
             assert px.min() >= track.x0 - 1e-6 and px.max() <= track.x1 + 1e-6, (now, px)
             shares = (px[:, 1] - px[:, 0]) / track.width

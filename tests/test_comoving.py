@@ -21,8 +21,8 @@ def test_the_point_reads_its_proper_time_at_its_event(kind: str, fraction: float
             for frame in frames:
                 t, x = scene.point_event(rod, fraction, proper_time=tau, frame=frame)
                 f = np.array([fraction])
-                read = scene.proper_times(np.array([t]), frame, fractions=f)[rod, 0, 0]
-                where = scene.material_positions(np.array([t]), frame, fractions=f)[rod, 0, 0]
+                read = scene.proper_times(np.array([t]), frame=frame, fractions=f)[rod, 0, 0]
+                where = scene.material_positions(np.array([t]), frame=frame, fractions=f)[rod, 0, 0]
                 scale = max(1.0, abs(t), abs(x))
                 assert read == pytest.approx(tau, abs=4e-15 * scale), (kind, rod, tau, frame.name)
                 assert where == pytest.approx(x, abs=4e-15 * scale), (kind, rod, tau, frame.name)
@@ -40,10 +40,10 @@ def test_in_the_comoving_frame_the_rod_has_its_rest_length(kind: str) -> None:
             for tau in TAUS:
                 frame = scene.comoving_frame(rod, fraction, proper_time=tau)
                 t, _ = scene.point_event(rod, fraction, proper_time=tau, frame=frame)
-                length = scene.lengths(np.array([t]), frame)[rod, 0]
+                length = scene.lengths(np.array([t]), frame=frame)[rod, 0]
                 assert length == pytest.approx(rest, rel=1e-12), (kind, rod, fraction, tau)
                 # the point is momentarily at rest in its own comoving frame
-                v = scene.velocities(np.array([t]), frame, fractions=np.array([fraction]))[rod, 0, 0]
+                v = scene.velocities(np.array([t]), frame=frame, fractions=np.array([fraction]))[rod, 0, 0]
                 assert abs(v) <= 1e-12
 
 
@@ -59,7 +59,7 @@ def test_every_comoving_line_of_simultaneity_passes_the_horizon_event(kind: str)
             for share in (0.1, 0.5, 0.9):
                 frame = scene.comoving_frame(rod, fraction, proper_time=share * change)
                 t_point, _ = scene.point_event(rod, fraction, proper_time=share * change, frame=frame)
-                t_horizon, _ = scene.horizon_event(rod, frame)
+                t_horizon, _ = scene.horizon_event(rod, frame=frame)
                 assert t_horizon == pytest.approx(t_point, abs=1e-12 * max(1.0, abs(t_point)))
 
 

@@ -39,7 +39,7 @@ def param_id(p: rr.Parameter) -> str:
 
 # ---------------------------------------------------------------- log sliders show the number
 def test_the_mass_ratio_is_a_log_slider_whose_box_takes_the_ratio() -> None:
-    m2 = rr.describe("rod-collision").parameter("m2")
+    m2 = rr.describe("rod-collision").parameter("mass2")
     assert m2 in LOG_PARAMETERS  # the registry says so; nothing below names m2
     e = NumberEntry.of(m2)
     assert e.is_log and e.slider_range == (-2.0, 2.0)
@@ -165,26 +165,26 @@ def test_the_figure_menu_lists_this_scenes_figures_only(kind: str) -> None:
 
 
 def test_the_figure_menu_follows_a_scene_change() -> None:
-    fig3 = Settings.of("rod-collision", m2=2.0)
+    fig3 = Settings.of("rod-collision", mass2=2.0)
     assert preset_menu(fig3).value.startswith("Fig. 3")
     for kind in rr.scene_descriptions():
         if kind != "rod-collision":
             menu = preset_menu(fig3.with_scene(kind))
             assert not any(o.startswith("Fig. 3") for o in menu.options) and not menu.value.startswith("Fig. 3")
-    moved = preset_menu(fig3.with_value("m2", 3.0))
+    moved = preset_menu(fig3.with_value("mass2", 3.0))
     assert moved.value == NO_PRESET and any(o.startswith("Fig. 3") for o in moved.options)
 
 
 def test_page_up_and_down_walk_this_scenes_figures() -> None:
     fig3, fig4 = (preset_menu(Settings("rod-collision")).options[k] for k in (1, 2))
-    at3 = Settings.of("rod-collision", m2=2.0)
+    at3 = Settings.of("rod-collision", mass2=2.0)
     assert preset_menu(at3).value == fig3
     nxt = preset_step(at3, 1)
-    assert nxt is not None and preset_menu(nxt).value == fig4 and nxt.value("m2") == 0.5
+    assert nxt is not None and preset_menu(nxt).value == fig4 and nxt.value("mass2") == 0.5
     assert preset_step(nxt, 1) is None  # the last figure: a clicker's extra press does nothing
     back = preset_step(nxt, -1)
     assert back is not None and preset_menu(back).value == fig3 and preset_step(back, -1) is None
-    off = at3.with_value("m2", 3.0)  # no figure: forward is the first, back the last
+    off = at3.with_value("mass2", 3.0)  # no figure: forward is the first, back the last
     first, last = preset_step(off, 1), preset_step(off, -1)
     assert first is not None and last is not None
     assert (preset_menu(first).value, preset_menu(last).value) == (fig3, fig4)

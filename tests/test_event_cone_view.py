@@ -40,7 +40,7 @@ def test_every_event_cone_has_its_apex_at_the_core_event_in_both_diagrams(kind: 
         d = build_drawing(r)
         for chart, frame in ((d.lab_chart, rr.LAB), (d.frame_chart, r.frame)):
             t, x = _cone_apex(chart.items)
-            te, xe = scene.source_event(event, frame)
+            te, xe = scene.source_event(event, frame=frame)
             size = max(1.0, abs(te), abs(xe))
             assert abs(t - te) <= 1e-9 * size and abs(x - xe) <= 1e-9 * size, (kind, event, frame.name)
             shaded = [it for it in chart.items if isinstance(it, Area) and it.style.group == "event cone"]
@@ -65,7 +65,7 @@ def test_the_cone_is_named_chosen_and_refused_like_any_setting() -> None:
 
 
 def test_scenario_strings_carry_the_cone() -> None:
-    line = "rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --frame barycentric --cone T_2"
+    line = "rod-collision --v1 0.6 --mass2 2 --v2 0 --length2 1 --eps 1 --frame barycentric --cone T_2"
     scenario = parse_scenario(line)
     assert scenario.settings.cone == "T_2"
     assert format_scenario(scenario.settings) == line

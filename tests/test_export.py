@@ -39,7 +39,7 @@ def not_blank(img: Image.Image) -> bool:
 def exported(tmp_path_factory: pytest.TempPathFactory) -> Path:
     out = tmp_path_factory.mktemp("export")
     r = rigidrel(
-        "export", "rod-collision", "--m2", "2", "--out", str(out), "--seconds", "2", "--fps", "10", "--gif-fps", "5"
+        "export", "rod-collision", "--mass2", "2", "--out", str(out), "--seconds", "2", "--fps", "10", "--gif-fps", "5"
     )
     assert r.returncode == 0, r.stderr
     return out
@@ -167,8 +167,8 @@ def assert_evenly_spaced(values: tuple[float, ...], log: bool) -> None:
     "settings",
     [
         Settings("rod-collision"),
-        Settings.of("rod-collision", v1=0.99, m2=0.01),
-        Settings.of("rod-collision", v1=0.37, m2=3.0),
+        Settings.of("rod-collision", v1=0.99, mass2=0.01),
+        Settings.of("rod-collision", v1=0.37, mass2=3.0),
         Settings.of("constant-acceleration", v=0.99),
         Settings("impulsive-start"),
         replace(Settings("impulsive-start"), frame=CUSTOM_FRAME, beta=0.25),

@@ -63,9 +63,9 @@ def extreme_settings() -> list[Settings]:
 HALL = [
     Settings.of("constant-acceleration", v=0.99),
     replace(presets()["Fig. 1: acceleration to V = 0.6"]),
-    Settings.of("rod-collision", m2=0.01),
-    Settings.of("rod-collision", m2=100.0),
-    Settings.of("rod-collision", l2=0.1),
+    Settings.of("rod-collision", mass2=0.01),
+    Settings.of("rod-collision", mass2=100.0),
+    Settings.of("rod-collision", length2=0.1),
 ]
 
 
@@ -82,7 +82,7 @@ def app_and_page_charts(s: Settings) -> list[Chart]:
     d = build_drawing(r)
     page = [
         minkowski_in_frame(r.scene, r.frame, DIAGRAM_PX, r.overlay),
-        length_static(r.scene, rr.LAB, r.frame, r.scene.time_window(r.frame), LENGTH_PX),
+        length_static(r.scene, rr.LAB, r.frame, r.scene.time_window(frame=r.frame), LENGTH_PX),
     ]
     return [*d.charts, *page]
 
@@ -185,7 +185,7 @@ def test_the_hall_cases_overprinted_before_placement() -> None:
         ]
         if s.scene == "constant-acceleration" and s.value("v") == 0.99:
             assert any(overlaps(c) for c in unplaced), setting_id(s)  # "TT_BF" and the length plot
-        if s.scene == "rod-collision" and s.value("m2") in (0.01, 100.0):
+        if s.scene == "rod-collision" and s.value("mass2") in (0.01, 100.0):
             assert any(overlaps(c) for c in unplaced), setting_id(s)  # T_1 / T'_1, T_2 / T'_2
         assert all(overlaps(c) == [] for c in charts)
 
@@ -208,7 +208,7 @@ def test_fig1_dashed_curve_crosses_no_event_label() -> None:
 
 
 def test_placement_is_deterministic_and_moves_only_movable_labels() -> None:
-    r = resolve(Settings.of("rod-collision", m2=0.01))
+    r = resolve(Settings.of("rod-collision", mass2=0.01))
     assert isinstance(r, Resolved)
     a, b = build_drawing(r), build_drawing(r)
     for ca, cb in zip(a.charts, b.charts, strict=True):

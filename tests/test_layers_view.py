@@ -117,7 +117,7 @@ def test_signals_are_drawn_in_both_diagrams_only_when_asked_for() -> None:
         (Settings.of("wall-collision", v=0.99, eps=0.0), "rod before"),
         (CRASH, None),  # with beta = +0.99 below
         (Settings("constant-acceleration"), "lab"),
-        (Settings.of("rod-collision", m2=100.0), "barycentric"),
+        (Settings.of("rod-collision", mass2=100.0), "barycentric"),
     ],
 )
 @pytest.mark.parametrize("beta", [0.0, 0.99, -0.99])

@@ -125,3 +125,38 @@ def test_a_file_on_disk(tmp_path: Path) -> None:
     path.write_text(GOOD.replace("--eps 0 --frame lab", "--eps 2 --frame lab"), encoding="utf-8")
     with pytest.raises(LessonError, match=rf"^{path}:5: step 1"):
         lesson_from(str(path))
+
+
+OLD_NAMES = """title = "Written before the parameters took one name per quantity"
+
+[[step]]
+title = "Case I"
+scene = "rod-collision --v1 0.6 --mass2 2 --v2 0 --length2 1 --eps 1 --frame lab"
+caption = "M2 = {param[mass2]:g} M1."
+lock = ["mass2"]
+"""
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "line", "key", "words"),
+    [
+        ("--mass2 2", "--m2 2", 5, "scene", "--m2 is now --mass2"),
+        ("--length2 1", "--l2 1", 5, "scene", "--l2 is now --length2"),
+        ("{param[mass2]:g}", "{param[m2]:g}", 6, "caption", "param[m2] is now param[mass2]"),
+        ('lock = ["mass2"]', 'lock = ["m2"]', 7, "lock", '"m2" is now "mass2"'),
+    ],
+)
+def test_an_old_parameter_name_is_refused_naming_the_new_one(
+    old: str, new: str, line: int, key: str, words: str
+) -> None:
+    """A lesson written with a parameter's old name gets a located error that names the new one."""
+    parse_lesson(OLD_NAMES, "l.toml")
+    err = _error(OLD_NAMES.replace(old, new, 1))
+    assert (err.line, err.key) == (line, key), str(err)
+    assert words in str(err), str(err)
+
+
+def test_an_old_bell_lesson_names_a_back() -> None:
+    text = GOOD.replace("wall-collision --v 0.6 --eps 0 --frame lab", "bell-spaceships --v 0.6 --acceleration 0.5", 1)
+    err = _error(text.replace("{event[T_1].t:.3g}", "{event[T_B1].t:.3g}").replace("{signal[S].t:g}", "1"))
+    assert (err.line, err.key) == (5, "scene") and "--acceleration is now --a-back" in str(err), str(err)

@@ -91,12 +91,12 @@ def test_a_parameter_slider_redraws_the_figure_as_the_core_says() -> None:
     # and, straight from the core: the rods' ends now (diamonds on the lab diagram) and the lengths now
     scene = rr.build_scene("rod-collision", v1=0.8)
     frame = scene.frame("barycentric")
-    lab_ends = scene.snapshot(0.5, rr.LAB, fractions=[0.0, 1.0])[0]
+    lab_ends = scene.snapshot(0.5, frame=rr.LAB, fractions=[0.0, 1.0])[0]
     drawn_ends = sorted(x for t in traces(view) if t.xaxis == "x" and t.legendgroup == "rods now" for x in t.x)
     assert np.array_equal(np.sort(lab_ends.ravel()), np.array(drawn_ends))
     length_markers = [t for t in traces(view) if t.xaxis == "x3" and t.legendgroup == "rods now"]
     drawn_lengths = sorted(y for t in length_markers for y in t.y)
-    core_lengths = np.concatenate([scene.lengths(0.5, rr.LAB), scene.lengths(0.5, frame)])
+    core_lengths = np.concatenate([scene.lengths(0.5, frame=rr.LAB), scene.lengths(0.5, frame=frame)])
     assert np.array_equal(np.sort(core_lengths), np.array(drawn_lengths))
     assert f"{scene.final_velocities[0]:+.4f}" in view.readout.value
 
@@ -116,7 +116,9 @@ def test_the_time_slider_moves_only_the_moving_parts() -> None:
     now = view.time.value
     length_markers = [t for t in traces(view) if t.xaxis == "x3" and t.legendgroup == "rods now"]
     drawn = sorted(y for t in length_markers for y in t.y)
-    assert np.array_equal(np.sort(np.concatenate([scene.lengths(now, rr.LAB), scene.lengths(now, frame)])), drawn)
+    assert np.array_equal(
+        np.sort(np.concatenate([scene.lengths(now, frame=rr.LAB), scene.lengths(now, frame=frame)])), drawn
+    )
 
 
 def test_a_refused_value_shows_a_notice_and_keeps_the_picture() -> None:
@@ -126,13 +128,13 @@ def test_a_refused_value_shows_a_notice_and_keeps_the_picture() -> None:
     assert "v2 must be less than v1" in view.state.notice and "V2 = 0 refused" in view.notice.value
     assert same_arrays(before, widget_arrays(view))
     assert view.sliders["v1"].value == 0.6  # the slider goes back to the scene on screen
-    view.set("m2", -1.0)  # beyond the core's range: its range is named
-    assert view.state.notice.startswith("M2/M1 = -1 refused: m2 must be a finite number in (0, ")
-    assert same_arrays(before, widget_arrays(view)) and view.sliders["m2"].value == 2.0
-    view.set("m2", 1000.0)  # beyond the log slider but a scene: the slider widens to show it, never clamps
-    assert view.state.notice == "" and view.sliders["m2"].value == 1000.0 and view.sliders["m2"].max == 3.0
+    view.set("mass2", -1.0)  # beyond the core's range: its range is named
+    assert view.state.notice.startswith("M2/M1 = -1 refused: mass2 must be a finite number in (0, ")
+    assert same_arrays(before, widget_arrays(view)) and view.sliders["mass2"].value == 2.0
+    view.set("mass2", 1000.0)  # beyond the log slider but a scene: the slider widens to show it, never clamps
+    assert view.state.notice == "" and view.sliders["mass2"].value == 1000.0 and view.sliders["mass2"].max == 3.0
     # the next valid change clears the notice
-    view.sliders["m2"].value = 10.0
+    view.sliders["mass2"].value = 10.0
     assert view.state.notice == "" and view.notice.value == "" and not same_arrays(before, widget_arrays(view))
 
 
@@ -184,7 +186,12 @@ def test_sliders_are_the_registry_parameters(kind: str) -> None:
 
 @pytest.mark.parametrize(
     ("values", "frame"),
-    [({"v1": 0.99}, 0.99), ({"v1": 0.99, "v2": -0.99}, -0.99), ({"m2": 0.01}, "barycentric"), ({"m2": 100.0}, None)],
+    [
+        ({"v1": 0.99}, 0.99),
+        ({"v1": 0.99, "v2": -0.99}, -0.99),
+        ({"mass2": 0.01}, "barycentric"),
+        ({"mass2": 100.0}, None),
+    ],
 )
 def test_extremes_draw_finite_figures(values: dict[str, float], frame: float | str | None) -> None:
     s = start("rod-collision", frame, theme="light", **values)
@@ -263,7 +270,7 @@ def shown_colors(view: LiveView) -> list[Color]:
 
 
 def test_a_dark_diagram_and_lesson_flip_every_colour(monkeypatch: pytest.MonkeyPatch) -> None:
-    scene = rr.rod_collision(v1=0.6, v2=0.0, m1=1.0, m2=2.0, l1=1.0, l2=1.0, eps=1.0)
+    scene = rr.rod_collision(v1=0.6, v2=0.0, mass1=1.0, mass2=2.0, length1=1.0, length2=1.0, eps=1.0)
     light = diagram(scene, scene.frame("barycentric")).to_plotly_json()
     dark = diagram(scene, scene.frame("barycentric"), theme="dark").to_plotly_json()
     assert_flipped(light, dark)

@@ -52,7 +52,7 @@ def test_fig1_separation_is_gamma_L0_not_five_thirds() -> None:
 def test_rest_frame_simultaneity_eq16() -> None:
     """Eq. (16): T_B and T_F are simultaneous in the rod's final rest frame."""
     s = examples.fig1_constant_acceleration()
-    ev = s.events_in(s.frames["rod after"])
+    ev = s.events_in(frame=s.frames["rod after"])
     assert abs(ev["T_F"][0] - ev["T_B"][0]) <= 1e-15
     # and the separation there is the rest length L0
     assert close(ev["T_F"][1] - ev["T_B"][1], 1.0)
@@ -227,7 +227,7 @@ def test_sec6_momentum_without_mass_gain_is_not_conserved() -> None:
     energy appears as rest mass (heat): the core scales both masses by a common factor.
     """
     s = rr.rod_collision(0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 0.5)
-    b = s.budget(rr.LAB)
+    b = s.budget(frame=rr.LAB)
     # with the core's heavier rods: conserved
     assert np.allclose(b.total_before, b.total_after, rtol=1e-15, atol=1e-15)
     # with the paper's unchanged masses: the lab momentum is off

@@ -66,16 +66,16 @@ def test_the_string_joins_the_ships_in_the_colour_of_the_cores_strain(frame_name
     the ships' row; the lane's title gives the core's strain in per cent."""
     frame = BELL.frame(frame_name)
     geo = lane_geometry(BELL)
-    t_break = BELL.string_break_in(frame)
+    t_break = BELL.string_break_in(frame=frame)
     assert t_break is not None
     colors = []
-    for now in (BELL.time_window(frame)[0], t_break[0] - 1e-6):
+    for now in (BELL.time_window(frame=frame)[0], t_break[0] - 1e-6):
         st = lane_state(BELL, frame, now, geo, "title", 0.0)
         ships, string = st.boxes[:2], st.boxes[3]
-        x = BELL.positions([now], frame) / geo.unit
+        x = BELL.positions([now], frame=frame) / geo.unit
         assert (string.x0, string.x1) == pytest.approx((x[0, 1, 0], x[1, 0, 0]))
         assert string.z == ships[0].z and string.height < ships[0].height
-        strain = BELL.string_strains([now], frame)[0]
+        strain = BELL.string_strains([now], frame=frame)[0]
         assert f"string strain {100 * strain:.1f} %" in st.labels[0].text.split("\n")[0]
         colors.append(string.color)
     assert colors[0] == ramp_color(0.0)
@@ -97,7 +97,7 @@ def test_a_string_without_a_breaking_strain_runs_up_to_its_final_strain() -> Non
 def test_after_the_break_the_string_is_two_loose_ends_and_the_title_says_so(frame_name: str) -> None:
     frame = BELL.frame(frame_name)
     geo = lane_geometry(BELL)
-    event = BELL.string_break_in(frame)
+    event = BELL.string_break_in(frame=frame)
     assert event is not None
     before = lane_state(BELL, frame, event[0] - 1e-6, geo, "title", 0.0)
     after = lane_state(BELL, frame, event[0] + 1e-6, geo, "title", 0.0)

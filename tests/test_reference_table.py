@@ -106,7 +106,10 @@ def test_every_registered_scene_has_an_independent_reference() -> None:
         ("constant-acceleration", {"v": 0.6, "length": 1.0, "a_front": 0.5}),
         ("deceleration", {"v": 0.99, "length": 1.0, "a_front": 1e-3}),
         ("velocity-change", {"v_initial": -0.99, "v_final": 0.5, "length": 1.0, "a_front": 1e-7}),
-        ("rod-collision", {"v1": 0.6, "v2": 0.0, "m1": 1.0, "m2": 2.0, "l1": 1.0, "l2": 1.0, "eps": 0.5}),
+        (
+            "rod-collision",
+            {"v1": 0.6, "v2": 0.0, "mass1": 1.0, "mass2": 2.0, "length1": 1.0, "length2": 1.0, "eps": 0.5},
+        ),
     ],
 )
 def test_clocks_agree_with_quadrature_of_the_worldline(kind: str, params: dict[str, float]) -> None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ast
 import dataclasses
+import inspect
 import math
 import re
 from collections.abc import Callable, Iterator
@@ -122,6 +123,67 @@ def test_unknown_event_and_parameter_are_named(kind: str) -> None:
         d.parameter("nope")
     with pytest.raises(rr.ParameterError, match=r"^event must be one of"):
         d.build().event_rod("nope")
+
+
+#: Every renamed parameter, ``(kind, old, new)``.
+RENAMED = [(d.kind, old, new) for d in descriptions() for old, new in d.renamed.items()]
+#: The constructors' keywords, one name per quantity: the paper's V is ``v``, a rest length
+#: ``length``, a rest mass ``mass``, an end's proper acceleration ``a_front``/``a_back``.
+VOCABULARY = {
+    "constant_acceleration": ("v", "length", "a_front", "mass"),
+    "deceleration": ("v", "length", "a_front", "mass"),
+    "velocity_change": ("v_initial", "v_final", "length", "a_front", "mass"),
+    "impulsive_start": ("v", "length", "mass"),
+    "wall_collision": ("v", "length", "eps", "mass"),
+    "rod_collision": ("v1", "v2", "mass1", "mass2", "length1", "length2", "eps"),
+    "bell_spaceships": ("v", "separation", "a_back", "ship_length", "breaking_strain", "mass"),
+    "pole_barn": ("v", "length", "barn_length", "model", "sound_speed", "door_time", "mass"),
+}
+
+
+@pytest.mark.parametrize(("constructor", "names"), VOCABULARY.items())
+def test_constructors_share_one_vocabulary(constructor: str, names: tuple[str, ...]) -> None:
+    """Every constructor names a quantity as the others do (and as its registry description does)."""
+    assert tuple(inspect.signature(getattr(rr, constructor)).parameters) == names
+
+
+def test_the_old_names_are_listed() -> None:
+    assert {(kind, old) for kind, old, _ in RENAMED} >= {
+        ("rod-collision", "m1"),
+        ("rod-collision", "m2"),
+        ("rod-collision", "l1"),
+        ("rod-collision", "l2"),
+        ("bell-spaceships", "acceleration"),
+    }
+
+
+@pytest.mark.parametrize(("kind", "old", "new"), RENAMED)
+def test_an_old_parameter_name_is_refused_naming_the_new_one(kind: str, old: str, new: str) -> None:
+    """The constructor, ``build_scene`` and the description refuse an old name with a ``TypeError``
+    (a ``ParameterError`` too) that names the new one; the new name builds the same scene."""
+    d = rr.describe(kind)
+    assert old not in d.parameter_map and new in d.parameter_map
+    values = d.defaults()
+    name = d.constructor.__name__
+    with pytest.raises(TypeError, match=rf"^{name}\(\) got '{old}'; it is now '{new}'$"):
+        d.constructor(**{old if k == new else k: v for k, v in values.items()})
+    with pytest.raises(TypeError, match=rf"^the scene '{kind}' got '{old}'; it is now '{new}'$") as info:
+        rr.build_scene(kind, **{old: values[new]})
+    assert isinstance(info.value, rr.ParameterError) and info.value.parameter == old
+    with pytest.raises(rr.ParameterError, match=f"it is now '{new}'"):
+        d.parameter(old)
+    assert rr.build_scene(kind, **{new: values[new]}).parameters == d.build().parameters
+
+
+def test_several_old_names_are_named_together() -> None:
+    with pytest.raises(TypeError, match=r"^rod_collision\(\) got 'm1', 'l2'; they are now 'mass1', 'length2'$"):
+        rr.rod_collision(0.6, 0.0, m1=1.0, mass2=2.0, length1=1.0, l2=1.0, eps=1.0)  # type: ignore[call-arg]
+
+
+def test_a_description_cannot_rename_to_a_name_it_lacks() -> None:
+    base = rr.describe("rod-collision")
+    with pytest.raises(ValueError, match="renamed"):
+        dataclasses.replace(base, renamed=MappingProxyType({"mass2": "m2"}))
 
 
 def test_descriptions_are_in_teaching_order() -> None:

@@ -108,7 +108,7 @@ def test_the_comoving_line_sweeps_through_the_point_and_the_horizon(kind: str, r
         for items, seen_from in ((lab, lab_frame), (frame, chosen)):
             line = _line(items, RIDE_LINE_NAME)
             te, xe = seen_from @ np.array(instant.event_lab)
-            th, xh = r.scene.horizon_event(rod, seen_from)
+            th, xh = r.scene.horizon_event(rod, frame=seen_from)
             assert _on_line(line, float(xe), float(te)) <= 1e-9 * scale
             if changing:  # while the point accelerates, its line of simultaneity meets the horizon event
                 assert _on_line(line, float(xh), float(th)) <= 1e-9 * scale * max(1.0, abs(xh))
@@ -162,7 +162,7 @@ def test_the_frame_menu_and_the_settings() -> None:
 
 
 def test_scenario_strings_ride() -> None:
-    line = "rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --ride 2:0.25"
+    line = "rod-collision --v1 0.6 --mass2 2 --v2 0 --length2 1 --eps 1 --ride 2:0.25"
     scenario = parse_scenario(line)
     assert scenario.settings.frame == RIDE_FRAME and scenario.settings.ride == RidePoint(1, 0.25)
     assert format_scenario(scenario.settings) == line

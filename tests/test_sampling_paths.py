@@ -97,11 +97,11 @@ def time_sets(draw: st.DrawFn, scene: rr.Scene, frame: rr.Frame, fractions: Floa
     """Times of one call: sorted across the scene's window (or past it), shuffled, or in blocks;
     with the switch times themselves repeated in, and now and then a time of +-1e300."""
     n = draw(st.sampled_from(SIZES))
-    lo, hi = scene.time_window(frame)
+    lo, hi = scene.time_window(frame=frame)
     scale = draw(st.sampled_from([1.0, 0.1, 3.0]))
     centre = 0.5 * (lo + hi)
     t = np.linspace(centre - scale * (centre - lo), centre + scale * (hi - centre), n)
-    switch = scene.switch_times(frame, fractions=fractions).ravel()
+    switch = scene.switch_times(frame=frame, fractions=fractions).ravel()
     if draw(st.booleans()):  # exact switch times (where two pieces meet), each twice
         k = min(n, 2 * switch.size)
         t[:k] = np.repeat(switch, 2)[:k]
@@ -137,10 +137,10 @@ def test_every_path_matches_the_sampler_as_it_was(
     t = data.draw(time_sets(scene, frame, fractions))
     expected = reference_positions(plan, t)
     assert plan.positions(t).tobytes() == expected.tobytes()
-    got = scene.material_positions(t, frame, fractions=fractions)
+    got = scene.material_positions(t, frame=frame, fractions=fractions)
     assert got.tobytes() == expected.reshape(scene.n_rods, fractions.size, t.size).tobytes()
     if np.array_equal(fractions, rr.ENDS):
-        assert scene.positions(t, frame).tobytes() == got.tobytes()
+        assert scene.positions(t, frame=frame).tobytes() == got.tobytes()
 
 
 @SETTINGS
@@ -153,7 +153,7 @@ def test_each_path_matches_its_reference_at_any_size(
     branch-free reference on any times."""
     scene, frame = scene_frame
     plan = plan_rods([r.motion for r in scene.rods], frame, fractions)
-    lo, hi = scene.time_window(frame)
+    lo, hi = scene.time_window(frame=frame)
     n = data.draw(st.sampled_from(SIZES))
     t = np.linspace(lo, hi, n)
     shuffled = np.random.default_rng(n).permutation(t)
@@ -173,9 +173,9 @@ def test_the_benchmark_cases_match() -> None:
     rng = np.random.default_rng(0)
     for scene, frame, t in (paper_case(100_000), curved_case(100_000)):
         plan = plan_rods([r.motion for r in scene.rods], frame, rr.ENDS)
-        assert scene.positions(t, frame).tobytes() == reference_sorted(plan, t).tobytes()
+        assert scene.positions(t, frame=frame).tobytes() == reference_sorted(plan, t).tobytes()
         shuffled = rng.permutation(t)
-        assert scene.positions(shuffled, frame).tobytes() == reference_branch_free(plan, shuffled).tobytes()
+        assert scene.positions(shuffled, frame=frame).tobytes() == reference_branch_free(plan, shuffled).tobytes()
 
 
 @pytest.mark.parametrize("a_front", [0.09994998749687423, 0.1883720930232558])
@@ -186,7 +186,7 @@ def test_each_path_keeps_its_own_square_of_the_radius(a_front: float) -> None:
     scene = rr.constant_acceleration(v=0.8, length=1.0, a_front=a_front)
     plan = plan_rods([r.motion for r in scene.rods], rr.LAB, rr.ENDS)
     assert any(r**2 != r * r for r in plan.radius)
-    switch = scene.switch_times(rr.LAB).reshape(-1, 2)
+    switch = scene.switch_times(frame=rr.LAB).reshape(-1, 2)
     t = np.linspace(switch[:, 0].max(), switch[:, 1].min(), 40_000)
     sorted_form, branch_free = reference_sorted(plan, t), reference_branch_free(plan, t)
     assert sorted_form.tobytes() != branch_free.tobytes()
@@ -210,3 +210,18 @@ def test_a_bad_time_in_a_long_sorted_input_is_refused(bad: float, where: int) ->
     with pytest.raises(rr.ParameterError, match="t must be finite real numbers") as caught:
         scene.positions(t)
     assert repr(bad) in str(caught.value)
+
+
+def test_ends_are_read_only() -> None:
+    """``rr.ENDS`` is the samplers' default argument and part of the plan cache's key (by identity):
+    writing to it, or making it writeable again, is refused, and the scene's answers stay put."""
+    scene = rr.build_scene("rod-collision")
+    before = scene.velocities([0.1]).tobytes()
+    with pytest.raises(ValueError, match="read-only"):
+        rr.ENDS[1] = 0.5
+    with pytest.raises(ValueError, match="WRITEABLE"):
+        rr.ENDS.flags.writeable = True
+    with pytest.raises(ValueError, match="read-only"):
+        rr.ENDS *= 2.0
+    assert rr.ENDS.tolist() == [0.0, 1.0]
+    assert scene.velocities([0.1]).tobytes() == before

@@ -11,11 +11,11 @@ from rigidrel_app.view.state import CUSTOM_FRAME, Settings, build, presets
 
 
 def test_the_example_line() -> None:
-    s = parse_scenario("rod-collision --v1 0.6 --m2 2 --frame barycentric --t 0.3")
-    assert s.settings == Settings("rod-collision", (("v1", 0.6), ("m2", 2.0)), "barycentric")
+    s = parse_scenario("rod-collision --v1 0.6 --mass2 2 --frame barycentric --t 0.3")
+    assert s.settings == Settings("rod-collision", (("v1", 0.6), ("mass2", 2.0)), "barycentric")
     assert s.t == 0.3
     line = format_scenario(s.settings, s.t)
-    assert line.startswith("rod-collision --v1 0.6 --m2 2 ")
+    assert line.startswith("rod-collision --v1 0.6 --mass2 2 ")
     assert line.endswith("--frame barycentric --t 0.3")
 
 
@@ -103,3 +103,19 @@ def test_rigidrel_serve_reads_every_line_the_app_writes(kind: str) -> None:
     for line in (format_scenario(settings, 0.25), format_scenario(settings.riding(0, 0.5), -0.5)):
         args = build_parser().parse_args(["serve", *shlex.split(line)])
         assert start_scenario("rigidrel serve", args) == parse_scenario(line), line
+
+
+@pytest.mark.parametrize(
+    ("line", "flag", "words"),
+    [
+        ("rod-collision --v1 0.6 --m2 2 --frame barycentric", "m2", "--m2 is now --mass2"),
+        ("rod-collision --l1 2", "l1", "--l1 is now --length1"),
+        ("bell-spaceships --v 0.6 --acceleration 0.5", "acceleration", "--acceleration is now --a-back"),
+    ],
+)
+def test_an_old_parameter_name_is_refused_naming_the_new_one(line: str, flag: str, words: str) -> None:
+    """A scenario string written before a parameter was renamed names the new flag."""
+    with pytest.raises(ScenarioError) as info:
+        parse_scenario(line)
+    assert info.value.parameter == flag
+    assert words in str(info.value)

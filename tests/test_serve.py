@@ -161,7 +161,7 @@ def test_clean_shutdown_with_clients_connected_and_one_stalled() -> None:
 
 
 def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
-    """``rigidrel serve rod-collision --m2 3 --frame 0.4 --t 0.25 --layers all``, a scenario line as
+    """``rigidrel serve rod-collision --mass2 3 --frame 0.4 --t 0.25 --layers all``, a scenario line as
     the app's Scenario folder writes it: a new tab shows that scene in that frame, at that time."""
     from rigidrel_app.cli import build_parser, start_scenario
     from rigidrel_app.live.server import App
@@ -169,7 +169,7 @@ def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
     from rigidrel_app.view.scenario import parse_scenario
     from tests.viser_client import light_tab
 
-    line = ["rod-collision", "--m2", "3", "--frame", "0.4", "--t", "0.25", "--layers", "all"]
+    line = ["rod-collision", "--mass2", "3", "--frame", "0.4", "--t", "0.25", "--layers", "all"]
     args = build_parser().parse_args(["serve", *line, "--port", "0"])
     start = start_scenario("rigidrel serve", args)
     assert start is not None and args.port == 0
@@ -177,7 +177,7 @@ def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
     with App(port=0, start=start) as app, light_tab(app) as tab:
         session, drawn = tab.session, tab.session.drawn
         assert session.settings == start.settings and drawn is not None
-        assert drawn.resolved.scene.parameters["m2"] == 3.0
+        assert drawn.resolved.scene.parameters["mass2"] == 3.0
         assert drawn.resolved.frame.beta == 0.4
         assert session.settings.layers == frozenset(Layer)
         assert session.playback.now == 0.25 and not session.playback.playing

@@ -61,7 +61,7 @@ def test_an_arrival_far_from_its_source_is_on_the_light_cone_to_the_sources_roun
     the light cone to the rounding of coordinates that large (a case the property test below found,
     when its tolerance went only with the arrival's coordinates)."""
     scene = rr.build_scene("constant-acceleration", v=0.5569031991501275, length=1.9, a_front=0.010000000000000002)
-    t0, _ = scene.time_window(rr.LAB)
+    t0, _ = scene.time_window(frame=rr.LAB)
     source = (t0, 27.0)
     t, x = scene.signal_arrival(source, 0, 0.5) or (math.nan, math.nan)
     assert t - source[0] == pytest.approx(26.017190215183827, rel=1e-14)
@@ -74,8 +74,8 @@ def test_arrivals_lie_on_the_worldline_and_the_light_cone(
     scene_frame: tuple[rr.Scene, rr.Frame], f: float, u: float, data: st.DataObject
 ) -> None:
     scene, frame = scene_frame
-    t0, t1 = scene.time_window(frame)
-    x_span = scene.positions(np.array([t0, t1]), frame)
+    t0, t1 = scene.time_window(frame=frame)
+    x_span = scene.positions(np.array([t0, t1]), frame=frame)
     source = (t0 + u * (t1 - t0), data.draw(st.floats(float(x_span.min()), float(x_span.max()))))
     rod = data.draw(st.integers(0, scene.n_rods - 1))
     length = scene.rods[rod].motion.length
@@ -85,7 +85,7 @@ def test_arrivals_lie_on_the_worldline_and_the_light_cone(
     # the arrival is worked out from the source's coordinates: its rounding, and the rounding of the
     # differences below, go with the larger of the two events' coordinates
     scale = max(abs(t), abs(x), abs(source[0]), abs(source[1]), length)
-    on_line = scene.material_positions(np.array([t]), frame, fractions=[f])[rod, 0, 0]
+    on_line = scene.material_positions(np.array([t]), frame=frame, fractions=[f])[rod, 0, 0]
     assert abs(on_line - x) <= TOL_ON_WORLDLINE * scale
     assert t >= source[0] - 4 * 2.0**-52 * scale  # in the source's future (to rounding)
     assert abs(abs(x - source[1]) - (t - source[0])) <= 4 * 2.0**-52 * scale  # on the light cone
@@ -120,7 +120,7 @@ def test_causal_relations_are_the_same_in_every_frame(
     """The relation of each scene event to the origin event, and of two arbitrary events, in any frame."""
     scene, frame = scene_frame
     lab = {name: rr.causal_relation((0.0, 0.0), e) for name, e in scene.events.items()}
-    here = {name: rr.causal_relation((0.0, 0.0), e) for name, e in scene.events_in(frame).items()}
+    here = {name: rr.causal_relation((0.0, 0.0), e) for name, e in scene.events_in(frame=frame).items()}
     for name, relation in lab.items():
         if relation.kind != "lightlike":
             assert here[name].kind == relation.kind, name
@@ -140,17 +140,17 @@ def test_in_its_comoving_frame_a_point_rests_and_the_rod_has_its_rest_length(
     """Born rigidity: at each instant the momentarily comoving frame of any point sees the rod at rest
     length L0, with the point at rest (the comoving frame is the one the app's lane rides)."""
     scene, frame = scene_frame
-    t0, t1 = scene.time_window(frame)
+    t0, t1 = scene.time_window(frame=frame)
     t = t0 + u * (t1 - t0)
     for rod in range(scene.n_rods):
         if not isinstance(scene.rods[rod].motion, rr.RigidMotion):
             continue  # a signal-limited stop is not rigid (tests/test_paradoxes.py)
         comoving = scene.comoving_frame(rod, f, t=t, frame=frame)
-        x = scene.material_positions(np.array([t]), frame, fractions=[f])[rod, 0, 0]
+        x = scene.material_positions(np.array([t]), frame=frame, fractions=[f])[rod, 0, 0]
         t_comoving = float((comoving @ (frame.inverse() @ np.array([t, x])))[0])
-        v = scene.velocities(np.array([t_comoving]), comoving, fractions=[f])[rod, 0, 0]
+        v = scene.velocities(np.array([t_comoving]), frame=comoving, fractions=[f])[rod, 0, 0]
         assert abs(v) <= TOL_COMOVING
-        length = scene.lengths(np.array([t_comoving]), comoving)[rod, 0]
+        length = scene.lengths(np.array([t_comoving]), frame=comoving)[rod, 0]
         assert length == pytest.approx(scene.rods[rod].motion.length, rel=TOL_COMOVING)
 
 

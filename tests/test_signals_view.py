@@ -29,7 +29,7 @@ def test_every_leg_is_a_light_ray_ending_on_its_rod(kind: str) -> None:
             assert t1 > t0
             assert abs(abs(x1 - x0) - (t1 - t0)) <= REL * scale * 10, (kind, frame.name, leg)
             rod = int(leg.name.split("_")[1]) - 1 if "_" in leg.name else 0
-            ends = scene.positions(np.array([t1]), frame)[rod, :, 0]
+            ends = scene.positions(np.array([t1]), frame=frame)[rod, :, 0]
             assert np.min(np.abs(ends - x1)) <= REL * scale * 10, (kind, frame.name, leg, ends)
 
 
@@ -109,7 +109,7 @@ def test_the_light_cone_of_a_named_event() -> None:
     scene = rr.wall_collision(0.6, 1.0, 0.0)
     frame = scene.frame("rod before")
     items = event_cone_items(scene, "T_1", frame, (-3.0, 3.0), (-3.0, 3.0))
-    tk, xk = scene.events_in(frame)["T_1"]
+    tk, xk = scene.events_in(frame=frame)["T_1"]
     areas = [i for i in items if isinstance(i, Area)]
     assert len(areas) == 2 and areas[0].style.name == "light cone of T1"
     for area, sign in zip(areas, (1.0, -1.0), strict=True):  # every corner on or inside its half of the cone

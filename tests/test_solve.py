@@ -92,7 +92,7 @@ def collisions(draw: st.DrawFn) -> tuple[float, float, float, float, float]:
     a, b = draw(velocities), draw(velocities)
     assume(a is not None and b is not None and a != b)
     assert a is not None and b is not None
-    m1 = draw(parameter_values(COLLISION.parameter("m1")))
+    m1 = draw(parameter_values(COLLISION.parameter("mass1")))
     assert m1 is not None
     m2 = m1 * draw(log_uniform(1e-6, 1e6))
     eps = draw(restitutions)

@@ -6,6 +6,7 @@ a scene registered in rigidrel_core/scenes/ has its bad values tested here with 
 
 from __future__ import annotations
 
+import inspect
 import math
 import re
 from collections.abc import Callable
@@ -132,6 +133,12 @@ def test_unknown_scene_lists_the_scenes() -> None:
             assert kind in msg
 
 
+@pytest.mark.parametrize("rapidity", [True, "0.5", None, math.nan, math.inf, 700.5, -701.0, 1j])
+def test_bad_rapidity_is_named(rapidity: Any) -> None:
+    with pytest.raises(rr.ParameterError, match=r"^rapidity must be a finite number with \|rapidity\| <= 700"):
+        rr.Frame.from_rapidity(rapidity)
+
+
 def test_unknown_frame_lists_the_frames() -> None:
     """``scene.frame`` lists the scene's preset frames when given an unknown name."""
     for description in descriptions():
@@ -147,17 +154,17 @@ def samplers(scene: rr.Scene) -> dict[str, Callable[[Any], object]]:
     """Every entry point of a scene that takes a frame, called with ``frame`` and good other arguments."""
     t = np.array([0.0, 0.5])
     return {
-        "positions": lambda frame: scene.positions(t, frame),
-        "material_positions": lambda frame: scene.material_positions(t, frame, fractions=[0.5]),
-        "velocities": lambda frame: scene.velocities(t, frame),
-        "proper_times": lambda frame: scene.proper_times(t, frame),
-        "lengths": lambda frame: scene.lengths(t, frame),
-        "snapshot": lambda frame: scene.snapshot(0.5, frame, fractions=[0.0, 1.0]),
-        "switch_times": lambda frame: scene.switch_times(frame),
-        "events_in": lambda frame: scene.events_in(frame),
-        "time_window": lambda frame: scene.time_window(frame),
-        "budget": lambda frame: scene.budget(frame),
-        **{f"obstacle {o.name}": (lambda frame, o=o: o.positions(t, frame)) for o in scene.obstacles},
+        "positions": lambda frame: scene.positions(t, frame=frame),
+        "material_positions": lambda frame: scene.material_positions(t, frame=frame, fractions=[0.5]),
+        "velocities": lambda frame: scene.velocities(t, frame=frame),
+        "proper_times": lambda frame: scene.proper_times(t, frame=frame),
+        "lengths": lambda frame: scene.lengths(t, frame=frame),
+        "snapshot": lambda frame: scene.snapshot(0.5, frame=frame, fractions=[0.0, 1.0]),
+        "switch_times": lambda frame: scene.switch_times(frame=frame),
+        "events_in": lambda frame: scene.events_in(frame=frame),
+        "time_window": lambda frame: scene.time_window(frame=frame),
+        "budget": lambda frame: scene.budget(frame=frame),
+        **{f"obstacle {o.name}": (lambda frame, o=o: o.positions(t, frame=frame)) for o in scene.obstacles},
     }
 
 
@@ -206,15 +213,15 @@ def test_complex_text_and_object_times_are_refused_not_cut_to_the_real_part(t: A
     s = rr.wall_collision(0.6, 1.0, 0.5)
     frame = s.frame("rod before")
     calls: dict[str, Callable[[], object]] = {
-        "positions": lambda: s.positions(t, frame),
-        "material_positions": lambda: s.material_positions(t, frame, fractions=[0.5]),
-        "velocities": lambda: s.velocities(t, frame),
-        "proper_times": lambda: s.proper_times(t, frame),
-        "lengths": lambda: s.lengths(t, frame),
-        "obstacle": lambda: s.obstacles[0].positions(t, frame),
+        "positions": lambda: s.positions(t, frame=frame),
+        "material_positions": lambda: s.material_positions(t, frame=frame, fractions=[0.5]),
+        "velocities": lambda: s.velocities(t, frame=frame),
+        "proper_times": lambda: s.proper_times(t, frame=frame),
+        "lengths": lambda: s.lengths(t, frame=frame),
+        "obstacle": lambda: s.obstacles[0].positions(t, frame=frame),
     }
     if np.ndim(t) == 0:
-        calls["snapshot"] = lambda: s.snapshot(t, frame, fractions=[0.0, 1.0])
+        calls["snapshot"] = lambda: s.snapshot(t, frame=frame, fractions=[0.0, 1.0])
     for name, call in calls.items():
         with pytest.raises(rr.ParameterError, match=r"^t must be finite real numbers") as info:
             call()
@@ -268,10 +275,55 @@ def test_snapshot_fractions_must_span_the_rod(f: list[float]) -> None:
 
 
 def test_fractions_are_keyword_only() -> None:
-    """``fractions`` comes after ``t`` and ``frame`` and must be named."""
+    """``fractions`` comes after ``t`` and must be named, like ``frame``."""
     s = rr.impulsive_start(0.6, 1.0)
     with pytest.raises(TypeError):
-        s.material_positions([0.0], rr.LAB, [0.5])  # type: ignore[misc]
+        s.material_positions([0.0], [0.5])  # type: ignore[misc]
+
+
+FRAME_TAKERS = (rr.Scene, rr.BellScene, rr.PoleBarnScene, rr.Obstacle)
+
+
+def test_frame_is_keyword_only_everywhere() -> None:
+    """Every method of a scene (and of its obstacles) that takes a frame takes it by name,
+    ``scene.positions(t, frame=f)``, so that no call reads differently from another."""
+    found = []
+    for cls in FRAME_TAKERS:
+        for name, member in inspect.getmembers(cls, inspect.isfunction):
+            if name.startswith("_"):
+                continue  # the plan cache's own plumbing
+            parameter = inspect.signature(member).parameters.get("frame")
+            if parameter is not None:
+                found.append(f"{cls.__name__}.{name}")
+                assert parameter.kind is inspect.Parameter.KEYWORD_ONLY, f"{cls.__name__}.{name}"
+    assert {"Scene.positions", "Scene.budget", "Scene.point_event", "Obstacle.positions"} <= set(found), found
+
+
+@pytest.mark.parametrize("kind", [d.kind for d in descriptions()])
+def test_a_positional_frame_is_refused(kind: str) -> None:
+    """Given positionally, a frame is refused by Python itself (a ``TypeError``), not taken for
+    another argument."""
+    scene = rr.build_scene(kind)
+    frame = rr.default_frame(scene)
+    t = np.array([0.0, 0.5])
+    calls: dict[str, Callable[[], object]] = {
+        "positions": lambda: scene.positions(t, frame),  # type: ignore[misc]
+        "lengths": lambda: scene.lengths(t, frame),  # type: ignore[misc]
+        "velocities": lambda: scene.velocities(t, frame),  # type: ignore[misc]
+        "proper_times": lambda: scene.proper_times(t, frame),  # type: ignore[misc]
+        "events_in": lambda: scene.events_in(frame),  # type: ignore[misc]
+        "time_window": lambda: scene.time_window(frame),  # type: ignore[misc]
+        "budget": lambda: scene.budget(frame),  # type: ignore[misc]
+        "notes": lambda: scene.notes(frame),  # type: ignore[misc]
+        "horizon_event": lambda: scene.horizon_event(0, frame),  # type: ignore[misc]
+    }
+    for name, call in calls.items():
+        try:
+            call()
+        except TypeError as exc:
+            assert "positional argument" in str(exc), (name, exc)
+        else:
+            raise AssertionError(f"{name} took a positional frame")
 
 
 # ---------------------------------------------------------------- shapes
@@ -310,12 +362,12 @@ def finite_everywhere(scene: rr.Scene) -> None:
     """Positions, lengths, velocities and clocks are finite over the scene's time window in frames at
     |beta| = 0.999999 and in every preset frame."""
     for frame in (*EXTREME_FRAMES, *scene.frames.values()):
-        t = np.linspace(*scene.time_window(frame), 64)
-        assert np.all(np.isfinite(scene.positions(t, frame))), frame
-        assert np.all(np.isfinite(scene.lengths(t, frame))), frame
-        assert np.all(np.isfinite(scene.velocities(t, frame))), frame
-        assert np.all(np.isfinite(scene.proper_times(t, frame))), frame
-        assert all(np.isfinite(e).all() for e in scene.events_in(frame).values()), frame
+        t = np.linspace(*scene.time_window(frame=frame), 64)
+        assert np.all(np.isfinite(scene.positions(t, frame=frame))), frame
+        assert np.all(np.isfinite(scene.lengths(t, frame=frame))), frame
+        assert np.all(np.isfinite(scene.velocities(t, frame=frame))), frame
+        assert np.all(np.isfinite(scene.proper_times(t, frame=frame))), frame
+        assert all(np.isfinite(e).all() for e in scene.events_in(frame=frame).values()), frame
 
 
 @pytest.mark.parametrize(
@@ -332,9 +384,9 @@ def test_extreme_but_accepted_parameters_give_finite_output(build: Callable[[], 
     frames at |beta| = 0.999999 and in every preset frame."""
     scene = build()
     forward, backward = EXTREME_FRAMES
-    t = np.linspace(*scene.time_window(forward), 64)
-    assert np.all(np.isfinite(scene.positions(t, forward)))
-    assert np.all(np.isfinite(scene.lengths(t, backward)))
+    t = np.linspace(*scene.time_window(frame=forward), 64)
+    assert np.all(np.isfinite(scene.positions(t, frame=forward)))
+    assert np.all(np.isfinite(scene.lengths(t, frame=backward)))
     finite_everywhere(scene)
 
 

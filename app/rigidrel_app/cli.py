@@ -101,18 +101,18 @@ def scene_from_args(prog: str, args: argparse.Namespace, default_frame: str | No
 # ---------------------------------------------------------------- events
 def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
     """Everything ``rigidrel events`` prints, as plain data."""
-    budget = scene.budget(frame)
+    budget = scene.budget(frame=frame)
     return {
         "scene": scene.kind,
         "parameters": dict(scene.parameters),
         "frame": {"name": frame.label(), "velocity": frame.beta},
-        "events": {k: {"t": t, "x": x} for k, (t, x) in scene.events_in(frame).items()},
+        "events": {k: {"t": t, "x": x} for k, (t, x) in scene.events_in(frame=frame).items()},
         "events_lab": {k: {"t": t, "x": x} for k, (t, x) in scene.events.items()},
         "initial_velocities": list(scene.initial_velocities),
         "final_velocities": list(scene.final_velocities),
         "frame_presets": {k: f.beta for k, f in scene.frames.items()},
         "budget": budget.as_dict(),
-        "notes": list(scene.notes(frame)),
+        "notes": list(scene.notes(frame=frame)),
         "signals": [
             {
                 "arrival": leg.name,
@@ -132,7 +132,7 @@ def _g(x: float) -> str:
 
 def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
     d = rr.describe(scene)
-    budget = scene.budget(frame)
+    budget = scene.budget(frame=frame)
     lines = [
         f"scene      {scene.kind}   ({d.title}, {d.source}; c = 1)",
         "parameters " + "  ".join(f"{k}={_g(v)}" for k, v in scene.parameters.items()),
@@ -140,7 +140,7 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
         "",
         f"{'event':<8}{'t':>20}{'x':>20}   meaning",
     ]
-    for name, (t, x) in scene.events_in(frame).items():
+    for name, (t, x) in scene.events_in(frame=frame).items():
         lines.append(f"{name:<8}{_g(t):>20}{_g(x):>20}   {d.event(name).meaning}")
     lines += ["", f"{'rod':<8}{'V before (lab)':>20}{'V after (lab)':>20}"]
     for rod, v0, v1 in zip(scene.rods, scene.initial_velocities, scene.final_velocities):
@@ -159,7 +159,7 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
         src = {"drive": "from the drive", "wall": "from the wall"}[budget.external_source]
         lines.append(f"  {src:<31}{'':>12}{_g(budget.external[0]):>16}{_g(budget.external[1]):>16}")
     lines.append(f"  heat (rest energy created): {_g(budget.heat)}")
-    lines += ["", *(f"note  {n}" for n in scene.notes(frame))] if scene.notes(frame) else []
+    lines += ["", *(f"note  {n}" for n in scene.notes(frame=frame))] if scene.notes(frame=frame) else []
     return "\n".join(lines + signal_lines(scene, frame))
 
 

@@ -135,7 +135,7 @@ def paper_ends(scene: BenchScene) -> tuple[tuple[PaperEnd, PaperEnd], ...]:
         v, length = p["v"], p["length"]
         return ((_kick_end(0.0, v), _far_end(length, 1.0, 0.0, v)),)
     v1, v2 = p["v1"], p["v2"]
-    w1, w2 = textbook_collision(v1, v2, p["m1"], p["m2"], p["eps"])
-    rod1 = (_far_end(p["l1"], -1.0, v1, w1), _kick_end(v1, w1))
-    rod2 = (_kick_end(v2, w2), _far_end(p["l2"], 1.0, v2, w2))
+    w1, w2 = textbook_collision(v1, v2, p["mass1"], p["mass2"], p["eps"])
+    rod1 = (_far_end(p["length1"], -1.0, v1, w1), _kick_end(v1, w1))
+    rod2 = (_kick_end(v2, w2), _far_end(p["length2"], 1.0, v2, w2))
     return (rod1, rod2)

@@ -133,11 +133,11 @@ def _sampler(kind: SamplerKind, n: int) -> Sampler:
 
 
 def _worldline_exact(scene: rr.Scene, frame: rr.Frame, fraction: float, rod: int) -> Callable[[FloatArray], FloatArray]:
-    return lambda t: scene.material_positions(t, frame, fractions=np.array([fraction]))[rod, 0]
+    return lambda t: scene.material_positions(t, frame=frame, fractions=np.array([fraction]))[rod, 0]
 
 
 def _length_exact(scene: rr.Scene, frame: rr.Frame, rod: int) -> Callable[[FloatArray], FloatArray]:
-    return lambda t: scene.lengths(t, frame)[rod]
+    return lambda t: scene.lengths(t, frame=frame)[rod]
 
 
 def max_deviation_px(curve: _Curve) -> float:

@@ -72,11 +72,11 @@ def impulsive_start(label: str, v: float, length: float) -> BenchScene:
 
 
 def rod_collision(
-    label: str, v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float
+    label: str, v1: float, v2: float, mass1: float, mass2: float, length1: float, length2: float, eps: float
 ) -> BenchScene:
     """Paper Secs. 5-6: rod 1 (left) at ``v1`` hits rod 2 at ``v2``; restitution ``eps`` (Eq. (29))."""
-    names = ("v1", "v2", "m1", "m2", "l1", "l2", "eps")
-    return BenchScene(label, "rod-collision", tuple(zip(names, (v1, v2, m1, m2, l1, l2, eps))))
+    names = ("v1", "v2", "mass1", "mass2", "length1", "length2", "eps")
+    return BenchScene(label, "rod-collision", tuple(zip(names, (v1, v2, mass1, mass2, length1, length2, eps))))
 
 
 FIG1 = constant_acceleration("Fig. 1: acceleration to V = 0.6, a'_F L0 = 1/2", 0.6, 1.0, 0.5)
@@ -153,8 +153,8 @@ def sample_times(case: BenchCase, n: int) -> FloatArray:
     """
     scene = case.scene.core()
     frame = case.frame
-    t0, t1 = scene.time_window(frame)
-    events = np.array([t for t, _ in scene.events_in(frame).values()])
+    t0, t1 = scene.time_window(frame=frame)
+    events = np.array([t for t, _ in scene.events_in(frame=frame).values()])
     if case.spread == "window":
         grid = np.linspace(t0, t1, max(n - events.size, 2))
     else:

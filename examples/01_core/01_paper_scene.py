@@ -13,11 +13,11 @@ import rigidrel_core as rr
 
 
 def main() -> None:
-    scene = rr.build_scene("rod-collision", m1=1.0, m2=2.0)  # Fig. 3: the defaults are the paper's
+    scene = rr.build_scene("rod-collision", mass1=1.0, mass2=2.0)  # Fig. 3: the defaults are the paper's
     for name in ("lab", "barycentric"):
         frame = scene.frame(name)
         print(f"events in the {name} frame (beta = {frame.beta:.6f}):")
-        for event, (t, x) in scene.events_in(frame).items():
+        for event, (t, x) in scene.events_in(frame=frame).items():
             print(f"  {event:4s}  t = {t:+.6f}  x = {x:+.6f}")
     for rod, v in zip(scene.rods, scene.final_velocities):
         print(f"{rod.name} leaves with V' = {v:+.6f} = {Fraction(v).limit_denominator(100)}")

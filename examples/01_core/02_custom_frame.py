@@ -30,7 +30,7 @@ def main() -> None:
 
     scene = rr.build_scene("impulsive-start")  # Fig. 1's dashed curve: T_F = (3/4, 5/4)
     rocket = rr.Frame.from_velocity(0.6) @ scene.frame("rod after")  # overtakes the rod at 0.6 c
-    t, x = scene.events_in(rocket)["T_F"]
+    t, x = scene.events_in(frame=rocket)["T_F"]
     print(f"a rocket at {rocket.beta:.6f} in the lab sees T_F at t' = {t:.6f}, x' = {x:.6f}")
 
 

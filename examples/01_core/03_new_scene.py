@@ -49,7 +49,7 @@ def main() -> None:
     print(f"{description.title}: final velocity {scene.final_velocities[0]:+.6f}")
     rest = rr.default_frame(scene)
     print(f"events in the lab and in the {rest.name} frame:")
-    lab, after = scene.events, scene.events_in(rest)
+    lab, after = scene.events, scene.events_in(frame=rest)
     for name, (t, x) in lab.items():
         print(f"  {name:4s}  lab t = {number(t)} x = {number(x)}   {rest.name} t' = {number(after[name][0])}")
         print(f"        ({description.event(name).meaning})")

@@ -21,7 +21,7 @@ def main() -> None:
     assert arrival_lab is not None  # None would mean the far end stays out of the signal's reach
     print(f"light from the contact reaches the far end at lab (t, x) = {arrival_lab}")
     for name, frame in scene.frames.items():
-        events = scene.events_in(frame)
+        events = scene.events_in(frame=frame)
         arrival = scene.signal_arrival((0.0, 0.0), 0, 1.0, frame=frame)
         assert arrival is not None
         seen = frame @ np.array(arrival_lab)  # the same event, carried over from the lab
@@ -32,7 +32,7 @@ def main() -> None:
             f"  arrival t = {arrival[0]:+.4f}  (the lab's arrival carried over: {seen[0]:+.4f})"
         )
     for end in ("T_1", "T_1'"):
-        relation = rr.causal_relation(contact, scene.events_in(rr.LAB)[end])
+        relation = rr.causal_relation(contact, scene.events_in(frame=rr.LAB)[end])
         print(f"contact -> {end}: {relation.kind}, interval {relation.interval:+.4f}")
     for verdict in scene.causal_verdicts():
         print(verdict.text)

@@ -14,7 +14,7 @@ import rigidrel_core as rr
 def main() -> None:
     scene = rr.bell_spaceships(0.6, 1.0, 0.5, breaking_strain=0.2)
     after = scene.frame("ships after")
-    events = scene.events_in(after)
+    events = scene.events_in(frame=after)
     gap = events["T_B2"][1] - events["T_B1"][1]
     print(f"rear ends in the ships' frame after: {gap:.6f} apart (gamma * separation = 1.25)")
     print(f"string rest length: {scene.string_unstretched:.6f} -> {scene.string_final:.6f}")

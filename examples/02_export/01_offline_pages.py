@@ -18,7 +18,7 @@ from rigidrel_app.view.state import Resolved, settings_for
 
 
 def export(out: Path) -> list[Path]:
-    scene = rr.build_scene("rod-collision", m2=0.5)  # Fig. 4: M1 = 2 M2
+    scene = rr.build_scene("rod-collision", mass2=0.5)  # Fig. 4: M1 = 2 M2
     frame = scene.frame("barycentric")
     drawn = build_drawing(Resolved(scene, frame))
     lanes = out / "fig4-3d.html"

@@ -4,10 +4,11 @@ The paper's introduction cites Bell's spaceships, which its author treated with 
 acceleration of Sec. 3. Units c = 1. Two ships start at rest at lab ``t = 0``; their rear ends are
 a lab distance ``s`` (``separation``) apart, at ``x = 0`` and ``x = s``. Each ship is a short
 Born-rigid rod of rest length ``l`` (``ship_length``) whose rear end has the proper acceleration
-``a``; its front end then has ``a / (1 + a l)`` (Sec. 3, Eq. (15) solved for ``a'_F``). Both rear
-ends reach ``V`` at the same lab instant ``T_B = gamma V / a`` (Eq. (9)): the lab distance of the
-rears stays ``s`` throughout, so in the ships' rest frame after, it is ``gamma s`` (the rear
-ends' events at lab ``T_B`` are simultaneous in the lab, not in that frame).
+``a`` (``a_back``, the paper's ``a'_B``); its front end then has ``a / (1 + a l)`` (Sec. 3,
+Eq. (15) solved for ``a'_F``). Both rear ends reach ``V`` at the same lab instant
+``T_B = gamma V / a`` (Eq. (9)): the lab distance of the rears stays ``s`` throughout, so in the
+ships' rest frame after, it is ``gamma s`` (the rear ends' events at lab ``T_B`` are simultaneous
+in the lab, not in that frame).
 
 **The string** joins the rear ship's front end (rest-distance ``R = 1/a + l`` from its centre
 ``C_1 = (0, -1/a)``) to the front ship's rear end (radius ``r = 1/a`` about ``C_2 = (0, s - 1/a)``).
@@ -53,7 +54,7 @@ from .._description import EventDescription, Interval, OriginEvent, Parameter, S
 from .._exact import REST, ExactVelocity
 from .._frame import LAB, Frame, check_frame
 from .._scene import EventSpec, Rod, Scene
-from .._validate import ParameterError, check_times
+from .._validate import ParameterError, check_times, refuse_renamed
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -68,14 +69,14 @@ SEPARATION = Parameter(
     Slider(0.1, 10.0, 0.1),
     typical=(0.1, 10.0),
 )
-ACCELERATION_REAR = Parameter(
-    "acceleration",
+A_BACK = Parameter(
+    "a_back",
     "a",
     "a (rear ends)",
     "1/length unit",
     ACCELERATION,
     0.5,
-    "proper acceleration a of each ship's rear end; each stops at lab t = γV/a (Sec. 3, Eq. (9))",
+    "proper acceleration a = a′_B of each ship's rear (back) end; each stops at lab t = γV/a (Sec. 3, Eq. (9))",
     Slider(0.05, 5.0, 0.05),
     typical=(0.05, 5.0),
 )
@@ -124,7 +125,8 @@ class BellScene(Scene):
 
     separation: float = 1.0
     ship_length: float = 0.1
-    acceleration: float = 0.5
+    a_back: float = 0.5
+    """The proper acceleration ``a`` of each ship's rear (back) end, the paper's ``a'_B``."""
     breaking_strain: float | None = None
 
     @property
@@ -143,7 +145,7 @@ class BellScene(Scene):
         cancellation (``sqrt(r^2 + q^2) - r = q^2 / (sqrt(r^2 + q^2) + r)``)."""
         theta_v = self.rods[0].motion.velocity_final.rapidity()
         theta = np.clip(np.asarray(rapidity, dtype=np.float64), 0.0, theta_v)
-        s, r, ship = self.separation, 1.0 / self.acceleration, self.ship_length
+        s, r, ship = self.separation, 1.0 / self.a_back, self.ship_length
         q = s * np.sinh(theta)
         root = np.hypot(r, q)
         on_hyperbola = s * np.cosh(theta) + q * q / (root + r) - ship
@@ -152,24 +154,24 @@ class BellScene(Scene):
         phi = theta + np.arcsinh(q / r)
         return np.where(phi <= theta_v, on_hyperbola, coasting)
 
-    def string_rapidities(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def string_rapidities(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """The rear ship's lab rapidity when its front end (the string's rear end) is at frame time
         ``t'``: its clock ``tau`` over its radius ``R = 1/a + l`` (proper acceleration ``1/R``),
         clipped to ``[0, theta_V]``; an invariant of the event."""
         frame = check_frame(frame)
         tt = check_times("t", t)
-        tau = self.proper_times(tt, frame, fractions=np.array([1.0]))[REAR_SHIP, 0]
-        radius = 1.0 / self.acceleration + self.ship_length
+        tau = self.proper_times(tt, frame=frame, fractions=np.array([1.0]))[REAR_SHIP, 0]
+        radius = 1.0 / self.a_back + self.ship_length
         return np.clip(tau / radius, 0.0, self.rods[0].motion.velocity_final.rapidity())
 
-    def string_rest_lengths(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def string_rest_lengths(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """The string's proper length when its rear end is at frame time ``t'``: its rest length in
         the rear ship's momentarily comoving frame. Shape of ``t``."""
-        return self.string_rest_length_at_rapidity(self.string_rapidities(t, frame))
+        return self.string_rest_length_at_rapidity(self.string_rapidities(t, frame=frame))
 
-    def string_strains(self, t: npt.ArrayLike, frame: Frame = LAB) -> FloatArray:
+    def string_strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
-        return self.string_rest_lengths(t, frame) / self.string_unstretched - 1.0
+        return self.string_rest_lengths(t, frame=frame) / self.string_unstretched - 1.0
 
     @property
     def final_strain(self) -> float:
@@ -184,7 +186,7 @@ class BellScene(Scene):
         e_b = self.breaking_strain
         if e_b is None or e_b > self.final_strain:
             return None
-        s, r, ship = self.separation, 1.0 / self.acceleration, self.ship_length
+        s, r, ship = self.separation, 1.0 / self.a_back, self.ship_length
         theta_v = self.rods[0].motion.velocity_final.rapidity()
         d = r + ship + (1.0 + e_b) * self.string_unstretched
         theta = math.acosh(max(1.0, (d * d - r * r + s * s) / (2.0 * d * s)))
@@ -205,19 +207,19 @@ class BellScene(Scene):
         front end ``(0, 1.0)``, its front end the front ship's rear end ``(1, 0.0)``."""
         return ((REAR_SHIP, 1.0), (FRONT_SHIP, 0.0))
 
-    def string_broken(self, t: npt.ArrayLike, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
+    def string_broken(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
         """Whether the string has broken when its rear end is at frame time ``t'``: ``t' >= t'_b``,
         ``t'_b`` the frame time of the break event :meth:`string_break_in` (its rear end, where the
         strain reaches the breaking strain; the strain grows along that end's worldline, so this is
         the same as ``strain(t') >= e_b``); all ``False`` if it never breaks. Shape of ``t``."""
         frame = check_frame(frame)
         tt = check_times("t", t)
-        event = self.string_break_in(frame)
+        event = self.string_break_in(frame=frame)
         if event is None:
             return np.zeros(tt.shape, dtype=np.bool_)
         return tt >= event[0]
 
-    def notes(self, frame: Frame = LAB) -> tuple[str, ...]:
+    def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
         """The string's story and the rear ends' distance in the ships' frame after, in words."""
         frame = check_frame(frame)
         g = self.rods[0].motion.velocity_final.lorentz_factor()
@@ -227,7 +229,7 @@ class BellScene(Scene):
             f"the string's rest length grows from s - l = {self.string_unstretched:.6g} to gamma s - l = "
             f"{self.string_final:.6g} (strain {self.final_strain:.4g}); the Born-rigid rod keeps {self.separation:.6g}",
         ]
-        event = self.string_break_in(frame)
+        event = self.string_break_in(frame=frame)
         if self.breaking_strain is None:
             lines.append("no breaking strain given: the string stretches and holds")
         elif event is None:
@@ -239,7 +241,7 @@ class BellScene(Scene):
             )
         return tuple(lines)
 
-    def string_break_in(self, frame: Frame = LAB) -> tuple[float, float] | None:
+    def string_break_in(self, *, frame: Frame = LAB) -> tuple[float, float] | None:
         """The break event in ``frame`` (``None`` if the string never breaks)."""
         frame = check_frame(frame)
         event = self.string_break
@@ -253,16 +255,22 @@ def _inverse(a: float) -> _dd.DD:
     return _dd.div((1.0, 0.0), (a, 0.0))
 
 
+#: The parameters' old names (one name per quantity in every scene: the back end's proper
+#: acceleration is ``a_back``, as the front end's is ``a_front``): refused, naming the new ones.
+RENAMED = MappingProxyType({"acceleration": "a_back"})
+
+
+@refuse_renamed(RENAMED)
 def bell_spaceships(
     v: float,
     separation: float,
-    acceleration: float,
+    a_back: float,
     ship_length: float | None = None,
     breaking_strain: float | None = None,
     mass: float = 1.0,
 ) -> BellScene:
     """Bell's spaceships (module docstring): rear ends at 0 and ``separation``, each with proper
-    acceleration ``acceleration`` from lab ``t = 0`` until it reaches ``v`` at ``T_B = gamma v / a``
+    acceleration ``a_back`` from lab ``t = 0`` until it reaches ``v`` at ``T_B = gamma v / a``
     (Sec. 3, Eq. (9)); ships of rest length ``ship_length`` (default ``0.1 separation``), Born-rigid
     (front ends at ``a / (1 + a l)``, Eq. (15)); a string from the rear ship's front to the front
     ship's rear, breaking at ``breaking_strain`` if given; and the Born-rigid comparison rod on
@@ -274,7 +282,7 @@ def bell_spaceships(
     """
     v = V.check(v)
     separation = SEPARATION.check(separation)
-    acceleration = ACCELERATION_REAR.check(acceleration)
+    a_back = A_BACK.check(a_back)
     ship = 0.1 * separation if ship_length is None else SHIP_LENGTH.check(ship_length)
     if not ship < separation:  # names both: either may be the one to change
         raise ParameterError(
@@ -282,13 +290,13 @@ def bell_spaceships(
         )
     strain = None if breaking_strain is None else BREAKING_STRAIN.check(breaking_strain)
     velocity = ExactVelocity.from_float(v)
-    rho = _inverse(acceleration)
+    rho = _inverse(a_back)
     rods = (
         Rod("rear ship", rigid_motion(REST, velocity, ship, rho, 0.0), mass, mass),
         Rod("front ship", rigid_motion(REST, velocity, ship, rho, separation), mass, mass),
         Rod("Born-rigid rod", rigid_motion(REST, velocity, separation, rho, 0.0), mass, mass),
     )
-    params: dict[str, float] = {"v": v, "separation": separation, "acceleration": acceleration}
+    params: dict[str, float] = {"v": v, "separation": separation, "a_back": a_back}
     if ship_length is not None:
         params["ship_length"] = ship
     if strain is not None:
@@ -305,7 +313,7 @@ def bell_spaceships(
         origin_event=OriginEvent.START,
         separation=separation,
         ship_length=ship,
-        acceleration=acceleration,
+        a_back=a_back,
         breaking_strain=strain,
     )
     checked_scene(scene)
@@ -321,7 +329,7 @@ BELL_SPACESHIPS = SceneDescription(
     ),
     source="Sec. 1; Sec. 3",
     constructor=bell_spaceships,
-    parameters=(V, SEPARATION, ACCELERATION_REAR, SHIP_LENGTH, BREAKING_STRAIN),
+    parameters=(V, SEPARATION, A_BACK, SHIP_LENGTH, BREAKING_STRAIN),
     frames=FRAMES,
     default_frame="ships after",
     events=(
@@ -334,18 +342,17 @@ BELL_SPACESHIPS = SceneDescription(
         ),
     ),
     presets=(
-        ScenePreset(
-            "Bell's spaceships, V = 0.6", {"v": 0.6, "separation": 1.0, "acceleration": 0.5}, frame="ships after"
-        ),
+        ScenePreset("Bell's spaceships, V = 0.6", {"v": 0.6, "separation": 1.0, "a_back": 0.5}, frame="ships after"),
         ScenePreset(
             "Bell's spaceships: the string breaks at 10% strain",
-            {"v": 0.6, "separation": 1.0, "acceleration": 0.5, "breaking_strain": 0.1},
+            {"v": 0.6, "separation": 1.0, "a_back": 0.5, "breaking_strain": 0.1},
         ),
         ScenePreset(
             "Bell's spaceships: a string that holds",
-            {"v": 0.6, "separation": 1.0, "acceleration": 0.5, "breaking_strain": 1.0},
+            {"v": 0.6, "separation": 1.0, "a_back": 0.5, "breaking_strain": 1.0},
         ),
     ),
+    renamed=RENAMED,
     order=60,
 )
 

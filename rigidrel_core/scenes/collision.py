@@ -25,7 +25,7 @@ from .._description import (
 from .._exact import REST, ExactVelocity, compose_velocities
 from .._frame import LAB, Frame
 from .._scene import EventSpec, Rod, Scene
-from .._validate import ParameterError
+from .._validate import ParameterError, refuse_renamed
 
 #: Masses outside ``(2**-200, 2**200)`` are scaled by a common power of 2 (exactly) before
 #: solving, so that no product of the solution overflows or underflows (only their ratio matters).
@@ -521,14 +521,20 @@ _EVENTS = (
     EventSpec("T_2", 1, 1, "start"),
     EventSpec("T_2'", 1, 1, "stop"),
 )
+#: The parameters' names before every scene took one name per quantity (``mass``, ``length``, with
+#: the rod's number for two rods): refused, naming the new ones.
+RENAMED = MappingProxyType({"m1": "mass1", "m2": "mass2", "l1": "length1", "l2": "length2"})
 
 
-def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float) -> Scene:
+@refuse_renamed(RENAMED)
+def rod_collision(
+    v1: float, v2: float, mass1: float, mass2: float, length1: float, length2: float, eps: float
+) -> Scene:
     """Collision of two rigid rods along x (Secs. 5-6, Figs. 3-4).
 
-    Rod 1 (mass ``m1``, rest length ``l1``, velocity ``v1``) is on the left, rod 2 on the
-    right; ``v1 > v2``. Rod 1's right end meets rod 2's left end at ``x = 0, t = 0`` and
-    both contact ends change velocity at once (to the barycentric solution of
+    Rod 1 (rest mass ``mass1`` = M1, rest length ``length1`` = L1, velocity ``v1``) is on the left,
+    rod 2 on the right; ``v1 > v2``. Rod 1's right end meets rod 2's left end at ``x = 0, t = 0``
+    and both contact ends change velocity at once (to the barycentric solution of
     :func:`solve_collision`). The far ends follow ``x = -sqrt(L1^2 + t^2)`` from
     ``T_1 = -gamma_1 V_1 L_1`` to ``T_1' = -gamma_1' V_1' L_1`` and ``x = sqrt(L2^2 + t^2)``
     from ``T_2 = gamma_2 V_2 L_2`` to ``T_2' = gamma_2' V_2' L_2`` (Eqs. (22)-(25)).
@@ -538,10 +544,10 @@ def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: flo
     v2 = V2.check(v2)
     if not v2 < v1:
         raise ParameterError("v2", f"less than v1 = {v1!r} so that the rods collide", v2)
-    m1 = M1.check(m1)
-    m2 = M2.check(m2)
-    l1 = L1.check(l1)
-    l2 = L2.check(l2)
+    m1 = MASS1.check(mass1)
+    m2 = MASS2.check(mass2)
+    l1 = LENGTH1.check(length1)
+    l2 = LENGTH2.check(length2)
     eps = EPS.check(eps)
     sol = solve_collision(v1, v2, m1, m2, eps)
     m1_after, m2_after = m1 + m1 * sol.mass_gain, m2 + m2 * sol.mass_gain
@@ -557,10 +563,11 @@ def rod_collision(v1: float, v2: float, m1: float, m2: float, l1: float, l2: flo
             "barycentric": Frame(sol.u, "barycentric"),
         }
     )
+    parameters = {"v1": v1, "v2": v2, "mass1": m1, "mass2": m2, "length1": l1, "length2": l2, "eps": eps}
     return checked_scene(
         Scene(
             kind=ROD_COLLISION.kind,
-            parameters=MappingProxyType({"v1": v1, "v2": v2, "m1": m1, "m2": m2, "l1": l1, "l2": l2, "eps": eps}),
+            parameters=MappingProxyType(parameters),
             rods=(Rod("rod 1", rod1, m1, m1_after), Rod("rod 2", rod2, m2, m2_after)),
             event_specs=_EVENTS,
             frames=frames,
@@ -583,9 +590,9 @@ V2 = Parameter(
     Slider(-0.99, 0.99, 0.01),
     constraint="less than v1",
 )
-M1 = Parameter("m1", "M1", "M1", "mass unit", SIZE, 1.0, "rest mass M1 of rod 1", typical=(0.1, 10.0))
-M2 = Parameter(
-    "m2",
+MASS1 = Parameter("mass1", "M1", "M1", "mass unit", SIZE, 1.0, "rest mass M1 of rod 1", typical=(0.1, 10.0))
+MASS2 = Parameter(
+    "mass2",
     "M2",
     "M2/M1",
     "mass unit",
@@ -594,9 +601,9 @@ M2 = Parameter(
     "rest mass M2 of rod 2 (in the app, in units of M1)",
     Slider(0.01, 100.0, 0.01, "log"),
 )
-L1 = Parameter("l1", "L1", "L1", "length unit", SIZE, 1.0, "rest length L1 of rod 1", typical=(0.1, 10.0))
-L2 = Parameter(
-    "l2",
+LENGTH1 = Parameter("length1", "L1", "L1", "length unit", SIZE, 1.0, "rest length L1 of rod 1", typical=(0.1, 10.0))
+LENGTH2 = Parameter(
+    "length2",
     "L2",
     "L2/L1",
     "length unit",
@@ -605,7 +612,7 @@ L2 = Parameter(
     "rest length L2 of rod 2 (in the app, in units of L1)",
     Slider(0.1, 5.0, 0.05),
 )
-_PAPER = {"v1": 0.6, "v2": 0.0, "l1": 1.0, "l2": 1.0, "eps": 1.0}
+_PAPER = {"v1": 0.6, "v2": 0.0, "length1": 1.0, "length2": 1.0, "eps": 1.0}
 
 ROD_COLLISION = SceneDescription(
     kind="rod-collision",
@@ -613,7 +620,7 @@ ROD_COLLISION = SceneDescription(
     summary="Rod 1 at V1 hits rod 2 at V2 < V1; their touching ends take the barycentric solution at once.",
     source="Secs. 5-6",
     constructor=rod_collision,
-    parameters=(V1, M2, V2, L2, EPS, M1, L1),
+    parameters=(V1, MASS2, V2, LENGTH2, EPS, MASS1, LENGTH1),
     frames=("lab", "rod 1 before", "rod 2 before", "rod 1 after", "rod 2 after", "barycentric"),
     default_frame="barycentric",
     events=(
@@ -623,9 +630,10 @@ ROD_COLLISION = SceneDescription(
         EventDescription("T_2'", "the far end of rod 2 has its final velocity", "Sec. 5, Eq. (25)"),
     ),
     presets=(
-        ScenePreset("Fig. 3: collision, M2 = 2 M1", {**_PAPER, "m1": 1.0, "m2": 2.0}),
-        ScenePreset("Fig. 4: collision, M1 = 2 M2", {**_PAPER, "m1": 1.0, "m2": 0.5}),
+        ScenePreset("Fig. 3: collision, M2 = 2 M1", {**_PAPER, "mass1": 1.0, "mass2": 2.0}),
+        ScenePreset("Fig. 4: collision, M1 = 2 M2", {**_PAPER, "mass1": 1.0, "mass2": 0.5}),
     ),
+    renamed=RENAMED,
     order=60,
 )
 

@@ -145,7 +145,7 @@ class PoleBarnScene(Scene):
         """Lab ``(t_d, D)``: the door closes."""
         return (self.door_time, self.barn_length)
 
-    def door_closing_in(self, frame: Frame = LAB) -> tuple[float, float]:
+    def door_closing_in(self, *, frame: Frame = LAB) -> tuple[float, float]:
         t, x = (check_frame(frame) @ np.array(self.door_closing)).tolist()
         return (t, x)
 
@@ -165,19 +165,19 @@ class PoleBarnScene(Scene):
             return (-math.sqrt((d - length) * (d + length)), d)  # on x = sqrt(L0^2 + t^2), Eq. (23)
         return ((length / gamma - d) / speed, d)
 
-    def inside_in(self, frame: Frame, rod: int) -> bool:
+    def inside_in(self, rod: int, *, frame: Frame) -> bool:
         """Whether pole ``rod`` is entirely inside the barn (``x'_wall <= x'_front``, ``x'_rear <=
         x'_door`` at one frame time) at some instant of ``frame``: sampled after every event of the
         scene in that frame, where ``x'_rear - x'_door`` has its least value (module docstring)."""
         frame = check_frame(frame)
-        t_late = self.time_window(frame, margin=1.0)[1]
-        t_late = max(t_late, self.door_closing_in(frame)[0] + 1.0)
-        x = self.positions(np.array([t_late]), frame)[rod, :, 0]
-        wall, door = (float(o.positions(t_late, frame)) for o in self.obstacles)
+        t_late = self.time_window(frame=frame, margin=1.0)[1]
+        t_late = max(t_late, self.door_closing_in(frame=frame)[0] + 1.0)
+        x = self.positions(np.array([t_late]), frame=frame)[rod, :, 0]
+        wall, door = (float(o.positions(t_late, frame=frame)) for o in self.obstacles)
         scale = 1e-12 * max(abs(t_late), self.barn_length, self.rods[rod].motion.length)
         return bool(x[1] - door <= scale and x[0] - wall >= -scale)
 
-    def door_order_in(self, frame: Frame, rod: int) -> DoorOrder:
+    def door_order_in(self, rod: int, *, frame: Frame) -> DoorOrder:
         """The door's closing against the rear end's passing the door, by their times in ``frame``."""
         frame = check_frame(frame)
         passes = self.rear_passes_door(rod)
@@ -186,21 +186,21 @@ class PoleBarnScene(Scene):
         if passes == self.door_closing:
             return DoorOrder.SAME_EVENT
         t_pass = float((frame @ np.array(passes))[0])
-        t_door = self.door_closing_in(frame)[0]
+        t_door = self.door_closing_in(frame=frame)[0]
         return DoorOrder.AFTER if t_door > t_pass else DoorOrder.BEFORE
 
-    def notes(self, frame: Frame = LAB) -> tuple[str, ...]:
+    def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
         """The door's closing in ``frame`` and each pole's verdict (the same in every frame)."""
-        t, x = self.door_closing_in(frame)
+        t, x = self.door_closing_in(frame=frame)
         return (f"the door closes at (t, x) = ({t:.6g}, {x:.6g}) in this frame", *(v.text for v in self.verdicts()))
 
     def verdicts(self) -> tuple[PoleVerdict, ...]:
         """One :class:`PoleVerdict` per pole, in words for the readout and the command line."""
         pole = self.frames["pole before"]
-        out = []
+        out: list[PoleVerdict] = []
         for i, model in enumerate(self.models):
-            inside = (self.inside_in(LAB, i), self.inside_in(pole, i))
-            door = (self.door_order_in(LAB, i), self.door_order_in(pole, i))
+            inside = (self.inside_in(i, frame=LAB), self.inside_in(i, frame=pole))
+            door = (self.door_order_in(i, frame=LAB), self.door_order_in(i, frame=pole))
             x_rest = self.rear_rest_x(i)
             name = "Born-rigid pole" if model == "born" else f"signal-limited pole (c_s = {self.sound_speed:g})"
             if inside[0] == inside[1]:

@@ -211,7 +211,7 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     The chosen frame moves at beta = 0.8 and the clock is mid-collision, so lab positions
     drawn in the frame lane would be off by far more than the tolerance (checked).
     """
-    settings = Settings.of("rod-collision", v1=0.6, v2=0.0, m2=2.0, eps=1.0)
+    settings = Settings.of("rod-collision", v1=0.6, v2=0.0, mass2=2.0, eps=1.0)
     settings = Settings(settings.scene, settings.values, CUSTOM_FRAME, 0.8)
     now = 0.4
     default_scene = tab.canvas()
@@ -223,8 +223,8 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     found = measured_rods(tab, img)
     separation = []
     for lane, runs, lane_frame in zip(tab.session.renderer_lanes, found, (rr.LAB, frame), strict=True):
-        x = scene.positions(np.array([now]), lane_frame)[:, :, 0]
-        x_lab = scene.positions(np.array([now]), rr.LAB)[:, :, 0]
+        x = scene.positions(np.array([now]), frame=lane_frame)[:, :, 0]
+        x_lab = scene.positions(np.array([now]), frame=rr.LAB)[:, :, 0]
         for r in range(2):
             lo, hi = lane.origin_px + x[r] * lane.scale
             a, b = runs[r]
@@ -244,9 +244,9 @@ EXTREMES = [
     ("wall_V_0.99", Settings.of("wall-collision", v=0.99), 0.6),
     ("beta_+0.99", Settings("constant-acceleration", (), CUSTOM_FRAME, 0.99), 0.5),
     ("beta_-0.99", Settings("constant-acceleration", (), CUSTOM_FRAME, -0.99), 0.5),
-    ("M2_0.01", Settings.of("rod-collision", m2=0.01), 0.9),
-    ("M2_100", Settings.of("rod-collision", m2=100.0), 0.9),
-    ("L2_0.1", Settings.of("rod-collision", l2=0.1), 0.6),
+    ("M2_0.01", Settings.of("rod-collision", mass2=0.01), 0.9),
+    ("M2_100", Settings.of("rod-collision", mass2=100.0), 0.9),
+    ("L2_0.1", Settings.of("rod-collision", length2=0.1), 0.6),
 ]
 
 

@@ -123,14 +123,14 @@ def test_page_down_and_up_walk_the_scenes_figures(collision: AppPage, shots: Pat
     wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
     press(tab, "PageDown")  # a clicker's "next"
     wait_until(lambda: tab.control("Paper figure").input_value() == FIG4)
-    assert tab.session.settings.value("m2") == 0.5
+    assert tab.session.settings.value("mass2") == 0.5
     wait_until(lambda: box(tab, "M2/M1").input_value() == "0.5")  # the ratio, not its log
     tab.page.screenshot(path=str(shots / "fig4_by_page_down.png"))
     press(tab, "PageDown")  # past the last figure: nothing happens
     press(tab, "PageUp")
     wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
     wait_until(lambda: box(tab, "M2/M1").input_value() == "2")
-    assert tab.session.settings.value("m2") == 2.0
+    assert tab.session.settings.value("mass2") == 2.0
 
 
 def rod_bounds(img: np.ndarray, lanes: bool = False) -> np.ndarray:
@@ -193,7 +193,7 @@ def test_the_mass_ratio_is_typed_and_shown_as_a_ratio(collision: AppPage, shots:
     assert not tab.page.locator(f"[id='{uid}'] + .mantine-NumberInput-root").is_visible()  # no box of log10
     for typed, ratio in (("0.01", 0.01), ("100", 100.0), ("0.5", 0.5)):
         type_keys(tab, "M2/M1", typed)
-        wait_until(lambda ratio=ratio: tab.session.drawn.resolved.scene.parameters["m2"] == ratio)  # type: ignore[union-attr]
+        wait_until(lambda ratio=ratio: tab.session.drawn.resolved.scene.parameters["mass2"] == ratio)  # type: ignore[union-attr]
         wait_until(lambda ratio=ratio: thumb_at(np.log10(ratio)))
         assert box(tab, "M2/M1").input_value() == typed
         wait_until(lambda: notice(tab) == "")  # "0" and "0.0" were refused on the way to 0.01; 0.01 is not
@@ -209,12 +209,12 @@ def test_abc_gives_a_notice_and_a_valid_value_clears_it(collision: AppPage, shot
     assert "[0.01, 100]" in notice(tab) and "rods collide" not in notice(tab)  # the older notice is gone
     tab.page.screenshot(path=str(shots / "abc_refused.png"))
     type_keys(tab, "M2/M1", "3")
-    wait_until(lambda: tab.session.settings.value("m2") == 3.0)
+    wait_until(lambda: tab.session.settings.value("mass2") == 3.0)
     # V2 = 0.9 is still asked for, so the scene still refuses it: its notice is back, not the abc one
     wait_until(lambda: "so that the rods collide" in notice(tab))
     type_keys(tab, "V2", "0")
     # the scene drawn before V2 = 0.9 had V2 = 0 too: wait for the new one, which keeps M2/M1 = 3
-    wait_until(lambda: tab.session.drawn.resolved.scene.parameters["m2"] == 3.0)  # type: ignore[union-attr]
+    wait_until(lambda: tab.session.drawn.resolved.scene.parameters["mass2"] == 3.0)  # type: ignore[union-attr]
     assert tab.session.drawn.resolved.scene.parameters["v2"] == 0.0  # type: ignore[union-attr]
     wait_until(lambda: notice(tab) == "")
 

@@ -72,9 +72,9 @@ def exported(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
 EXTREME_PAGES = {
     "v-0.99": Settings.of("constant-acceleration", v=0.99),
     "fig1": replace(Settings("constant-acceleration"), overlay=True),
-    "m2-0.01": Settings.of("rod-collision", m2=0.01),
-    "m2-100": Settings.of("rod-collision", m2=100.0),
-    "l2-0.1": Settings.of("rod-collision", l2=0.1),
+    "m2-0.01": Settings.of("rod-collision", mass2=0.01),
+    "m2-100": Settings.of("rod-collision", mass2=100.0),
+    "l2-0.1": Settings.of("rod-collision", length2=0.1),
     "frame-slider": Settings("impulsive-start"),
 }
 

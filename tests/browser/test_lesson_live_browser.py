@@ -279,7 +279,10 @@ def test_scenario_box_round_trip_and_a_bad_one(open_tab: OpenTab, lesson_app: Ap
     tab = open_tab(lesson_app)
     s = tab.session
     tab.wait_caption(PAPER.steps[0].title)
-    line = "rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --frame barycentric --layers world-tube,signals --t 0.3"
+    line = (
+        "rod-collision --v1 0.6 --mass2 2 --v2 0 --length2 1 --eps 1 --frame barycentric "
+        "--layers world-tube,signals --t 0.3"
+    )
     box = tab.text_box("Load")
     box.fill(line)
     wait_until(lambda: s.controls.scenario_box.value == line, timeout=30)

@@ -24,7 +24,7 @@ pytestmark = pytest.mark.slow  # a Jupyter kernel runs the notebook; the tests t
 CELLS = [
     "import rigidrel_core as rr\nfrom rigidrel_app.notebook import diagram, lesson",
     'scene = rr.build_scene("wall-collision", eps=0.0)\ndiagram(scene, scene.frame("rod before"))',
-    'diagram(rr.build_scene("rod-collision", m2=2.0), rr.LAB)',
+    'diagram(rr.build_scene("rod-collision", mass2=2.0), rr.LAB)',
     'lesson("paper")',
     # the live view: built in the kernel, then one slider moved there (as a person's drag arrives)
     'from rigidrel_app.notebook import explore\nview = explore("rod-collision", v1=0.6, frame="barycentric")\nview',

@@ -170,7 +170,7 @@ def _panels(r: Resolved) -> tuple[list[dict[str, Any]], list[dict[str, Any]], di
     """Traces, annotations and axis ranges of the diagram (in the resolved frame) and the length plot."""
     scene, frame = r.scene, r.frame
     diagram = minkowski_in_frame(scene, frame, DIAGRAM_PX, r.overlay)
-    lengths = length_static(scene, rr.LAB, frame, scene.time_window(frame), LENGTH_PX)
+    lengths = length_static(scene, rr.LAB, frame, scene.time_window(frame=frame), LENGTH_PX)
     traces: list[dict[str, Any]] = []
     annotations: list[dict[str, Any]] = []
     for chart, xa, ya, legend in ((diagram, "x", "y", "legend"), (lengths, "x2", "y2", "legend2")):

@@ -68,11 +68,13 @@ class FrameValues:
 class _Table(Mapping[Any, Any]):
     """A named table that says what it has when asked for what it has not."""
 
-    def __init__(self, what: str, items: Mapping[str, Any]) -> None:
-        self._what, self._items = what, dict(items)
+    def __init__(self, what: str, items: Mapping[str, Any], renamed: Mapping[str, str] | None = None) -> None:
+        self._what, self._items, self._renamed = what, dict(items), dict(renamed or {})
 
     def __getitem__(self, key: str | int) -> Any:
         key = str(key)  # str.format reads rod[1] with the integer 1
+        if key in self._renamed:  # a caption written before the parameter was renamed
+            raise CaptionError(f"{self._what}[{key}] is now {self._what}[{self._renamed[key]}]")
         if key not in self._items:
             have = ", ".join(self._items) or "none in this scene"
             raise CaptionError(f"{self._what}[{key}] does not exist; {self._what} has {have}")
@@ -88,7 +90,7 @@ class _Table(Mapping[Any, Any]):
 def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
     """The values a caption may name, all asked of the core."""
     signals = signals_in(scene, frame)
-    lengths = scene.lengths(np.array(scene.time_window(frame)), frame)
+    lengths = scene.lengths(np.array(scene.time_window(frame=frame)), frame=frame)
     rods = {
         str(k + 1): RodValues(
             rod.motion.velocity_initial.value,
@@ -105,15 +107,15 @@ def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
     }
     verdicts: Sequence[str] = verdict_lines(scene)
     return {
-        "event": _Table("event", {k: EventValue(*v) for k, v in scene.events_in(frame).items()}),
+        "event": _Table("event", {k: EventValue(*v) for k, v in scene.events_in(frame=frame).items()}),
         "lab": _Table("lab", {k: EventValue(*v) for k, v in scene.events.items()}),
         "signal": _Table("signal", {leg.name: EventValue(*leg.arrival) for leg in signals.legs}),
         "rod": _Table("rod", rods),
-        "param": _Table("param", {k: v for k, v in scene.parameters.items()}),
+        "param": _Table("param", {k: v for k, v in scene.parameters.items()}, rr.describe(scene).renamed),
         "frame": FrameValues(frame.beta, frame.label()),
-        "heat": scene.budget(frame).heat,
+        "heat": scene.budget(frame=frame).heat,
         "verdict": _Table("verdict", {str(k + 1): v for k, v in enumerate(verdicts)}),
-        "note": _Table("note", {str(k + 1): n[:1].upper() + n[1:] for k, n in enumerate(scene.notes(frame))}),
+        "note": _Table("note", {str(k + 1): n[:1].upper() + n[1:] for k, n in enumerate(scene.notes(frame=frame))}),
     }
 
 

@@ -239,6 +239,8 @@ def _step(source: str, lines: _Lines, k: int, raw: Mapping[str, Any]) -> Step:
             if not isinstance(given, list) or not all(isinstance(v, str) for v in given):
                 raise fail("lock", f'must be "all" or a list of controls: {", ".join(controls)}')
             bad = [v for v in given if v not in controls]
+            if bad and bad[0] in d.renamed:  # a lesson written before the parameter was renamed
+                raise fail("lock", f'"{bad[0]}" is now "{d.renamed[bad[0]]}"')
             if bad:
                 raise fail("lock", f'"{bad[0]}" is not a control of {d.kind}; the controls are {", ".join(controls)}')
             locked = frozenset(given)

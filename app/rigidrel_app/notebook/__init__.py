@@ -2,7 +2,7 @@
 
     import rigidrel_core as rr
     from rigidrel_app.notebook import diagram, explore, lesson, recording
-    scene = rr.rod_collision(v1=0.6, v2=0.0, m1=1.0, m2=2.0, l1=1.0, l2=1.0, eps=1.0)
+    scene = rr.rod_collision(v1=0.6, v2=0.0, mass1=1.0, mass2=2.0, length1=1.0, length2=1.0, eps=1.0)
     diagram(scene, scene.frame("barycentric"))      # interactive plotly figure
     recording(scene, scene.frame("barycentric"))    # the lanes playing, offline (an iframe)
     lesson("paper")                                 # the built-in lesson's steps, captions and diagrams

@@ -239,7 +239,7 @@ def _moving_items(state: LiveState) -> tuple[tuple[Item, ...], ...]:
     r = d.resolved
     instant = d.ride_instant(state.now)  # riding a point: its comoving frame at its event at lab time now
     lower = (state.now, r.frame) if instant is None else (instant.event[0], instant.frame)
-    ends = [r.scene.snapshot(t, f, fractions=_ENDS)[0] for t, f in ((state.now, rr.LAB), lower)]
+    ends = [r.scene.snapshot(t, frame=f, fractions=_ENDS)[0] for t, f in ((state.now, rr.LAB), lower)]
     return d.moving_items(state.now, ends, instant)
 
 

@@ -57,14 +57,14 @@ def ride(scene: rr.Scene, point: RidePoint, proper_time: float) -> ComovingInsta
     event = scene.point_event(point.rod, point.fraction, proper_time=proper_time, frame=frame)
     event_lab = scene.point_event(point.rod, point.fraction, proper_time=proper_time)
     horizon = scene.horizon_event(point.rod)
-    lengths = scene.lengths(np.array([event[0]]), frame)[:, 0]
+    lengths = scene.lengths(np.array([event[0]]), frame=frame)[:, 0]
     return ComovingInstant(proper_time, frame, event, event_lab, horizon, tuple(float(v) for v in lengths))
 
 
 def ride_at(scene: rr.Scene, point: RidePoint, t: float) -> ComovingInstant:
     """The instant of the ride where the point's worldline crosses lab time ``t`` (once: its clock
     runs forward with lab time), so the lab lane and the riding lane show the same event of the point."""
-    tau = scene.proper_times(np.array([t]), rr.LAB, fractions=np.array([point.fraction]))[point.rod, 0, 0]
+    tau = scene.proper_times(np.array([t]), frame=rr.LAB, fractions=np.array([point.fraction]))[point.rod, 0, 0]
     return ride(scene, point, float(tau))
 
 
@@ -90,7 +90,7 @@ def ride_track(scene: rr.Scene, point: RidePoint, window: tuple[float, float], s
         instant = ride_at(scene, point, float(tk))
         here = np.array([instant.event[0]])
         lengths[:, k] = instant.lengths
-        ends = scene.positions(here, instant.frame)[:, :, 0]
+        ends = scene.positions(here, frame=instant.frame)[:, :, 0]
         reach = max(reach, float(np.max(np.abs(ends - instant.event[1]))))
     return RideTrack(t, lengths, reach)
 
@@ -98,7 +98,7 @@ def ride_track(scene: rr.Scene, point: RidePoint, window: tuple[float, float], s
 def proper_time_window(scene: rr.Scene, point: RidePoint, lab_window: tuple[float, float]) -> tuple[float, float]:
     """The point's clock readings over a lab time window (its clock runs forward with lab time)."""
     t = np.array(lab_window, dtype=np.float64)
-    tau = scene.proper_times(t, rr.LAB, fractions=np.array([point.fraction]))[point.rod, 0]
+    tau = scene.proper_times(t, frame=rr.LAB, fractions=np.array([point.fraction]))[point.rod, 0]
     return float(tau[0]), float(tau[1])
 
 

@@ -101,8 +101,8 @@ def _to_view(view: View, events_other: FloatArray) -> FloatArray:
 def window_x_range(scene: rr.Scene, frames: tuple[rr.Frame, ...], t_range: tuple[float, float]) -> tuple[float, float]:
     """The x interval the rods sweep over the window in any of the frames (for shared scales)."""
     t = np.linspace(t_range[0], t_range[1], 97)
-    xs = [scene.positions(t, f) for f in frames]
-    xs += [o.positions(t, f) for o in scene.obstacles for f in frames]
+    xs = [scene.positions(t, frame=f) for f in frames]
+    xs += [o.positions(t, frame=f) for o in scene.obstacles for f in frames]
     lo = min(float(x.min()) for x in xs)
     hi = max(float(x.max()) for x in xs)
     return lo, hi
@@ -134,7 +134,7 @@ def minkowski_in_frame(
     """The diagram of one frame on its own (notebooks, exports): the frame's event window at equal
     scales in a plot area of ``area_px`` CSS pixels, compared with the lab; curves sampled to half
     a pixel at ``density`` device pixels per CSS pixel."""
-    window = scene.time_window(frame)
+    window = scene.time_window(frame=frame)
     x_range, t_range = equal_scale_ranges(window_x_range(scene, (frame,), window), window, area_px)
     label = overlay_label(scene)
     return minkowski_static(
@@ -213,7 +213,7 @@ def minkowski_static(
         style = Style(WALL_COLOR, 5.0, name=obstacle.name)
         if obstacle.kind is rr.ObstacleKind.BARN_DOOR:  # the door's worldline, dashed: nothing hits it
             style = Style(DOOR_COLOR, 2.5, "dash", name=obstacle.name)
-        items.append(Polyline(obstacle.positions(tt, frame), tt, style))
+        items.append(Polyline(obstacle.positions(tt, frame=frame), tt, style))
     # world tubes and worldlines
     tube, interior = Layer.WORLD_TUBE in layers, Layer.INTERIOR_LINES in layers
     fractions = DIAGRAM_FRACTIONS if interior else DIAGRAM_FRACTIONS[[0, -1]]
@@ -242,7 +242,7 @@ def minkowski_static(
             name = overlay_label if r == 0 else None
             items.append(Polyline(right.x, right.t, Style(INK, 1.5, "dash", name=name, group="overlay")))
     # named events, in the paper's notation
-    events = scene.events_in(frame)
+    events = scene.events_in(frame=frame)
     if events:
         et = np.array([e[0] for e in events.values()])
         ex = np.array([e[1] for e in events.values()])
@@ -313,7 +313,9 @@ def length_static(
         frames.append((chosen, "'", "dash"))
     # the largest length over the window: the rest lengths and the contracted ones at the ends
     probe = np.array([t_range[0], t_range[1]])
-    top = max(max(r.motion.length for r in scene.rods), *(float(scene.lengths(probe, f).max()) for f, _, _ in frames))
+    top = max(
+        max(r.motion.length for r in scene.rods), *(float(scene.lengths(probe, frame=f).max()) for f, _, _ in frames)
+    )
     if comoving is not None:
         top = max(top, float(np.max(comoving[1])))
         for r, rod in enumerate(scene.rods):
@@ -332,9 +334,9 @@ def length_static(
         # the named events on the curves; events on one spot (within half a pixel: Bell's two ships
         # have one length curve in the lab) share one dot and one label
         marks: list[tuple[float, float, list[str]]] = []
-        for name, (te, _) in scene.events_in(frame).items():
+        for name, (te, _) in scene.events_in(frame=frame).items():
             if t_range[0] <= te <= t_range[1]:
-                le = float(scene.lengths(np.array([te]), frame)[scene.event_rod(name), 0])
+                le = float(scene.lengths(np.array([te]), frame=frame)[scene.event_rod(name), 0])
                 same = [m for m in marks if abs(m[0] - te) <= half_px_t and abs(m[1] - le) <= half_px_length]
                 if same:
                     same[0][2].append(name)

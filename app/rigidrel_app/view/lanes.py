@@ -126,7 +126,7 @@ def lane_state(
     fractions=TICK_FRACTIONS)`` if the caller already has it.
     """
     u = geo.unit
-    x_phys, tau = snapshot if snapshot is not None else scene.snapshot(now, frame, fractions=TICK_FRACTIONS)
+    x_phys, tau = snapshot if snapshot is not None else scene.snapshot(now, frame=frame, fractions=TICK_FRACTIONS)
     x = x_phys / u
     h = geo.rod_height
     rows = bar_rows(scene.rod_groups)
@@ -140,7 +140,7 @@ def lane_state(
     if string is not None:
         boxes.extend(string.boxes)
     for obstacle in scene.obstacles:
-        boxes.append(obstacle_box(obstacle, float(obstacle.positions(now, frame)) / u, geo))
+        boxes.append(obstacle_box(obstacle, float(obstacle.positions(now, frame=frame)) / u, geo))
     tx = x.ravel()
     tick_z = np.repeat(row_z, x.shape[1])
     tick_h = np.repeat(row_h, x.shape[1])
@@ -242,8 +242,8 @@ def string_picture(scene: rr.BellScene, frame: rr.Frame, now: float, x: FloatArr
     (rear_rod, rear_f), (front_rod, front_f) = scene.string_ends
     x0 = float(x[rear_rod, -1 if rear_f == 1.0 else 0])
     x1 = float(x[front_rod, -1 if front_f == 1.0 else 0])
-    strain = float(scene.string_strains([now], frame)[0])
-    broken = bool(scene.string_broken([now], frame)[0])
+    strain = float(scene.string_strains([now], frame=frame)[0])
+    broken = bool(scene.string_broken([now], frame=frame)[0])
     full_scale = scene.breaking_strain if scene.breaking_strain is not None else scene.final_strain
     color = ramp_color(1.0 if broken else (strain / full_scale if full_scale > 0 else 0.0), STRAIN_RAMP)
     centre, share = bar_rows(scene.rod_groups)[scene.rod_groups[rear_rod]]
@@ -330,7 +330,7 @@ def steady_width(scene: rr.Scene, frame: rr.Frame, window: tuple[float, float]) 
     largest joint extent over the time ``window``, over :data:`FIT_SHARE`. One scale for the whole
     playback, so Lorentz contraction shows as a rod getting shorter on the screen."""
     t = np.linspace(window[0], window[1], 193)
-    x = scene.positions(t, frame)  # (rods, 2, t)
+    x = scene.positions(t, frame=frame)  # (rods, 2, t)
     extent = x.max(axis=(0, 1)) - x.min(axis=(0, 1))
     return float(extent.max()) / FIT_SHARE
 
@@ -415,7 +415,7 @@ def lane_picture(
     """The rods of ``scene`` at time ``now`` of ``frame`` in the lane ``place``: the lane follows
     its rods (:func:`lane_window`; centred on ``center`` if given), with true positions on a ruler
     of the frame's x; dials and rods keep their pixel sizes at any zoom."""
-    snap = scene.snapshot(now, frame, fractions=TICK_FRACTIONS)
+    snap = scene.snapshot(now, frame=frame, fractions=TICK_FRACTIONS)
     rest = np.array([r.motion.length for r in scene.rods])
     ends = snap[0][:, [0, -1]]
     win = lane_window(ends, rest, steady, center)

@@ -111,11 +111,11 @@ def sample_worldlines(
     ``px_per_x`` is the panel's horizontal scale; the error is measured horizontally
     (an upper bound of the distance to the chord).
     """
-    switches = scene.switch_times(frame, fractions=fractions)  # (rods, fractions, 2)
+    switches = scene.switch_times(frame=frame, fractions=fractions)  # (rods, fractions, 2)
     knots = [_knots(switches[r, k], t_range) for r in range(scene.n_rods) for k in range(fractions.size)]
 
     def evaluate(t: FloatArray) -> FloatArray:
-        return scene.material_positions(t, frame, fractions=fractions).reshape(-1, t.size)
+        return scene.material_positions(t, frame=frame, fractions=fractions).reshape(-1, t.size)
 
     flat = refine(evaluate, knots, tol_px / px_per_x)
     return [flat[r * fractions.size : (r + 1) * fractions.size] for r in range(scene.n_rods)]
@@ -129,9 +129,9 @@ def sample_lengths(
     tol_px: float = TOLERANCE_PX,
 ) -> list[Sampled]:
     """Each rod's equal-time length against frame time, adaptively sampled (constant while coasting)."""
-    switches = scene.switch_times(frame)  # (rods, 2 ends, 2)
+    switches = scene.switch_times(frame=frame)  # (rods, 2 ends, 2)
     knots = [_knots(switches[r].ravel(), t_range) for r in range(scene.n_rods)]
-    return refine(lambda t: scene.lengths(t, frame), knots, tol_px / px_per_length)
+    return refine(lambda t: scene.lengths(t, frame=frame), knots, tol_px / px_per_length)
 
 
 @dataclass(frozen=True)
@@ -149,7 +149,7 @@ class Sampler:
         if self.fixed_n is None:
             return sample_worldlines(scene, frame, fractions, t_range, px_per_x, self.tol_px)
         t = np.linspace(t_range[0], t_range[1], self.fixed_n)
-        x = scene.material_positions(t, frame, fractions=fractions)
+        x = scene.material_positions(t, frame=frame, fractions=fractions)
         return [[Sampled(t, x[r, k]) for k in range(fractions.size)] for r in range(scene.n_rods)]
 
     def lengths(
@@ -159,7 +159,7 @@ class Sampler:
         if self.fixed_n is None:
             return sample_lengths(scene, frame, t_range, px_per_length, self.tol_px)
         t = np.linspace(t_range[0], t_range[1], self.fixed_n)
-        lengths = scene.lengths(t, frame)
+        lengths = scene.lengths(t, frame=frame)
         return [Sampled(t, lengths[r]) for r in range(scene.n_rods)]
 
 

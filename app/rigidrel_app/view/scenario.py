@@ -1,6 +1,6 @@
 """Scenario strings: one line that names a whole state, the way the command line writes it.
 
-    rod-collision --v1 0.6 --m2 2 --v2 0 --l2 1 --eps 1 --frame barycentric --t 0.3
+    rod-collision --v1 0.6 --mass2 2 --v2 0 --length2 1 --eps 1 --frame barycentric --t 0.3
 
 The scene's name, then one ``--flag value`` per parameter (the flag is the parameter's name with
 ``-`` for ``_``; ``none`` omits an optional one), then ``--frame`` (a preset name, quoted if it has
@@ -27,7 +27,7 @@ import math
 import shlex
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import NoReturn
+from typing import Any, NoReturn
 
 import rigidrel_core as rr
 
@@ -169,6 +169,18 @@ def _layers(text: str) -> frozenset[Layer]:
     return frozenset(known[n] for n in names)
 
 
+class _Renamed(argparse.Action):
+    """The option of a renamed parameter: refused, naming the new option."""
+
+    def __init__(self, option_strings: list[str], dest: str, new: str, **kwargs: Any) -> None:
+        super().__init__(option_strings, dest, nargs=1, default=argparse.SUPPRESS, **kwargs)
+        self.new = "--" + new.replace("_", "-")
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace, *_: object) -> None:
+        old = self.option_strings[0]
+        raise argparse.ArgumentError(self, f"{old} is now {self.new} (the parameter was renamed)")
+
+
 FRAME_HELP = "frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'"
 
 
@@ -186,6 +198,8 @@ def add_scene_options(parser: argparse.ArgumentParser, description: rr.SceneDesc
             help=f"{p.help}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
             + ("; 'none' omits it" if p.optional else ""),
         )
+    for old, new in description.renamed.items():  # a line written before a parameter was renamed
+        parser.add_argument("--" + old.replace("_", "-"), action=_Renamed, new=new, help=argparse.SUPPRESS)
     parser.add_argument("--frame", default=None, help=frame_help + f"; presets: {', '.join(description.frames)}")
 
 
@@ -281,7 +295,8 @@ def parse_scenario(text: str) -> Scenario:
     except argparse.ArgumentError as exc:
         name = exc.argument_name or "--scene"
         needs = "needs a value" if exc.message.startswith("expected one argument") else exc.message
-        raise ScenarioError(name.split("/")[0].lstrip("-"), f"{name} {needs}") from None
+        text = needs if needs.startswith(name) else f"{name} {needs}"
+        raise ScenarioError(name.split("/")[0].lstrip("-"), text) from None
     if extra:
         options = ", ".join(o for a in parser._actions for o in a.option_strings)  # pyright: ignore[reportPrivateUsage]
         raise ScenarioError("scene", f"{extra[0]!r} is not an option of {kind}; its options are {options}")

@@ -149,7 +149,7 @@ class Drawn:
         lab = minkowski_now(lab_view, now, self.span, ends[0])
         frame = minkowski_now(frame_view, now, self.span, ends[1])
         if Layer.LENGTH_PANEL in r.layers:
-            lengths = np.stack([r.scene.lengths(now, f) for f in (_LAB, r.frame)])  # (2, rods)
+            lengths = np.stack([r.scene.lengths(now, frame=f) for f in (_LAB, r.frame)])  # (2, rods)
             length = _now_items(length_now(now, self.length_chart.y_range[1], lengths), *_at(now, lengths.T))
         else:
             length = ()
@@ -180,7 +180,7 @@ class Drawn:
         lab += simultaneity_items(instant, self.span)[:2]
         frame += simultaneity_items(instant, self.span, frame_view.frame)[:2]
         if Layer.LENGTH_PANEL in r.layers:
-            lengths = np.stack([r.scene.lengths(now, _LAB), np.array(instant.lengths)])  # (2, rods)
+            lengths = np.stack([r.scene.lengths(now, frame=_LAB), np.array(instant.lengths)])  # (2, rods)
             length = _now_items(length_now(now, self.length_chart.y_range[1], lengths), *_at(now, lengths.T))
         else:
             length = ()
@@ -279,14 +279,14 @@ def build_drawing(
     plot_area, length_area = areas
     scene, frame = resolved.scene, resolved.frame
     lab = _LAB
-    a0, a1 = scene.time_window(lab)
-    b0, b1 = scene.time_window(frame)
+    a0, a1 = scene.time_window(frame=lab)
+    b0, b1 = scene.time_window(frame=frame)
     signals = (signals_in(scene, lab), signals_in(scene, frame)) if Layer.SIGNALS in resolved.layers else None
     window = _round_outward(min(a0, b0), _signals_end(max(a1, b1), min(a0, b0), signals))
     geometry = lane_geometry(scene)
 
     def lane_range(f: rr.Frame) -> tuple[float, float]:
-        lo, hi = window_x_range(scene, (f,), _round_outward(*scene.time_window(f)))
+        lo, hi = window_x_range(scene, (f,), _round_outward(*scene.time_window(frame=f)))
         pad = 0.08 * (hi - lo) + 0.1 * geometry.unit
         return (lo - pad, hi + pad)
 
@@ -294,7 +294,7 @@ def build_drawing(
     lab_sweep, frame_sweep = window_x_range(scene, (lab,), window), window_x_range(scene, (frame,), window)
     if resolved.ride is not None:  # the riding lane's lines of simultaneity meet at the horizon event: show it
         lab_sweep = _reaching(lab_sweep, scene.horizon_event(resolved.ride.rod)[1])
-        frame_sweep = _reaching(frame_sweep, scene.horizon_event(resolved.ride.rod, frame)[1])
+        frame_sweep = _reaching(frame_sweep, scene.horizon_event(resolved.ride.rod, frame=frame)[1])
     lab_x, lab_t = equal_scale_ranges(lab_sweep, window, plot_area)
     fr_x, fr_t = equal_scale_ranges(frame_sweep, window, plot_area)
     label = overlay_label(scene)
@@ -317,7 +317,7 @@ def build_drawing(
         track = ride_track(scene, resolved.ride, window)
         frame_width = 2.0 * track.reach / FIT_SHARE  # about the point, which the riding lane keeps still
         lab_chart = _with_horizon(lab_chart, scene.horizon_event(resolved.ride.rod))
-        frame_chart = _with_horizon(frame_chart, scene.horizon_event(resolved.ride.rod, frame))
+        frame_chart = _with_horizon(frame_chart, scene.horizon_event(resolved.ride.rod, frame=frame))
     if Layer.LENGTH_PANEL in layers:
         comoving = None if track is None else (track.t, track.lengths, RIDE_LENGTH_NAME)
         length_chart = length_static(scene, lab, frame, window, length_area, sampler, comoving, label_px)
@@ -447,7 +447,7 @@ def readout_markdown(resolved: Resolved) -> str:
     params = [f"{d.parameter(k).symbol} = {format_value(v)}" for k, v in scene.parameters.items()]
     v = ", ".join(f"{r.name}: {signed(v, 4)}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
     ev = " · ".join(f"{k} ({_fixed(t)}, {_fixed(x)})" for k, (t, x) in scene.events.items())
-    notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame))  # a paradox's verdicts, in words
+    notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame=frame))  # a paradox's verdicts, in words
     shown = frame_title(frame)
     if resolved.ride is not None:
         shown = f"the lower lane rides: {resolved.ride.label(scene)} ({RIDE_RULE}); the second diagram: {shown}"

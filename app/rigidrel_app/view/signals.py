@@ -93,7 +93,7 @@ def _key_event(scene: rr.Scene) -> tuple[str, str, tuple[float, float]]:
     """The key event as a source name for the core, its phrase, and its lab ``(t, x)``."""
     if scene.origin_event is not rr.OriginEvent.VERTEX:
         return scene.origin_event.value, scene.origin_event.phrase, (0.0, 0.0)
-    events = scene.events_in(rr.LAB)
+    events = scene.events_in(frame=rr.LAB)
     starts = [s.name for s in scene.event_specs if s.phase == "start"]
     first = min(starts, key=lambda name: events[name][0])
     return first, "the start of the change", events[first]
@@ -115,7 +115,7 @@ def signals_in(scene: rr.Scene, frame: rr.Frame) -> Signals:
     A leg the light never completes (the point outruns it for ever) is left out.
     """
     source, phrase, key_lab = _key_event(scene)
-    key_here = scene.source_event(source, frame)
+    key_here = scene.source_event(source, frame=frame)
     legs: list[SignalLeg] = []
     for rod, (far, near) in enumerate(far_fractions(scene, key_lab)):
         suffix = f"_{rod + 1}" if scene.n_rods > 1 else ""
@@ -206,7 +206,7 @@ def event_cone_items(
 ) -> tuple[Item, ...]:
     """The light cone of one named event (or the origin event's name) in ``frame``: its future and past
     shaded, its four light rays, clipped to the chart. The event comes from the core (exact)."""
-    tk, xk = scene.source_event(name, frame)
+    tk, xk = scene.source_event(name, frame=frame)
     reach = (x_range[1] - x_range[0]) + (t_range[1] - t_range[0]) + abs(tk) + abs(xk)
     items: list[Item] = []
     label = event_label(name) if name != scene.origin_event.value else scene.origin_event.phrase

@@ -240,7 +240,7 @@ def build(s: Settings) -> Resolved:
 def cone_events(scene: rr.Scene) -> tuple[str, ...]:
     """The events whose light cone can be drawn: the origin event (by its name, ``"contact"``), then
     the scene's named events in the lab's time order."""
-    lab = scene.events_in(rr.LAB)
+    lab = scene.events_in(frame=rr.LAB)
     return (scene.origin_event.value, *sorted(lab, key=lambda name: lab[name][0]))
 
 

@@ -17,4 +17,4 @@ from . import FloatArray
 def positions(scene: BenchScene, frame_velocity: float, t: FloatArray) -> FloatArray:
     """Build the core's scene and its frame (``rr.Frame.from_velocity``) and sample both ends of each rod
     at frame times ``t``."""
-    return scene.core().positions(t, rr.Frame.from_velocity(frame_velocity))
+    return scene.core().positions(t, frame=rr.Frame.from_velocity(frame_velocity))

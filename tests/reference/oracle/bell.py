@@ -52,14 +52,14 @@ def ref_bell_spaceships(
     fractions: Sequence[float],
     v: float,
     separation: float,
-    acceleration: float,
+    a_back: float,
     ship_length: float | None = None,
     breaking_strain: float | None = None,
 ) -> RefScene:
     """Three rods (rear ship, front ship, comparison rod); events ``T_B1``, ``T_F1``, ``T_B2``, ``T_F2``,
     ``T_Frod``; extras: the string's final rest length and, given a breaking strain it reaches, the
     break event's lab ``(t, x)`` (``break_t``, ``break_x``)."""
-    V, s, a = F(v), F(separation), F(acceleration)
+    V, s, a = F(v), F(separation), F(a_back)
     ship = s / 10 if ship_length is None else F(ship_length)
     g = gamma_of(V)
     r = 1 / a
@@ -105,18 +105,18 @@ BELL_SPACESHIPS = SceneReference(
     60,
     ref_bell_spaceships,
     (
-        ReferenceCase("bell-spaceships", {"v": 0.6, "separation": 1.0, "acceleration": 0.5}, PARADOXES + 1),
+        ReferenceCase("bell-spaceships", {"v": 0.6, "separation": 1.0, "a_back": 0.5}, PARADOXES + 1),
         ReferenceCase(
             "bell-spaceships",
-            {"v": 0.9, "separation": 2.0, "acceleration": 3.0, "ship_length": 0.5, "breaking_strain": 0.5},
+            {"v": 0.9, "separation": 2.0, "a_back": 3.0, "ship_length": 0.5, "breaking_strain": 0.5},
             PARADOXES + 2,
         ),
         ReferenceCase(
             "bell-spaceships",
-            {"v": 0.6, "separation": 1.0, "acceleration": 0.5, "breaking_strain": 0.1},
+            {"v": 0.6, "separation": 1.0, "a_back": 0.5, "breaking_strain": 0.1},
             PARADOXES + 3,
         ),
-        ReferenceCase("bell-spaceships", {"v": 1 - 1e-9, "separation": 1.0, "acceleration": 1e-3}, PARADOXES + 4),
+        ReferenceCase("bell-spaceships", {"v": 1 - 1e-9, "separation": 1.0, "a_back": 1e-3}, PARADOXES + 4),
     ),
 )
 

@@ -57,11 +57,18 @@ def ref_collision_velocities(v1: float, v2: float, m1: float, m2: float, eps: fl
 
 @at_reference_precision
 def ref_rod_collision(
-    fractions: Sequence[float], v1: float, v2: float, m1: float, m2: float, l1: float, l2: float, eps: float
+    fractions: Sequence[float],
+    v1: float,
+    v2: float,
+    mass1: float,
+    mass2: float,
+    length1: float,
+    length2: float,
+    eps: float,
 ) -> RefScene:
     """Both rods; events ``T_1``, ``T_1'``, ``T_2``, ``T_2'`` of the far ends (Eqs. (22), (24), (25))."""
-    sol = ref_collision_velocities(v1, v2, m1, m2, eps)
-    V1, V2, L1, L2 = F(v1), F(v2), F(l1), F(l2)
+    sol = ref_collision_velocities(v1, v2, mass1, mass2, eps)
+    V1, V2, L1, L2 = F(v1), F(v2), F(length1), F(length2)
     Vp1, Vp2 = sol["Vp1"], sol["Vp2"]
     rod1, rod2 = [], []
     for f in fractions:
@@ -89,17 +96,17 @@ def _draw(rng: random.Random) -> dict[str, float | None]:
     return {
         "v1": v1,
         "v2": v2,
-        "m1": 1.0,
-        "m2": log_uniform(rng, -6, 6),
-        "l1": length,
-        "l2": length * log_uniform(rng, -2, 2),
+        "mass1": 1.0,
+        "mass2": log_uniform(rng, -6, 6),
+        "length1": length,
+        "length2": length * log_uniform(rng, -2, 2),
         "eps": rng.random(),
     }
 
 
 def _rods(**params: float) -> dict[str, float | None]:
     """Rod 1 at 0.6 onto rod 2 at rest, unit rest masses and lengths, elastic, unless given."""
-    return {"v1": 0.6, "v2": 0.0, "m1": 1.0, "m2": 1.0, "l1": 1.0, "l2": 1.0, "eps": 1.0, **params}
+    return {"v1": 0.6, "v2": 0.0, "mass1": 1.0, "mass2": 1.0, "length1": 1.0, "length2": 1.0, "eps": 1.0, **params}
 
 
 ROD_COLLISION = SceneReference(
@@ -108,18 +115,24 @@ ROD_COLLISION = SceneReference(
     ref_rod_collision,
     (
         # Figs. 3 and 4, and Fig. 3's masses with eps = 1/2
-        ReferenceCase("rod-collision", _rods(m2=2.0), PAPER_EXAMPLES + 6),
-        ReferenceCase("rod-collision", _rods(m1=2.0), PAPER_EXAMPLES + 7),
-        ReferenceCase("rod-collision", _rods(m2=2.0, eps=0.5), PAPER_EXAMPLES + 8),
+        ReferenceCase("rod-collision", _rods(mass2=2.0), PAPER_EXAMPLES + 6),
+        ReferenceCase("rod-collision", _rods(mass1=2.0), PAPER_EXAMPLES + 7),
+        ReferenceCase("rod-collision", _rods(mass2=2.0, eps=0.5), PAPER_EXAMPLES + 8),
         ReferenceCase("rod-collision", _rods(v1=1 - 1e-12), ULTRA_RELATIVISTIC + 5),
-        ReferenceCase("rod-collision", _rods(v1=0.9, v2=-(1 - 1e-9), m2=3.0, l2=0.5, eps=0.7), ULTRA_RELATIVISTIC + 6),
-        ReferenceCase("rod-collision", _rods(v1=1 - 1e-12, v2=1 - 1e-9), ULTRA_RELATIVISTIC + 7),
-        ReferenceCase("rod-collision", _rods(m2=1e6), MASS_RATIOS_AND_SIZES + 0),
-        ReferenceCase("rod-collision", _rods(m2=1e-6), MASS_RATIOS_AND_SIZES + 1),
         ReferenceCase(
-            "rod-collision", _rods(v1=0.5, v2=-0.5, m1=1e6, l1=1e-6, l2=1e6, eps=0.2), MASS_RATIOS_AND_SIZES + 2
+            "rod-collision", _rods(v1=0.9, v2=-(1 - 1e-9), mass2=3.0, length2=0.5, eps=0.7), ULTRA_RELATIVISTIC + 6
         ),
-        ReferenceCase("rod-collision", _rods(v1=0.3, v2=-0.2, l1=1e6, l2=1e-6, eps=0.0), MASS_RATIOS_AND_SIZES + 3),
+        ReferenceCase("rod-collision", _rods(v1=1 - 1e-12, v2=1 - 1e-9), ULTRA_RELATIVISTIC + 7),
+        ReferenceCase("rod-collision", _rods(mass2=1e6), MASS_RATIOS_AND_SIZES + 0),
+        ReferenceCase("rod-collision", _rods(mass2=1e-6), MASS_RATIOS_AND_SIZES + 1),
+        ReferenceCase(
+            "rod-collision",
+            _rods(v1=0.5, v2=-0.5, mass1=1e6, length1=1e-6, length2=1e6, eps=0.2),
+            MASS_RATIOS_AND_SIZES + 2,
+        ),
+        ReferenceCase(
+            "rod-collision", _rods(v1=0.3, v2=-0.2, length1=1e6, length2=1e-6, eps=0.0), MASS_RATIOS_AND_SIZES + 3
+        ),
     ),
     _draw,
 )
