@@ -157,7 +157,14 @@ def samplers(scene: rr.Scene) -> dict[str, Callable[[Any], object]]:
         "events_in": lambda frame: scene.events_in(frame),
         "time_window": lambda frame: scene.time_window(frame),
         "budget": lambda frame: scene.budget(frame),
-        **{f"obstacle {o.name}": (lambda frame, o=o: o.positions(t, frame)) for o in scene.obstacles},
+        **{f"object {o.name}": (lambda frame, o=o: o.positions(t, frame)) for o in scene.objects},
+        **{f"object {o.name} parted": (lambda frame, o=o: o.parted(t, frame)) for o in scene.objects},
+        **{f"object {o.name} event": (lambda frame, o=o: o.event_in(frame)) for o in scene.objects if o.event},
+        **{
+            f"object {o.name} {o.field.name}": (lambda frame, field=o.field: field.values(t, frame))
+            for o in scene.objects
+            if o.field is not None
+        },
     }
 
 
@@ -211,7 +218,8 @@ def test_complex_text_and_object_times_are_refused_not_cut_to_the_real_part(t: A
         "velocities": lambda: s.velocities(t, frame),
         "proper_times": lambda: s.proper_times(t, frame),
         "lengths": lambda: s.lengths(t, frame),
-        "obstacle": lambda: s.obstacles[0].positions(t, frame),
+        "object": lambda: s.objects[0].positions(t, frame),
+        "object parted": lambda: s.objects[0].parted(t, frame),
     }
     if np.ndim(t) == 0:
         calls["snapshot"] = lambda: s.snapshot(t, frame, fractions=[0.0, 1.0])
@@ -291,8 +299,9 @@ def test_times_of_any_shape(kind: str) -> None:
     assert s.switch_times(fractions=f).shape == (n, 5, 2)
     x, tau = s.snapshot(0.0, fractions=f)
     assert x.shape == (n, 5) and tau.shape == (n, 2)
-    for o in s.obstacles:
-        assert o.positions(np.zeros((3, 4))).shape == (3, 4)
+    for o in s.objects:
+        assert o.positions(np.zeros((3, 4))).shape == (len(o.worldlines), 3, 4)
+        assert o.parted(np.zeros((3, 4))).shape == (3, 4)
     frame = rr.Frame.from_velocity(0.5)
     for shape in [(), (1,), (3,), (2, 4)]:
         assert (frame @ np.zeros((*shape, 2))).shape == (*shape, 2)
