@@ -26,7 +26,7 @@ from ._frame import LAB, Frame, check_frame
 from ._kinds import ObjectKind, ObjectRole
 from ._motion import PIECEWISE_MIN, MotionPlan
 from ._plastic import Motion, plan_rods
-from ._validate import check_times, check_times_ordered
+from ._validate import ParameterError, check_times, check_times_ordered
 
 FloatArray = npt.NDArray[np.float64]
 _MAX_CACHED_PLANS = 8
@@ -137,12 +137,20 @@ class SceneObject:
     name: str
     kind: ObjectKind
     worldlines: tuple[ObjectWorldline, ...]
-    """One for a body (its face toward the rods), two for a tie (its ends)."""
+    """One for a body (its face toward the rods), two for a tie (its ends); checked."""
     side: Literal[-1, 1] = -1
     """Which side of its face a body's matter lies on: ``-1`` toward -x (a wall the rods meet from
     the right), ``+1`` toward +x."""
     field: ObjectField | None = None
     event: ObjectEvent | None = None
+
+    def __post_init__(self) -> None:
+        wanted = 2 if self.kind.role is ObjectRole.TIE else 1
+        if len(self.worldlines) != wanted:
+            allowed = f"{wanted} worldline{'s' if wanted > 1 else ''} for an object of role {self.kind.role.value!r}"
+            raise ParameterError("worldlines", allowed, self.worldlines)
+        if self.side not in (-1, 1):
+            raise ParameterError("side", "-1 or 1", self.side)
 
     @classmethod
     def inertial(

@@ -11,11 +11,12 @@ from __future__ import annotations
 import ast
 import dataclasses
 from collections.abc import Iterator
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pytest
-from PIL import Image
+from PIL import Image, ImageSequence
 
 import rigidrel_core as rr
 from rigidrel_app.backends.raster import LaneRaster, page_image, write_gif
@@ -95,11 +96,11 @@ def test_a_new_object_kind_registered_at_run_time_is_drawn_by_its_role(
     r = resolve(Settings(KIND))
     assert isinstance(r, Resolved) and r.scene.objects[0].kind == PISTON
     d = build_drawing(r, areas=LAYOUT.chart_areas, label_px=LAYOUT.theme.text_px)
+    barrier = OBJECT_STYLES[rr.ObjectRole.BARRIER].diagram
+    assert barrier is not None and barrier.color == BARRIER_COLOR
     for chart, frame in ((d.lab_chart, rr.LAB), (d.frame_chart, r.frame)):
         (line,) = [it for it in chart.items if isinstance(it, Polyline) and it.style.name == "piston"]
-        assert (
-            line.style.color == BARRIER_COLOR and line.style.width == OBJECT_STYLES[rr.ObjectRole.BARRIER].diagram.width
-        )  # type: ignore[union-attr]
+        assert line.style == replace(barrier, name="piston")
         np.testing.assert_array_equal(line.x, r.scene.material_positions(line.y, frame, fractions=[0.0])[0, 0])
     assert "piston" in {e.name for e in d.legend()}
     shown = 0
@@ -125,7 +126,7 @@ def test_a_new_object_kind_registered_at_run_time_is_drawn_by_its_role(
     assert _has_color(np.asarray(LaneRaster(d, 640).frame(lane_states(d, now))), BARRIER_COLOR)
     gif = write_gif(d, tmp_path / "piston.gif", np.linspace(*d.window, 4), 4.0, 320)
     with Image.open(gif) as img:
-        assert img.n_frames == 4
+        assert sum(1 for _ in ImageSequence.Iterator(img)) == 4
     assert "Scene" in readout_markdown(r)
     # in print: its worldline in the barriers' print style, its event marked and named
     (preset,) = piston_scene.presets
@@ -136,6 +137,18 @@ def test_a_new_object_kind_registered_at_run_time_is_drawn_by_its_role(
     assert "push ends" in {getattr(it, "text", None) for it in figure.chart.items}
     assert print_style(figure.chart)["data"]
     assert KIND in [f.name for f in paradox_figures()]
+
+
+def test_an_object_has_the_worldlines_its_role_draws() -> None:
+    """A body has one worldline (its face), a tie two (its ends); a body's matter lies on one side."""
+    face = rr.InertialWorldline(0.0, rr.ExactVelocity.from_float(0.0))
+    assert rr.SceneObject("wall", rr.ObjectKind.WALL, (face,)).positions([0.0, 1.0]).shape == (1, 2)
+    with pytest.raises(rr.ParameterError, match=r"^worldlines must be 2 worldlines for an object of role 'tie'"):
+        rr.SceneObject("string", rr.ObjectKind.STRING, (face,))
+    with pytest.raises(rr.ParameterError, match=r"^worldlines must be 1 worldline for an object of role 'barrier'"):
+        rr.SceneObject("wall", rr.ObjectKind.WALL, (face, face))
+    with pytest.raises(rr.ParameterError, match=r"^side must be -1 or 1"):
+        rr.SceneObject("wall", rr.ObjectKind.WALL, (face,), side=0)  # type: ignore[arg-type]
 
 
 def test_the_figures_are_the_presets_figures() -> None:
