@@ -34,7 +34,7 @@ LAYOUT = canvas_layout(1280, 720)
 
 #: An object kind of a known role that the catalogue does not have.
 PISTON = rr.ObjectKind("piston", rr.ObjectRole.BARRIER)
-KIND = "piston-push"
+KIND = "piston-push-registered"
 
 
 def pushed_by_a_piston(v: float, length: float, a_front: float, mass: float = 1.0) -> rr.Scene:
