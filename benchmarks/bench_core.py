@@ -8,7 +8,7 @@ it by path with that copy first on the path:
 ``PYTHONPATH=/other/checkout python benchmarks/bench_core.py`` (the first line says
 which ``rigidrel_core`` was imported).
 
-**Target.** ``scene.positions(t, frame)`` for 2 rods x 2 ends at ``n = 1e6`` times costs at
+**Target.** ``scene.positions(t, frame=frame)`` for 2 rods x 2 ends at ``n = 1e6`` times costs at
 most 2.5x four bare ``np.sqrt(1.0 + t * t)`` passes over ``n`` floats (the baseline: the same
 ``4n`` outputs, each a square root), in every case:
 

@@ -17,15 +17,22 @@ from ._description import EventDescription as EventDescription
 from ._description import Interval as Interval
 from ._description import Overlay as Overlay
 from ._description import Parameter as Parameter
+from ._description import PresetFigure as PresetFigure
 from ._description import SceneDescription as SceneDescription
 from ._description import ScenePreset as ScenePreset
 from ._description import Slider as Slider
 from ._exact import ExactVelocity as ExactVelocity
 from ._frame import LAB as LAB
 from ._frame import Frame as Frame
-from ._kinds import ObstacleKind as ObstacleKind
+from ._kinds import ObjectKind as ObjectKind
+from ._kinds import ObjectRole as ObjectRole
 from ._kinds import OriginEvent as OriginEvent
 from ._motion import RigidMotion as RigidMotion
+from ._objects import InertialWorldline as InertialWorldline
+from ._objects import MaterialWorldline as MaterialWorldline
+from ._objects import ObjectEvent as ObjectEvent
+from ._objects import ObjectField as ObjectField
+from ._objects import SceneObject as SceneObject
 from ._plastic import PlasticMotion as PlasticMotion
 from ._registry import build_scene as build_scene
 from ._registry import default_frame as default_frame
@@ -35,7 +42,6 @@ from ._registry import scene_descriptions as scene_descriptions
 from ._registry import unregister_scene as unregister_scene
 from ._scene import ENDS as ENDS
 from ._scene import EventSpec as EventSpec
-from ._scene import Obstacle as Obstacle
 from ._scene import Rod as Rod
 from ._scene import Scene as Scene
 from ._signals import CausalRelation as CausalRelation
@@ -70,9 +76,13 @@ __all__ = [
     "ExactVelocity",
     "FourMomentumBudget",
     "Frame",
+    "InertialWorldline",
     "Interval",
-    "Obstacle",
-    "ObstacleKind",
+    "MaterialWorldline",
+    "ObjectEvent",
+    "ObjectField",
+    "ObjectKind",
+    "ObjectRole",
     "OriginEvent",
     "Overlay",
     "Parameter",
@@ -80,10 +90,12 @@ __all__ = [
     "PlasticMotion",
     "PoleBarnScene",
     "PoleVerdict",
+    "PresetFigure",
     "RigidMotion",
     "Rod",
     "Scene",
     "SceneDescription",
+    "SceneObject",
     "ScenePreset",
     "Slider",
     "bell_spaceships",

@@ -3,7 +3,8 @@
 A :class:`SceneDescription` names a scene's constructor and says, for the app, the command
 line, the exports, the benchmarks and the tests, what its parameters are (symbol, unit,
 allowed range, slider, default, help), which of the paper's figures it reproduces, which
-frames it offers, what its named events mean and which obstacles it has. Every one of
+frames it offers, what its named events mean, which objects that are not rods it holds and how its
+presets are drawn as print figures. Every one of
 those front ends is generated from the description; the constructor validates with the
 very same :class:`Parameter` objects, so the ranges shown are the ranges enforced.
 """
@@ -17,7 +18,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Literal
 
-from ._kinds import ObstacleKind as ObstacleKind
+from ._kinds import ObjectKind as ObjectKind
 from ._kinds import OriginEvent as OriginEvent
 from ._validate import ParameterError, RenamedParameterError, as_real
 
@@ -25,6 +26,7 @@ if TYPE_CHECKING:
     from ._scene import Scene
 
 Scale = Literal["linear", "log"]
+Side = Literal["left", "right"]
 
 
 @dataclass(frozen=True)
@@ -148,6 +150,25 @@ class Overlay:
 
 
 @dataclass(frozen=True)
+class PresetFigure:
+    """A preset drawn as a print figure (``rigidrel figures``): the lab Minkowski diagram over
+    :attr:`t_range`, at equal scales. Every front end draws it from the scene alone: the objects'
+    worldlines by their roles, then each rod's world tube, those of the first rod group
+    (:attr:`~rigidrel_core.Scene.rod_groups`) solid and shaded, the others' (alternatives, a
+    comparison) dashed, then the :attr:`marks`; :attr:`caption` says so in words."""
+
+    name: str
+    """The figure's file name, without extension: ``"bell-spaceships"``."""
+    t_range: tuple[float, float]
+    """Lab times shown."""
+    marks: tuple[tuple[str, Side], ...]
+    """Events marked with a dot and named, each with the side of its label: the scene's named events
+    (``"T_B1"``) or its objects' (``"break"``, ``"door closes"``)."""
+    caption: Callable[[Scene], str]
+    """The caption, from the scene the preset builds: every number in it the core's."""
+
+
+@dataclass(frozen=True)
 class ScenePreset:
     """A paper figure: a scene's parameter values, frame and overlay, exactly as printed."""
 
@@ -157,6 +178,8 @@ class ScenePreset:
     frame: str | None = None
     """The frame to show it in (``None``: the scene's default frame)."""
     overlay: bool = False
+    figure: PresetFigure | None = None
+    """How ``rigidrel figures`` draws it in print, if it does."""
 
 
 @dataclass(frozen=True)
@@ -178,7 +201,8 @@ class SceneDescription:
     default_frame: str
     """The frame a lecturer compares the lab with first (never one that equals the lab)."""
     events: tuple[EventDescription, ...]
-    obstacles: tuple[ObstacleKind, ...] = ()
+    objects: tuple[ObjectKind, ...] = ()
+    """The kinds of the scene's objects that are not rods, in the order the scene holds them."""
     presets: tuple[ScenePreset, ...] = ()
     overlay: Overlay | None = None
     order: int = 100

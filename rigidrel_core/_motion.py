@@ -41,7 +41,7 @@ import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Literal, NamedTuple
+from typing import ClassVar, Literal, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -181,6 +181,8 @@ class RigidMotion:
     (extended) family has the rod at rest on ``[vertex_left, vertex_left + length]``.
     """
 
+    born_rigid: ClassVar[bool] = True
+    """In the momentarily comoving frame of any of its points the rod has its rest length."""
     length: float
     """Rest length ``L`` (> 0)."""
     sign: Literal[1, -1]

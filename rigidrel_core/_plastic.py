@@ -28,7 +28,7 @@ import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import ClassVar, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -48,6 +48,8 @@ class PlasticMotion:
     (module docstring). The attributes a scene reads of every motion are those of a rigid one with
     its centre at the origin and every radius 0."""
 
+    born_rigid: ClassVar[bool] = False
+    """Not Born-rigid: no point moves before the stop front reaches it."""
     length: float
     """Rest length ``L0`` before the stop."""
     speed: float

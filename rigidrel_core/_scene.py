@@ -1,4 +1,4 @@
-"""A solved scene: rods with Born-rigid motions, obstacles, named events and frame presets.
+"""A solved scene: rods with Born-rigid motions, objects that are not rods, named events and frame presets.
 
 Every sampler takes times of a frame and returns that frame's coordinates, with the
 signature ``(t, *, frame=LAB, fractions=...)`` (units c = 1); every query that takes a frame
@@ -20,10 +20,11 @@ import numpy as np
 import numpy.typing as npt
 
 from ._budget import ExternalSource, FourMomentumBudget
-from ._exact import ExactVelocity, relative_rapidity
+from ._exact import relative_rapidity
 from ._frame import LAB, Frame, check_frame
-from ._kinds import ObstacleKind, OriginEvent
+from ._kinds import OriginEvent
 from ._motion import PIECEWISE_MIN, MotionPlan
+from ._objects import SceneObject
 from ._plastic import Motion, plan_rods
 from ._signals import ChangeVerdict, Exact, as_event, change_verdict, signal_arrival_on
 from ._validate import ParameterError, as_real, check_fractions, check_times, check_times_ordered
@@ -65,27 +66,6 @@ class EventSpec:
     phase: Literal["start", "stop"]
 
 
-@dataclass(frozen=True)
-class Obstacle:
-    """Something a scene's rods meet that is not solved for, on an inertial lab worldline
-    ``x = x0 + v t`` (a wall: ``x0 = 0``, ``v = 0``)."""
-
-    name: str
-    kind: ObstacleKind
-    x0: float
-    velocity: ExactVelocity
-
-    def positions(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
-        """x' of the obstacle at times ``t'`` of ``frame``: ``x' = x'_0 + w (t' - t'_0)``, with
-        ``w`` its velocity in the frame and ``(t'_0, x'_0)`` its lab event at t = 0 seen there
-        (``x' = -beta t'`` for a wall at rest at the origin)."""
-        frame = check_frame(frame)
-        tt = check_times("t", t)
-        w = float(np.tanh(relative_rapidity(self.velocity, frame.velocity)))
-        t0, x0 = (frame @ np.array([0.0, self.x0])).tolist()
-        return x0 + w * (tt - t0)
-
-
 @dataclass(frozen=True, eq=False, init=False)
 class Scene:
     """A solved scene (see :func:`rigidrel_core.build_scene` and the constructors).
@@ -106,7 +86,9 @@ class Scene:
     heat: float
     """Invariant rest energy created (epsilon < 1), see :class:`FourMomentumBudget`."""
     origin_event: OriginEvent
-    obstacles: tuple[Obstacle, ...] = ()
+    objects: tuple[SceneObject, ...] = ()
+    """What the scene holds that is not a rod (a wall, a barn's door, Bell's string), each with its
+    drawing description: front ends draw them from it alone."""
     _plans: PlanCache = field(default_factory=PlanCache, init=False, repr=False)
 
     def __init__(
@@ -119,7 +101,7 @@ class Scene:
         external_source: ExternalSource,
         heat: float,
         origin_event: OriginEvent,
-        obstacles: tuple[Obstacle, ...] = (),
+        objects: tuple[SceneObject, ...] = (),
     ) -> None:
         # the instance's dict filled at once: the generated __init__ of a frozen dataclass calls
         # object.__setattr__ once per field, and every slider change builds a scene
@@ -132,7 +114,7 @@ class Scene:
             external_source=external_source,
             heat=heat,
             origin_event=origin_event,
-            obstacles=obstacles,
+            objects=objects,
             _plans={},
         )
 

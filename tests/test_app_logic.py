@@ -45,6 +45,7 @@ from rigidrel_app.view.layout import (
     text_width,
     titles_fit_one_line,
 )
+from rigidrel_app.view.objects import BARRIER_COLOR
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
 from rigidrel_app.view.scene_view import (
     CLOCK_RULE,
@@ -71,7 +72,6 @@ from rigidrel_app.view.vocabulary import (
     INK,
     LIGHT_COLOR,
     ROD_COLORS,
-    WALL_COLOR,
     Chart,
     Label,
     Points,
@@ -593,7 +593,7 @@ def test_lines_show_their_colour_through_the_tone_mapping() -> None:
         y = np.clip(OUT @ ((v * (v + 0.0245786) - 0.000090537) / (v * (0.983729 * v + 0.4329510) + 0.238081)), 0, 1)
         return 255.0 * np.where(y <= 0.0031308, 12.92 * y, 1.055 * y ** (1 / 2.4) - 0.055)
 
-    for color in (*ROD_COLORS, FRAME_COLOR, LIGHT_COLOR, WALL_COLOR, INK, "#000000"):
+    for color in (*ROD_COLORS, FRAME_COLOR, LIGHT_COLOR, BARRIER_COLOR, INK, "#000000"):
         target = np.array(rgb(color))
         assert np.abs(shown(line_rgb(tuple(int(c) for c in target))) - target).max() <= 25.0, color  # type: ignore[arg-type]
 

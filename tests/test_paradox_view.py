@@ -15,17 +15,23 @@ from rigidrel_app.view.lanes import (
     bar_rows,
     lane_geometry,
     lane_state,
+    object_picture,
     rows_key,
-    string_picture,
 )
 from rigidrel_app.view.layout import canvas_layout
+from rigidrel_app.view.objects import BARRIER_COLOR, FIELD_RAMP, MARKER_COLOR
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, Settings, resolve
-from rigidrel_app.view.vocabulary import DOOR_COLOR, ROD_COLORS, STRAIN_RAMP, WALL_COLOR, ramp_color, rgb
+from rigidrel_app.view.vocabulary import ROD_COLORS, ramp_color, rgb
 
 LAYOUT = canvas_layout(1280, 720)
 #: V = 0.6, s = 1, a = 0.5: the string's strain ends at (gamma - 1) s / (s - l) = 0.25 / 0.9.
 BELL = rr.bell_spaceships(0.6, 1.0, 0.5, breaking_strain=0.1)
+
+
+def strain_color(fraction: float) -> str:
+    """The string's colour at ``fraction`` of its full scale: on the objects' field ramp."""
+    return ramp_color(fraction, FIELD_RAMP)
 
 
 def _z_span(b: Box) -> tuple[float, float]:
@@ -51,12 +57,12 @@ def _pictures(settings: Settings, now: float) -> list[LanePicture]:
 def test_the_strain_ramp_darkens_monotonically_and_is_no_rods_colour() -> None:
     """Unstretched and breaking differ; the lightness falls all the way (readable in any colour vision
     and in grey); the ramp's colours are not the rods'."""
-    assert ramp_color(0.0) == STRAIN_RAMP[0] and ramp_color(1.0) == STRAIN_RAMP[-1]
-    assert ramp_color(0.0) != ramp_color(1.0)
-    lum = [_luminance(ramp_color(f)) for f in np.linspace(0.0, 1.0, 51)]
+    assert strain_color(0.0) == FIELD_RAMP[0] and strain_color(1.0) == FIELD_RAMP[-1]
+    assert strain_color(0.0) != strain_color(1.0)
+    lum = [_luminance(strain_color(f)) for f in np.linspace(0.0, 1.0, 51)]
     assert all(b < a for a, b in itertools.pairwise(lum))
-    assert not set(STRAIN_RAMP) & set(ROD_COLORS)
-    assert ramp_color(-1.0) == ramp_color(0.0) and ramp_color(7.0) == ramp_color(1.0)
+    assert not set(FIELD_RAMP) & set(ROD_COLORS)
+    assert strain_color(-1.0) == strain_color(0.0) and strain_color(7.0) == strain_color(1.0)
 
 
 @pytest.mark.parametrize("frame_name", ["lab", "ships after"])
@@ -78,8 +84,8 @@ def test_the_string_joins_the_ships_in_the_colour_of_the_cores_strain(frame_name
         strain = BELL.string_strains([now], frame=frame)[0]
         assert f"string strain {100 * strain:.1f} %" in st.labels[0].text.split("\n")[0]
         colors.append(string.color)
-    assert colors[0] == ramp_color(0.0)
-    assert colors[1] == ramp_color(1.0)  # within the ramp's last 1/50 of the breaking strain
+    assert colors[0] == strain_color(0.0)
+    assert colors[1] == strain_color(1.0)  # within the ramp's last 1/50 of the breaking strain
     assert colors[0] != colors[1]
 
 
@@ -87,9 +93,10 @@ def test_a_string_without_a_breaking_strain_runs_up_to_its_final_strain() -> Non
     scene = rr.bell_spaceships(0.6, 1.0, 0.5)
     late = scene.time_window()[1]
     geo = lane_geometry(scene)
-    pic = string_picture(scene, rr.LAB, late, scene.positions([late])[:, :, 0] / geo.unit, geo)
-    assert not pic.broken and len(pic.boxes) == 1
-    assert pic.color == ramp_color(1.0) and pic.strain == pytest.approx(scene.final_strain)
+    (string,) = scene.objects
+    pic = object_picture(scene, string, rr.LAB, late, scene.positions([late])[:, :, 0] / geo.unit, geo)
+    assert not pic.parted and len(pic.boxes) == 1
+    assert pic.color == strain_color(1.0) and pic.value == pytest.approx(scene.final_strain)
     assert "its final" in pic.text and f"{100 * scene.final_strain:.3g} %" in pic.text
 
 
@@ -101,9 +108,9 @@ def test_after_the_break_the_string_is_two_loose_ends_and_the_title_says_so(fram
     assert event is not None
     before = lane_state(BELL, frame, event[0] - 1e-6, geo, "title", 0.0)
     after = lane_state(BELL, frame, event[0] + 1e-6, geo, "title", 0.0)
-    n_rods, n_obstacles = BELL.n_rods, len(BELL.obstacles)
-    assert len(before.boxes) == n_rods + 1 + n_obstacles
-    assert len(after.boxes) == n_rods + 2 + n_obstacles
+    n_rods, n_others = BELL.n_rods, len(BELL.objects) - 1  # the objects beside the string (its first)
+    assert len(before.boxes) == n_rods + 1 + n_others
+    assert len(after.boxes) == n_rods + 2 + n_others
     assert "string broken" not in before.labels[0].text
     assert "string broken" in after.labels[0].text.split("\n")[0]
     rear_front, front_rear = after.boxes[0].x1, after.boxes[1].x0
@@ -160,7 +167,7 @@ def test_pole_barn_lanes_show_both_poles_one_above_the_other_under_one_barn(now:
         born, signal = lane.boxes[:2]
         assert (born.color, signal.color) == ROD_COLORS[:2]
         assert _z_span(signal)[1] < _z_span(born)[0]
-        barn = [b for b in lane.boxes if b.color in (WALL_COLOR, DOOR_COLOR)]  # those in the lane's view
+        barn = [b for b in lane.boxes if b.color in (BARRIER_COLOR, MARKER_COLOR)]  # those in the lane's view
         assert len(barn) == len(lane.boxes) - 2
         if now == 0.5:  # the wall and the door both in view
             assert len(barn) == 2

@@ -37,14 +37,14 @@ KINDS = [d.kind for d in descriptions()]
 # ---------------------------------------------------------------- descriptions and the scenes they build
 def check_builds(kind: str) -> None:
     """With the defaults the constructor builds a scene of this kind, with the described frames,
-    events, obstacles and rods; ``build_scene`` and ``description.build`` build the same."""
+    events, objects and rods; ``build_scene`` and ``description.build`` build the same."""
     d = rr.describe(kind)
     scene = d.constructor(**d.defaults())
     assert scene.kind == d.kind
     assert rr.describe(scene) is d
     assert tuple(scene.frames) == d.frames
     assert list(scene.events) == [e.name for e in d.events]
-    assert tuple(o.kind for o in scene.obstacles) == d.obstacles
+    assert tuple(o.kind for o in scene.objects) == d.objects
     for name in scene.events:
         assert 0 <= scene.event_rod(name) < scene.n_rods
         assert d.event(name).name == name

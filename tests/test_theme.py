@@ -20,19 +20,18 @@ from rigidrel_app.cli import build_parser
 from rigidrel_app.live.controls import caption_message, page_style
 from rigidrel_app.live.keys import HOTKEYS, LESSON_HOTKEYS, Action, action_for
 from rigidrel_app.view.layout import NORMAL, PRESENTER, canvas_layout
+from rigidrel_app.view.objects import BARRIER_COLOR, MARKER_COLOR
 from rigidrel_app.view.vocabulary import (
-    DOOR_COLOR,
     FRAME_COLOR,
     INK,
     LIGHT_COLOR,
     ROD_COLORS,
-    WALL_COLOR,
     lightness_flipped,
     rgb,
     shaded,
 )
 
-PALETTE = (INK, *ROD_COLORS, FRAME_COLOR, LIGHT_COLOR, WALL_COLOR, DOOR_COLOR)
+PALETTE = (INK, *ROD_COLORS, FRAME_COLOR, LIGHT_COLOR, BARRIER_COLOR, MARKER_COLOR)
 #: HSL hue and saturation survive the flip up to the 1/255 rounding of 8-bit channels.
 HSL_TOLERANCE = 2.5 / 255
 

@@ -164,7 +164,14 @@ def samplers(scene: rr.Scene) -> dict[str, Callable[[Any], object]]:
         "events_in": lambda frame: scene.events_in(frame=frame),
         "time_window": lambda frame: scene.time_window(frame=frame),
         "budget": lambda frame: scene.budget(frame=frame),
-        **{f"obstacle {o.name}": (lambda frame, o=o: o.positions(t, frame=frame)) for o in scene.obstacles},
+        **{f"object {o.name}": (lambda frame, o=o: o.positions(t, frame=frame)) for o in scene.objects},
+        **{f"object {o.name} parted": (lambda frame, o=o: o.parted(t, frame=frame)) for o in scene.objects},
+        **{f"object {o.name} event": (lambda frame, o=o: o.event_in(frame=frame)) for o in scene.objects if o.event},
+        **{
+            f"object {o.name} {o.field.name}": (lambda frame, field=o.field: field.values(t, frame=frame))
+            for o in scene.objects
+            if o.field is not None
+        },
     }
 
 
@@ -218,7 +225,8 @@ def test_complex_text_and_object_times_are_refused_not_cut_to_the_real_part(t: A
         "velocities": lambda: s.velocities(t, frame=frame),
         "proper_times": lambda: s.proper_times(t, frame=frame),
         "lengths": lambda: s.lengths(t, frame=frame),
-        "obstacle": lambda: s.obstacles[0].positions(t, frame=frame),
+        "object": lambda: s.objects[0].positions(t, frame=frame),
+        "object parted": lambda: s.objects[0].parted(t, frame=frame),
     }
     if np.ndim(t) == 0:
         calls["snapshot"] = lambda: s.snapshot(t, frame=frame, fractions=[0.0, 1.0])
@@ -281,11 +289,19 @@ def test_fractions_are_keyword_only() -> None:
         s.material_positions([0.0], [0.5])  # type: ignore[misc]
 
 
-FRAME_TAKERS = (rr.Scene, rr.BellScene, rr.PoleBarnScene, rr.Obstacle)
+FRAME_TAKERS = (
+    rr.Scene,
+    rr.BellScene,
+    rr.PoleBarnScene,
+    rr.SceneObject,
+    rr.InertialWorldline,
+    rr.MaterialWorldline,
+    rr.ObjectEvent,
+)
 
 
 def test_frame_is_keyword_only_everywhere() -> None:
-    """Every method of a scene (and of its obstacles) that takes a frame takes it by name,
+    """Every method of a scene (and of its objects, their worldlines and events) that takes a frame takes it by name,
     ``scene.positions(t, frame=f)``, so that no call reads differently from another."""
     found = []
     for cls in FRAME_TAKERS:
@@ -296,7 +312,13 @@ def test_frame_is_keyword_only_everywhere() -> None:
             if parameter is not None:
                 found.append(f"{cls.__name__}.{name}")
                 assert parameter.kind is inspect.Parameter.KEYWORD_ONLY, f"{cls.__name__}.{name}"
-    assert {"Scene.positions", "Scene.budget", "Scene.point_event", "Obstacle.positions"} <= set(found), found
+    assert {
+        "Scene.positions",
+        "Scene.budget",
+        "Scene.point_event",
+        "SceneObject.positions",
+        "SceneObject.parted",
+    } <= set(found), found
 
 
 @pytest.mark.parametrize("kind", [d.kind for d in descriptions()])
@@ -343,8 +365,9 @@ def test_times_of_any_shape(kind: str) -> None:
     assert s.switch_times(fractions=f).shape == (n, 5, 2)
     x, tau = s.snapshot(0.0, fractions=f)
     assert x.shape == (n, 5) and tau.shape == (n, 2)
-    for o in s.obstacles:
-        assert o.positions(np.zeros((3, 4))).shape == (3, 4)
+    for o in s.objects:
+        assert o.positions(np.zeros((3, 4))).shape == (len(o.worldlines), 3, 4)
+        assert o.parted(np.zeros((3, 4))).shape == (3, 4)
     frame = rr.Frame.from_velocity(0.5)
     for shape in [(), (1,), (3,), (2, 4)]:
         assert (frame @ np.zeros((*shape, 2))).shape == (*shape, 2)

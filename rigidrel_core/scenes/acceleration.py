@@ -31,6 +31,7 @@ from .._description import (
     Slider,
 )
 from .._exact import REST, ExactVelocity
+from .._paper import FIG1_CONSTANT_ACCELERATION
 from .._scene import EventSpec, Rod, Scene
 from .._validate import ParameterError
 from .impulse import impulsive_start
@@ -133,11 +134,7 @@ CONSTANT_ACCELERATION = SceneDescription(
         EventDescription("T_B", "the back end stops accelerating", "Sec. 3, Eq. (9)"),
         EventDescription("T_F", "the front end stops accelerating", "Sec. 3, Eq. (9)"),
     ),
-    presets=(
-        ScenePreset(
-            "Fig. 1: acceleration to V = 0.6", {"v": 0.6, "length": 1.0, "a_front": 0.5, "mass": 1.0}, overlay=True
-        ),
-    ),
+    presets=(ScenePreset("Fig. 1: acceleration to V = 0.6", FIG1_CONSTANT_ACCELERATION, overlay=True),),
     overlay=Overlay("impulsive (Fig. 1 dashed)", _fig1_impulsive),
     order=10,
 )

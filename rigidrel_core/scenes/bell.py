@@ -50,11 +50,22 @@ import numpy.typing as npt
 
 from .. import _dd
 from .._build import ACCELERATION, SIZE, V, checked_scene, rigid_motion
-from .._description import EventDescription, Interval, OriginEvent, Parameter, SceneDescription, ScenePreset, Slider
+from .._description import (
+    EventDescription,
+    Interval,
+    ObjectKind,
+    OriginEvent,
+    Parameter,
+    PresetFigure,
+    SceneDescription,
+    ScenePreset,
+    Slider,
+)
 from .._exact import REST, ExactVelocity
 from .._frame import LAB, Frame, check_frame
+from .._objects import MaterialWorldline, ObjectEvent, ObjectField, SceneObject
 from .._scene import EventSpec, Rod, Scene
-from .._validate import ParameterError, check_times, refuse_renamed
+from .._validate import ParameterError, refuse_renamed
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -108,6 +119,9 @@ BREAKING_STRAIN = Parameter(
 
 #: Rods of the scene, in order.
 REAR_SHIP, FRONT_SHIP, COMPARISON_ROD = 0, 1, 2
+#: The material points the string joins, as ``(rod, fraction)``: the rear ship's front end, the front
+#: ship's rear end.
+_STRING_ENDS = ((REAR_SHIP, 1.0), (FRONT_SHIP, 0.0))
 _EVENTS = (
     EventSpec("T_B1", REAR_SHIP, 0, "stop"),
     EventSpec("T_F1", REAR_SHIP, 1, "stop"),
@@ -118,32 +132,41 @@ _EVENTS = (
 FRAMES = ("lab", "ships after")
 
 
-@dataclass(frozen=True, eq=False)
-class BellScene(Scene):
-    """Bell's spaceships (see :mod:`rigidrel_core.scenes.bell`): rods ``0`` the rear ship, ``1`` the
-    front ship, ``2`` the Born-rigid comparison rod; the string from rod 0's front to rod 1's rear."""
+@dataclass(frozen=True)
+class BellString:
+    """The string between the ships (module docstring): its geometry and its rear end's worldline, a
+    pure value (it holds no scene), so that the scene's string object can carry its strain as a field."""
 
-    separation: float = 1.0
-    ship_length: float = 0.1
-    a_back: float = 0.5
+    separation: float
+    ship_length: float
+    a_back: float
     """The proper acceleration ``a`` of each ship's rear (back) end, the paper's ``a'_B``."""
+    velocity: ExactVelocity
+    """The ships' final velocity ``V``."""
+    rear_end: MaterialWorldline
+    """The string's rear end: the rear ship's front end."""
     breaking_strain: float | None = None
 
     @property
-    def string_unstretched(self) -> float:
+    def unstretched(self) -> float:
         """The string's rest length at the start, ``s - l``."""
         return self.separation - self.ship_length
 
     @property
-    def string_final(self) -> float:
+    def final(self) -> float:
         """The string's rest length once both ships coast, ``gamma s - l``."""
-        return self.separation * self.rods[0].motion.velocity_final.lorentz_factor() - self.ship_length
+        return self.separation * self.velocity.lorentz_factor() - self.ship_length
 
-    def string_rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+    @property
+    def final_strain(self) -> float:
+        """The strain once both ships coast: ``(gamma - 1) s / (s - l)``."""
+        return (self.velocity.lorentz_factor() - 1.0) * self.separation / self.unstretched
+
+    def rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
         """The string's rest length when the rear ship has lab rapidity ``theta`` (clipped to
         ``[0, theta_V]``): ``D(theta) - r - l`` of the module docstring, each form without
         cancellation (``sqrt(r^2 + q^2) - r = q^2 / (sqrt(r^2 + q^2) + r)``)."""
-        theta_v = self.rods[0].motion.velocity_final.rapidity()
+        theta_v = self.velocity.rapidity()
         theta = np.clip(np.asarray(rapidity, dtype=np.float64), 0.0, theta_v)
         s, r, ship = self.separation, 1.0 / self.a_back, self.ship_length
         q = s * np.sinh(theta)
@@ -154,46 +177,115 @@ class BellScene(Scene):
         phi = theta + np.arcsinh(q / r)
         return np.where(phi <= theta_v, on_hyperbola, coasting)
 
-    def string_rapidities(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
-        """The rear ship's lab rapidity when its front end (the string's rear end) is at frame time
-        ``t'``: its clock ``tau`` over its radius ``R = 1/a + l`` (proper acceleration ``1/R``),
-        clipped to ``[0, theta_V]``; an invariant of the event."""
-        frame = check_frame(frame)
-        tt = check_times("t", t)
-        tau = self.proper_times(tt, frame=frame, fractions=np.array([1.0]))[REAR_SHIP, 0]
+    def rapidities(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
+        """The rear ship's lab rapidity when the string's rear end is at frame time ``t'``: that end's
+        clock ``tau`` over its radius ``R = 1/a + l`` (proper acceleration ``1/R``), clipped to
+        ``[0, theta_V]``; an invariant of the event."""
+        tau = self.rear_end.proper_times(t, frame=frame)
         radius = 1.0 / self.a_back + self.ship_length
-        return np.clip(tau / radius, 0.0, self.rods[0].motion.velocity_final.rapidity())
+        return np.clip(tau / radius, 0.0, self.velocity.rapidity())
 
-    def string_rest_lengths(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
+    def rest_lengths(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """The string's proper length when its rear end is at frame time ``t'``: its rest length in
         the rear ship's momentarily comoving frame. Shape of ``t``."""
-        return self.string_rest_length_at_rapidity(self.string_rapidities(t, frame=frame))
+        return self.rest_length_at_rapidity(self.rapidities(t, frame=frame))
 
-    def string_strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
+    def strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
-        return self.string_rest_lengths(t, frame=frame) / self.string_unstretched - 1.0
+        return self.rest_lengths(t, frame=frame) / self.unstretched - 1.0
 
     @property
-    def final_strain(self) -> float:
-        """The strain once both ships coast: ``(gamma - 1) s / (s - l)``."""
-        g = self.rods[0].motion.velocity_final.lorentz_factor()
-        return (g - 1.0) * self.separation / self.string_unstretched
-
-    @property
-    def string_break(self) -> tuple[float, float] | None:
+    def break_event(self) -> tuple[float, float] | None:
         """Lab ``(t, x)`` of the string's rear end when the strain reaches the breaking strain, or
         ``None`` (no breaking strain, or one the string never reaches)."""
         e_b = self.breaking_strain
         if e_b is None or e_b > self.final_strain:
             return None
         s, r, ship = self.separation, 1.0 / self.a_back, self.ship_length
-        theta_v = self.rods[0].motion.velocity_final.rapidity()
-        d = r + ship + (1.0 + e_b) * self.string_unstretched
+        theta_v = self.velocity.rapidity()
+        d = r + ship + (1.0 + e_b) * self.unstretched
         theta = math.acosh(max(1.0, (d * d - r * r + s * s) / (2.0 * d * s)))
         if theta + math.asinh(s * math.sinh(theta) / r) > theta_v:  # the front ship's rear coasts there
             theta = theta_v - math.acosh(max(1.0, (r + s * math.cosh(theta_v)) / d))
         big_r = r + ship
         return (big_r * math.sinh(theta), -r + big_r * math.cosh(theta))
+
+    def scene_object(self, front_end: MaterialWorldline) -> SceneObject:
+        """The string as a scene object from its rear end to ``front_end`` (the front ship's rear end),
+        coloured by its strain from 0 to the breaking strain (or, without one, to the strain it ends at)
+        and, if it breaks, in two loose ends from the break event on."""
+        breaks = self.breaking_strain is not None
+        field = ObjectField(
+            "strain",
+            self.strains,
+            self.breaking_strain if self.breaking_strain is not None else self.final_strain,
+            "breaking strain" if breaks else "final strain",
+            "breaks" if breaks else "its final",
+            percent=True,
+        )
+        lab = self.break_event
+        event = None if lab is None else ObjectEvent("break", lab, parts=True, state="broken")
+        return SceneObject("string", ObjectKind.STRING, (self.rear_end, front_end), field=field, event=event)
+
+
+@dataclass(frozen=True, eq=False)
+class BellScene(Scene):
+    """Bell's spaceships (see :mod:`rigidrel_core.scenes.bell`): rods ``0`` the rear ship, ``1`` the
+    front ship, ``2`` the Born-rigid comparison rod; the string (its one object) from rod 0's front to
+    rod 1's rear."""
+
+    separation: float = 1.0
+    ship_length: float = 0.1
+    a_back: float = 0.5
+    """The proper acceleration ``a`` of each ship's rear (back) end, the paper's ``a'_B``."""
+    breaking_strain: float | None = None
+
+    @property
+    def string(self) -> BellString:
+        """The string's geometry and strain (:class:`BellString`)."""
+        rear_end = self.objects[0].worldlines[0]
+        assert isinstance(rear_end, MaterialWorldline)
+        velocity = self.rods[REAR_SHIP].motion.velocity_final
+        return BellString(self.separation, self.ship_length, self.a_back, velocity, rear_end, self.breaking_strain)
+
+    @property
+    def string_unstretched(self) -> float:
+        """The string's rest length at the start, ``s - l``."""
+        return self.string.unstretched
+
+    @property
+    def string_final(self) -> float:
+        """The string's rest length once both ships coast, ``gamma s - l``."""
+        return self.string.final
+
+    def string_rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """:meth:`BellString.rest_length_at_rapidity`."""
+        return self.string.rest_length_at_rapidity(rapidity)
+
+    def string_rapidities(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
+        """:meth:`BellString.rapidities`."""
+        return self.string.rapidities(t, frame=frame)
+
+    def string_rest_lengths(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
+        """The string's proper length when its rear end is at frame time ``t'``: its rest length in
+        the rear ship's momentarily comoving frame. Shape of ``t``."""
+        return self.string.rest_lengths(t, frame=frame)
+
+    def string_strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
+        """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
+        return self.string.strains(t, frame=frame)
+
+    @property
+    def final_strain(self) -> float:
+        """The strain once both ships coast: ``(gamma - 1) s / (s - l)``."""
+        return self.string.final_strain
+
+    @property
+    def string_break(self) -> tuple[float, float] | None:
+        """Lab ``(t, x)`` of the string's rear end when the strain reaches the breaking strain, or
+        ``None`` (no breaking strain, or one the string never reaches)."""
+        event = self.objects[0].event
+        return None if event is None else event.lab
 
     @property
     def rod_groups(self) -> tuple[int, ...]:
@@ -205,19 +297,14 @@ class BellScene(Scene):
     def string_ends(self) -> tuple[tuple[int, float], tuple[int, float]]:
         """The material points the string joins, as ``(rod, fraction)``: its rear end the rear ship's
         front end ``(0, 1.0)``, its front end the front ship's rear end ``(1, 0.0)``."""
-        return ((REAR_SHIP, 1.0), (FRONT_SHIP, 0.0))
+        return _STRING_ENDS
 
     def string_broken(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
         """Whether the string has broken when its rear end is at frame time ``t'``: ``t' >= t'_b``,
         ``t'_b`` the frame time of the break event :meth:`string_break_in` (its rear end, where the
         strain reaches the breaking strain; the strain grows along that end's worldline, so this is
         the same as ``strain(t') >= e_b``); all ``False`` if it never breaks. Shape of ``t``."""
-        frame = check_frame(frame)
-        tt = check_times("t", t)
-        event = self.string_break_in(frame=frame)
-        if event is None:
-            return np.zeros(tt.shape, dtype=np.bool_)
-        return tt >= event[0]
+        return self.objects[0].parted(t, frame=frame)
 
     def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
         """The string's story and the rear ends' distance in the ships' frame after, in words."""
@@ -243,12 +330,7 @@ class BellScene(Scene):
 
     def string_break_in(self, *, frame: Frame = LAB) -> tuple[float, float] | None:
         """The break event in ``frame`` (``None`` if the string never breaks)."""
-        frame = check_frame(frame)
-        event = self.string_break
-        if event is None:
-            return None
-        t, x = (frame @ np.array(event)).tolist()
-        return (t, x)
+        return self.objects[0].event_in(frame=frame)
 
 
 def _inverse(a: float) -> _dd.DD:
@@ -296,6 +378,10 @@ def bell_spaceships(
         Rod("front ship", rigid_motion(REST, velocity, ship, rho, separation), mass, mass),
         Rod("Born-rigid rod", rigid_motion(REST, velocity, separation, rho, 0.0), mass, mass),
     )
+    (rear_rod, rear_f), (front_rod, front_f) = _STRING_ENDS
+    rear_end = MaterialWorldline(rear_rod, rear_f, rods[rear_rod].motion)
+    front_end = MaterialWorldline(front_rod, front_f, rods[front_rod].motion)
+    string = BellString(separation, ship, a_back, rods[REAR_SHIP].motion.velocity_final, rear_end, strain)
     params: dict[str, float] = {"v": v, "separation": separation, "a_back": a_back}
     if ship_length is not None:
         params["ship_length"] = ship
@@ -311,6 +397,7 @@ def bell_spaceships(
         external_source="drive",
         heat=0.0,
         origin_event=OriginEvent.START,
+        objects=(string.scene_object(front_end),),
         separation=separation,
         ship_length=ship,
         a_back=a_back,
@@ -319,6 +406,38 @@ def bell_spaceships(
     checked_scene(scene)
     return scene
 
+
+def _figure_caption(scene: Scene) -> str:
+    """The print figure's caption (:class:`~rigidrel_core.PresetFigure`): the ships solid, the
+    Born-rigid rod dashed; every number the scene's."""
+    assert isinstance(scene, BellScene)
+    s, a = scene.separation, scene.a_back
+    v = scene.rods[REAR_SHIP].motion.velocity_final
+    t_b = scene.events["T_B1"][0]
+    broken = scene.string_break
+    if broken is not None:
+        fate = f"at breaking strain {scene.breaking_strain:g} it breaks at (t, x) = ({broken[0]:.4g}, {broken[1]:.4g})"
+    else:
+        fate = "it holds"
+    return (
+        f"Bell's spaceships: two ships (solid) whose rear ends have the same proper acceleration a = {a:g} start "
+        f"{s:g} apart and reach V = {v.value:g} at the same lab time, T_B1 and T_B2 (t = γV/a = {t_b:.4g}): their "
+        f"rear ends stay {s:g} apart in the lab and end γs = {v.lorentz_factor() * s:.4g} apart in the ships' frame. "
+        f"The string from the rear ship's front to the front ship's rear stretches from rest length "
+        f"{scene.string_unstretched:.4g} to {scene.string_final:.4g} (strain {scene.final_strain:.3g}): {fate}. "
+        f"The Born-rigid rod on the same rear ends (dashed) keeps its rest length {s:g}: its front accelerates "
+        "less, a/(1 + a s) (Eq. (15)), and reaches V only at T_Frod."
+    )
+
+
+#: The print figure of the first preset: the lab diagram with the rear ends' stops, the rod's front
+#: end's and the break.
+_FIGURE = PresetFigure(
+    "bell-spaceships",
+    (-0.3, 2.6),
+    (("T_B1", "right"), ("T_B2", "left"), ("T_Frod", "left"), ("break", "right")),
+    _figure_caption,
+)
 
 BELL_SPACESHIPS = SceneDescription(
     kind="bell-spaceships",
@@ -341,8 +460,14 @@ BELL_SPACESHIPS = SceneDescription(
             "T_Frod", "the Born-rigid rod's front end reaches V (it accelerates less)", "Sec. 3, Eqs. (9), (15)"
         ),
     ),
+    objects=(ObjectKind.STRING,),
     presets=(
-        ScenePreset("Bell's spaceships, V = 0.6", {"v": 0.6, "separation": 1.0, "a_back": 0.5}, frame="ships after"),
+        ScenePreset(
+            "Bell's spaceships, V = 0.6",
+            {"v": 0.6, "separation": 1.0, "a_back": 0.5},
+            frame="ships after",
+            figure=_FIGURE,
+        ),
         ScenePreset(
             "Bell's spaceships: the string breaks at 10% strain",
             {"v": 0.6, "separation": 1.0, "a_back": 0.5, "breaking_strain": 0.1},
@@ -352,8 +477,8 @@ BELL_SPACESHIPS = SceneDescription(
             {"v": 0.6, "separation": 1.0, "a_back": 0.5, "breaking_strain": 1.0},
         ),
     ),
-    renamed=RENAMED,
     order=60,
+    renamed=RENAMED,
 )
 
 SCENES = (BELL_SPACESHIPS,)

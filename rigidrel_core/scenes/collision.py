@@ -24,6 +24,7 @@ from .._description import (
 )
 from .._exact import REST, ExactVelocity, compose_velocities
 from .._frame import LAB, Frame
+from .._paper import FIG3_CASE_ONE, FIG4_CASE_TWO
 from .._scene import EventSpec, Rod, Scene
 from .._validate import ParameterError, refuse_renamed
 
@@ -612,8 +613,6 @@ LENGTH2 = Parameter(
     "rest length L2 of rod 2 (in the app, in units of L1)",
     Slider(0.1, 5.0, 0.05),
 )
-_PAPER = {"v1": 0.6, "v2": 0.0, "length1": 1.0, "length2": 1.0, "eps": 1.0}
-
 ROD_COLLISION = SceneDescription(
     kind="rod-collision",
     title="Rod-rod collision",
@@ -630,8 +629,8 @@ ROD_COLLISION = SceneDescription(
         EventDescription("T_2'", "the far end of rod 2 has its final velocity", "Sec. 5, Eq. (25)"),
     ),
     presets=(
-        ScenePreset("Fig. 3: collision, M2 = 2 M1", {**_PAPER, "mass1": 1.0, "mass2": 2.0}),
-        ScenePreset("Fig. 4: collision, M1 = 2 M2", {**_PAPER, "mass1": 1.0, "mass2": 0.5}),
+        ScenePreset("Fig. 3: collision, M2 = 2 M1", FIG3_CASE_ONE),
+        ScenePreset("Fig. 4: collision, M1 = 2 M2", FIG4_CASE_TWO),
     ),
     renamed=RENAMED,
     order=60,

@@ -46,17 +46,19 @@ from .._build import IMPULSE, LENGTH, MASS, SIZE, V, checked_scene, rigid_motion
 from .._description import (
     EventDescription,
     Interval,
-    ObstacleKind,
+    ObjectKind,
     OriginEvent,
     Parameter,
+    PresetFigure,
     SceneDescription,
     ScenePreset,
     Slider,
 )
 from .._exact import REST, ExactVelocity
 from .._frame import LAB, Frame, check_frame
+from .._objects import ObjectEvent, SceneObject
 from .._plastic import PlasticMotion
-from .._scene import EventSpec, Obstacle, Rod, Scene
+from .._scene import EventSpec, Rod, Scene
 from .._validate import ParameterError
 from .wall import bounce
 
@@ -142,10 +144,11 @@ class PoleBarnScene(Scene):
 
     @property
     def door_closing(self) -> tuple[float, float]:
-        """Lab ``(t_d, D)``: the door closes."""
+        """Lab ``(t_d, D)``: the door closes (the door's event)."""
         return (self.door_time, self.barn_length)
 
     def door_closing_in(self, *, frame: Frame = LAB) -> tuple[float, float]:
+        """The door's closing as ``(t', x')`` of ``frame``."""
         t, x = (check_frame(frame) @ np.array(self.door_closing)).tolist()
         return (t, x)
 
@@ -173,7 +176,7 @@ class PoleBarnScene(Scene):
         t_late = self.time_window(frame=frame, margin=1.0)[1]
         t_late = max(t_late, self.door_closing_in(frame=frame)[0] + 1.0)
         x = self.positions(np.array([t_late]), frame=frame)[rod, :, 0]
-        wall, door = (float(o.positions(t_late, frame=frame)) for o in self.obstacles)
+        wall, door = (float(o.positions(t_late, frame=frame)[0]) for o in self.objects)
         scale = 1e-12 * max(abs(t_late), self.barn_length, self.rods[rod].motion.length)
         return bool(x[1] - door <= scale and x[0] - wall >= -scale)
 
@@ -274,9 +277,11 @@ def pole_barn(
         external_source="wall",
         heat=heat,
         origin_event=OriginEvent.CONTACT,
-        obstacles=(
-            Obstacle("back wall", ObstacleKind.WALL, 0.0, REST),
-            Obstacle("door", ObstacleKind.BARN_DOOR, d, REST),
+        objects=(  # the wall's matter toward -x, the door's outside the barn (toward +x)
+            SceneObject.inertial("back wall", ObjectKind.WALL, 0.0, REST, side=-1),
+            SceneObject.inertial(
+                "door", ObjectKind.BARN_DOOR, d, REST, side=1, event=ObjectEvent("door closes", (t_d, d))
+            ),
         ),
         barn_length=d,
         door_time=t_d,
@@ -298,6 +303,35 @@ def _both(
     return pole_barn(v, length, barn_length, "both", sound_speed, door_time)
 
 
+def _figure_caption(scene: Scene) -> str:
+    """The print figure's caption (:class:`~rigidrel_core.PresetFigure`): the Born-rigid pole solid,
+    the signal-limited one dashed, the door dashed; every number and verdict the scene's."""
+    assert isinstance(scene, PoleBarnScene)
+    v, length = scene.parameters["v"], scene.parameters["length"]
+    d, t_d = scene.barn_length, scene.door_time
+    fits = " L0/γ =" if math.isclose(d, length * math.sqrt((1.0 - v) * (1.0 + v)), rel_tol=1e-12) else ""
+    born, signal = scene.verdicts()
+    return (
+        f"The pole in the barn, V = {v:g}, L0 = {length:g}, barn D ={fits} {d:g} (back wall at x = 0, door dashed at "
+        f"x = {d:g}, closing at t = {t_d:g}). Solid: the Born-rigid stop (Sec. 5, ε = 0): its rear end starts "
+        f"braking at T_1, before the contact, and comes to rest at x = {born.rear_rest_x:.4g}; it "
+        f"{'is' if born.inside_barn_frame else 'is never'} entirely inside the barn, in the barn's frame and in the "
+        f"pole's, and the door closes {born.door_barn_frame.value}. Dashed: the signal-limited stop "
+        f"(c_s = {scene.sound_speed:g}): every point moves on until the stop front from the contact reaches it; the "
+        f"rear end stops at T_s, x = {signal.rear_rest_x:.4g}; it {'is' if signal.inside_barn_frame else 'is never'} "
+        f"entirely inside, in both frames, and the door closes {signal.door_barn_frame.value}."
+    )
+
+
+#: The print figure of the first preset: the barn's wall and door, both poles, their rear ends' events
+#: and the door's closing.
+_FIGURE = PresetFigure(
+    "pole-barn",
+    (-1.8, 1.2),
+    (("T_1", "left"), ("T_1'", "left"), ("T_s", "left"), ("door closes", "right")),
+    _figure_caption,
+)
+
 POLE_BARN = SceneDescription(
     kind="pole-barn",
     title="Pole in the barn",
@@ -315,9 +349,11 @@ POLE_BARN = SceneDescription(
         EventDescription("T_1'", "the Born-rigid pole's rear end comes to rest", "Sec. 5, Eq. (24)"),
         EventDescription("T_s", "the stop front reaches the signal-limited pole's rear end", "Sec. 5"),
     ),
-    obstacles=(ObstacleKind.WALL, ObstacleKind.BARN_DOOR),
+    objects=(ObjectKind.WALL, ObjectKind.BARN_DOOR),
     presets=(
-        ScenePreset("Pole in the barn, V = 0.8, D = 0.6", {"v": 0.8, "length": 1.0, "barn_length": 0.6}),
+        ScenePreset(
+            "Pole in the barn, V = 0.8, D = 0.6", {"v": 0.8, "length": 1.0, "barn_length": 0.6}, figure=_FIGURE
+        ),
         ScenePreset(
             "Pole in the barn, stop front at c/2", {"v": 0.8, "length": 1.0, "barn_length": 0.6, "sound_speed": 0.5}
         ),

@@ -6,13 +6,15 @@ from types import MappingProxyType
 
 from .. import _dd
 from .._build import EPS, IMPULSE, LENGTH, MASS, SINGLE_ROD_FRAMES, V, checked_scene, rigid_motion, single_rod_frames
-from .._description import EventDescription, ObstacleKind, OriginEvent, SceneDescription, ScenePreset
+from .._description import EventDescription, ObjectKind, OriginEvent, SceneDescription, ScenePreset
 from .._exact import REST, ExactVelocity
-from .._scene import EventSpec, Obstacle, Rod, Scene
+from .._objects import SceneObject
+from .._scene import EventSpec, Rod, Scene
 
-#: The far end's switches (Eqs. (22)-(24)) and the wall at rest at x = 0; the same in every scene.
+#: The far end's switches (Eqs. (22)-(24)) and the wall at rest at x = 0, its matter toward -x (the rod
+#: lies in x > 0); the same in every scene.
 _EVENTS = (EventSpec("T_1", 0, 1, "start"), EventSpec("T_1'", 0, 1, "stop"))
-_OBSTACLES = (Obstacle("wall", ObstacleKind.WALL, 0.0, REST),)
+_OBJECTS = (SceneObject.inertial("wall", ObjectKind.WALL, 0.0, REST, side=-1),)
 
 
 def bounce(v: float, eps: float, mass: float) -> tuple[ExactVelocity, float]:
@@ -67,7 +69,7 @@ def wall_collision(v: float, length: float, eps: float, mass: float = 1.0) -> Sc
             external_source="wall",
             heat=heat,
             origin_event=OriginEvent.CONTACT,
-            obstacles=_OBSTACLES,
+            objects=_OBJECTS,
         )
     )
 
@@ -85,7 +87,7 @@ WALL_COLLISION = SceneDescription(
         EventDescription("T_1", "the far end starts to decelerate", "Sec. 5, Eq. (22)"),
         EventDescription("T_1'", "the far end has its final velocity", "Sec. 5, Eq. (24)"),
     ),
-    obstacles=(ObstacleKind.WALL,),
+    objects=(ObjectKind.WALL,),
     presets=(
         ScenePreset("Sec. 5: crash into a wall, V = 0.6", {"v": 0.6, "length": 1.0, "eps": 0.0, "mass": 1.0}),
         ScenePreset("Sec. 5: elastic bounce, V = 0.6", {"v": 0.6, "length": 1.0, "eps": 1.0, "mass": 1.0}),

@@ -18,14 +18,12 @@ from PIL import Image, ImageDraw, ImageFont
 
 from ..view.canvas import PagePicture, PageText
 from ..view.lanes import LaneState
+from ..view.objects import OBJECT_STYLES
 from ..view.scene_view import FRAME_Z, LAB_Z, LANE_Z, Drawn, lane_states
 from ..view.vocabulary import (
-    DOOR_COLOR,
     FRAME_COLOR,
     INK,
     ROD_COLORS,
-    STRAIN_RAMP,
-    WALL_COLOR,
     Shade,
     lightness_flipped,
     plain_text,
@@ -145,16 +143,16 @@ def lane_frames(
         yield shaded_frame(raster.frame(lane_states(drawn, float(now))), shade)
 
 
-#: A fixed palette for GIF frames: white, ink, the rods, the wall and the door, the frame colour, the
-#: stops of a string's strain colours (a colour between two stops comes out as the nearer), greys.
+#: A fixed palette for GIF frames: white, ink, the rods, every object role's colour (the bodies': a
+#: wall's, a door's), the frame colour, the stops of the objects' field ramps (a string's strain: a
+#: colour between two stops comes out as the nearer), greys.
 _PALETTE_COLORS = [
     (255, 255, 255),
     rgb(INK),
     *(rgb(c) for c in ROD_COLORS),
-    rgb(WALL_COLOR),
-    rgb(DOOR_COLOR),
+    *(rgb(s.color) for s in OBJECT_STYLES.values() if not s.ramp),
     rgb(FRAME_COLOR),
-    *(rgb(c) for c in STRAIN_RAMP),
+    *(rgb(c) for s in OBJECT_STYLES.values() for c in s.ramp),
     (128, 128, 128),
     (200, 200, 200),
     (64, 64, 64),

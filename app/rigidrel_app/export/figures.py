@@ -18,10 +18,10 @@ import rigidrel_core as rr
 from rigidrel_core import examples
 
 from ..backends.plotly import chart_to_plotly
-from ..view.diagrams import equal_scale_ranges, window_x_range
+from ..view.diagrams import equal_scale_ranges, window_x_range, world_tube
 from ..view.placement import place_labels
 from ..view.sampling import sample_lengths, sample_worldlines
-from ..view.vocabulary import Anchor, Area, Chart, Dash, Item, Label, Points, Polyline, Style, event_label
+from ..view.vocabulary import Anchor, Chart, Dash, Item, Label, Points, Polyline, Style, event_label
 
 #: Export size of every figure (CSS pixels; PNGs are written at twice this).
 FIGURE_SIZE = (640, 560)
@@ -34,6 +34,8 @@ _PNG_SCALE = 2.0
 FIGURE_TOLERANCE_PX = 0.05
 _BLACK = "#000000"
 _GREY = "#555555"
+#: A world tube's shade in print.
+PRINT_SHADE = Style("rgba(0,0,0,0.07)", 0.0)
 _FONT = "DejaVu Serif, Liberation Serif, Times New Roman, serif"
 
 
@@ -66,23 +68,14 @@ def _tube(
     shade: bool = True,
     colors: tuple[str, ...] = (_BLACK, _GREY),
 ) -> list[Item]:
-    lab = rr.LAB
+    """Every rod's world tube in print (:func:`~rigidrel_app.view.diagrams.world_tube`): its ends in
+    ``colors`` by rod, ``dash``ed, the tube shaded if ``shade``."""
     px_per_x = _PNG_SCALE * _PLOT_AREA[0] / (x_range[1] - x_range[0])
-    lines = sample_worldlines(scene, lab, np.array([0.0, 1.0]), t_range, px_per_x, FIGURE_TOLERANCE_PX)
+    lines = sample_worldlines(scene, rr.LAB, np.array([0.0, 1.0]), t_range, px_per_x, FIGURE_TOLERANCE_PX)
     items: list[Item] = []
     for r in range(scene.n_rods):
-        left, right = lines[r]
-        if shade:
-            items.append(
-                Area(
-                    np.concatenate([left.x, right.x[::-1]]),
-                    np.concatenate([left.t, right.t[::-1]]),
-                    Style("rgba(0,0,0,0.07)", 0.0),
-                )
-            )
-        color = colors[r % len(colors)]
-        for w in (left, right):
-            items.append(Polyline(w.x, w.t, Style(color, 2.0, dash)))
+        edge = Style(colors[r % len(colors)], 2.0, dash)
+        items += world_tube(lines[r], fill=PRINT_SHADE if shade else None, edge=edge)
     return items
 
 
@@ -147,8 +140,7 @@ def figure2() -> PaperFigure:
     )
 
 
-def _collision(scene: rr.Scene, name: str) -> PaperFigure:
-    t_range = (-1.0, 1.3) if name == "fig3" else (-1.0, 1.4)
+def _collision(scene: rr.Scene, name: str, t_range: tuple[float, float]) -> PaperFigure:
     x_range, t_range = _ranges(scene, t_range)
     side: dict[str, Anchor] = {"T_1": "right", "T_1'": "right", "T_2": "left", "T_2'": "left"}
     items = [
@@ -168,8 +160,8 @@ def paper_figures() -> list[PaperFigure]:
     return [
         figure1(),
         figure2(),
-        _collision(examples.fig3_case_one(), "fig3"),
-        _collision(examples.fig4_case_two(), "fig4"),
+        _collision(examples.fig3_case_one(), "fig3", (-1.0, 1.3)),
+        _collision(examples.fig4_case_two(), "fig4", (-1.0, 1.4)),
     ]
 
 

@@ -8,6 +8,7 @@ one unit of each equally long, so light moves at 45 degrees.
 from __future__ import annotations
 
 import functools
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -16,16 +17,15 @@ import rigidrel_core as rr
 
 from .layers import DEFAULT_LAYERS, Layer
 from .layout import MIN_TEXT_PX
+from .objects import object_style
 from .placement import place_labels
-from .sampling import ADAPTIVE, Sampler
+from .sampling import ADAPTIVE, Sampled, Sampler
 from .signals import Signals, signal_items
 from .vocabulary import (
-    DOOR_COLOR,
     FRAME_COLOR,
     INK,
     LIGHT_COLOR,
     ROD_COLORS,
-    WALL_COLOR,
     Area,
     Chart,
     Dash,
@@ -99,10 +99,11 @@ def _to_view(view: View, events_other: FloatArray) -> FloatArray:
 
 
 def window_x_range(scene: rr.Scene, frames: tuple[rr.Frame, ...], t_range: tuple[float, float]) -> tuple[float, float]:
-    """The x interval the rods sweep over the window in any of the frames (for shared scales)."""
+    """The x interval the rods and the scene's objects sweep over the window in any of the frames (for
+    shared scales)."""
     t = np.linspace(t_range[0], t_range[1], 97)
     xs = [scene.positions(t, frame=f) for f in frames]
-    xs += [o.positions(t, frame=f) for o in scene.obstacles for f in frames]
+    xs += [o.positions(t, frame=f) for o in scene.objects for f in frames]
     lo = min(float(x.min()) for x in xs)
     hi = max(float(x.max()) for x in xs)
     return lo, hi
@@ -207,35 +208,21 @@ def minkowski_static(
         t_label = t0 + 0.92 * (t1 - t0)
         x_label = float(np.interp(t_label, both[0, :, 0], both[0, :, 1]))
         items.append(Label(x_label, t_label, f"t{other}", Style(FRAME_COLOR), size=label_px, movable=True))
-    # obstacles (a wall): straight worldlines
-    tt = np.array([t0, t1])
-    for obstacle in scene.obstacles:
-        style = Style(WALL_COLOR, 5.0, name=obstacle.name)
-        if obstacle.kind is rr.ObstacleKind.BARN_DOOR:  # the door's worldline, dashed: nothing hits it
-            style = Style(DOOR_COLOR, 2.5, "dash", name=obstacle.name)
-        items.append(Polyline(obstacle.positions(tt, frame=frame), tt, style))
+    # the scene's objects that are not rods, by their roles' styles (a wall, a door: straight worldlines)
+    items.extend(object_worldlines(scene, frame, (t0, t1), px_per_x, sampler))
     # world tubes and worldlines
     tube, interior = Layer.WORLD_TUBE in layers, Layer.INTERIOR_LINES in layers
     fractions = DIAGRAM_FRACTIONS if interior else DIAGRAM_FRACTIONS[[0, -1]]
     lines = sampler.worldlines(scene, frame, fractions, t_range, px_per_x) if tube or interior else []
     for r, rod in enumerate(scene.rods if lines else ()):
         color = ROD_COLORS[r % len(ROD_COLORS)]
-        left, right = lines[r][0], lines[r][-1]
-        if tube:
-            items.append(
-                Area(
-                    np.concatenate([left.x, right.x[::-1]]),
-                    np.concatenate([left.t, right.t[::-1]]),
-                    Style(rgba(color, 0.16), 0.0, group=rod.name),
-                )
-            )
-        for k in range(1, fractions.size - 1):
-            w = lines[r][k]
-            name = rod.name if not tube and k == 1 else None  # the legend names the rod by what is drawn
-            items.append(Polyline(w.x, w.t, Style(color, 1.0, opacity=0.7, name=name, group=rod.name)))
-        if tube:
-            items.append(Polyline(left.x, left.t, Style(color, 2.5, name=rod.name, group=rod.name)))
-            items.append(Polyline(right.x, right.t, Style(color, 2.5, group=rod.name)))
+        items += world_tube(
+            lines[r],
+            fill=Style(rgba(color, 0.16), 0.0, group=rod.name) if tube else None,
+            edge=Style(color, 2.5, name=rod.name, group=rod.name) if tube else None,
+            # the legend names the rod by what is drawn
+            interior=Style(color, 1.0, opacity=0.7, name=None if tube else rod.name, group=rod.name),
+        )
     if overlay is not None:  # e.g. Fig. 1's dashed curve: the impulsive start to the same V
         for r, (left, right) in enumerate(sampler.worldlines(overlay, frame, np.array([0.0, 1.0]), t_range, px_per_x)):
             items.append(Polyline(left.x, left.t, Style(INK, 1.5, "dash", group="overlay")))
@@ -266,6 +253,56 @@ def minkowski_static(
     if area_px is None:
         area_px = (panel_px, panel_px * (t1 - t0) / max(x_range[1] - x_range[0], 1e-300))
     return place_labels(chart, area_px, MIN_TEXT_PX)
+
+
+def object_worldlines(
+    scene: rr.Scene,
+    frame: rr.Frame,
+    t_range: tuple[float, float],
+    px_per_x: float,
+    sampler: Sampler = ADAPTIVE,
+    print_style: bool = False,
+) -> list[Item]:
+    """The worldlines of ``scene``'s objects over ``t_range`` of ``frame``, each in its role's style
+    (:data:`.objects.OBJECT_STYLES`): on the diagrams, named by the object, or with ``print_style`` in
+    print, unnamed. Those of a role drawn on no diagram (a tie, whose ends are the rods') are left out.
+    An inertial worldline is its two ends; one that follows a rod is sampled as that rod's worldline
+    is (``sampler``, to its tolerance at ``px_per_x`` px per unit of x)."""
+    items: list[Item] = []
+    tt = np.array(t_range)
+    for obj in scene.objects:
+        style = object_style(obj).print_style if print_style else object_style(obj).diagram
+        if style is None:
+            continue
+        for k, w in enumerate(obj.worldlines):
+            name = obj.name if k == 0 and not print_style else None
+            if isinstance(w, rr.MaterialWorldline):
+                line = sampler.worldlines(scene, frame, np.array([w.fraction]), t_range, px_per_x)[w.rod][0]
+                items.append(Polyline(line.x, line.t, replace(style, name=name)))
+            else:
+                items.append(Polyline(w.positions(tt, frame=frame), tt, replace(style, name=name)))
+    return items
+
+
+def world_tube(
+    worldlines: Sequence[Sampled], *, fill: Style | None, edge: Style | None, interior: Style | None = None
+) -> list[Item]:
+    """One rod's world tube from its sampled worldlines (left end first, right end last): the region
+    between its ends filled in ``fill``, its interior worldlines in ``interior`` (the first of them
+    named by its style, the others not), then its two ends in ``edge`` (the left one named, the right
+    one not); each part left out where its style is ``None``. The diagrams, the paper's figures and
+    the paradoxes' draw every tube with it."""
+    left, right = worldlines[0], worldlines[-1]
+    items: list[Item] = []
+    if fill is not None:
+        items.append(Area(np.concatenate([left.x, right.x[::-1]]), np.concatenate([left.t, right.t[::-1]]), fill))
+    if interior is not None:
+        for k, w in enumerate(worldlines[1:-1]):
+            items.append(Polyline(w.x, w.t, interior if k == 0 else replace(interior, name=None)))
+    if edge is not None:
+        items.append(Polyline(left.x, left.t, edge))
+        items.append(Polyline(right.x, right.t, replace(edge, name=None)))
+    return items
 
 
 def minkowski_now(view: View, now: float, span: float, ends: FloatArray) -> tuple[Item, ...]:

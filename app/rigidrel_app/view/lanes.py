@@ -3,11 +3,11 @@
 Lane coordinates: ``x`` along the rods (the frame's own x, in units of the scene's
 largest rest length), ``z`` up within the lane. Rods are boxes with a tick at every
 tenth of their rest length (so the uneven accelerations along a Born-rigid rod show),
-a proper-time clock dial on each end, the scene's obstacles (a wall) as bars, a ruler of
-the frame's own x, and a mark at the origin event's place. Rods of different groups
-(:attr:`rigidrel_core.Scene.rod_groups`: Bell's comparison rod, the pole-barn's two models) get a
-row each in the rod band, one above the other; Bell's string is a thin bar between the ships,
-coloured by its strain (:data:`.vocabulary.STRAIN_RAMP`).
+a proper-time clock dial on each end, the scene's objects that are not rods (drawn from their
+descriptions, by role: :mod:`.objects`), a ruler of the frame's own x, and a mark at the origin
+event's place. Rods of different groups (:attr:`rigidrel_core.Scene.rod_groups`: alternatives, a
+comparison) get a row each in the rod band, one above the other; a tie between two rods is a thin
+bar on their row, coloured by its field (:data:`.objects.FIELD_RAMP`).
 """
 
 from __future__ import annotations
@@ -21,14 +21,12 @@ import numpy.typing as npt
 import rigidrel_core as rr
 
 from .layout import LaneLayout
+from .objects import object_style, object_words
 from .vocabulary import (
-    DOOR_COLOR,
     FRAME_COLOR,
     INK,
     LIGHT_COLOR,
     ROD_COLORS,
-    STRAIN_RAMP,
-    WALL_COLOR,
     FloatArray,
     Label,
     Segments,
@@ -100,8 +98,8 @@ class LaneState:
 
 
 def lane_geometry(scene: rr.Scene) -> LaneGeometry:
-    """The lanes' sizes for ``scene``: an obstacle's bar reaches from the rods' bottom to the top of
-    the upper dials, never into the title above them (as :mod:`.layout` has it on the canvas)."""
+    """The lanes' sizes for ``scene``: a body's bar reaches from the rods' bottom to the top of the
+    upper dials, never into the title above them (as :mod:`.layout` has it on the canvas)."""
     geo = LaneGeometry(unit=max(r.motion.length for r in scene.rods))
     return replace(geo, wall_height=geo.clock_rows[1] + geo.clock_radius + 0.5 * geo.rod_height)
 
@@ -136,11 +134,9 @@ def lane_state(
         Box(float(x[r, 0]), float(x[r, -1]), float(row_h[r]), ROD_COLORS[r % len(ROD_COLORS)], float(row_z[r]))
         for r in range(scene.n_rods)
     ]
-    string = string_picture(scene, frame, now, x, geo) if isinstance(scene, rr.BellScene) else None
-    if string is not None:
-        boxes.extend(string.boxes)
-    for obstacle in scene.obstacles:
-        boxes.append(obstacle_box(obstacle, float(obstacle.positions(now, frame=frame)) / u, geo))
+    objects = [object_picture(scene, obj, frame, now, x, geo) for obj in scene.objects]
+    for picture in objects:
+        boxes.extend(picture.boxes)
     tx = x.ravel()
     tick_z = np.repeat(row_z, x.shape[1])
     tick_h = np.repeat(row_h, x.shape[1])
@@ -158,7 +154,7 @@ def lane_state(
         readings = "    ".join(
             f"{rod.name}: {signed(tau[i, 0])} | {signed(tau[i, 1])}" for i, rod in enumerate(scene.rods)
         )
-        key = "   ".join(k for k in (string.text if string is not None else "", rows_key(scene)) if k)
+        key = "   ".join(k for k in (*(p.text for p in objects), rows_key(scene)) if k)
         head = f"{title}   {key}" if key else title
         texts = (
             Label(
@@ -214,60 +210,76 @@ def rows_key(scene: rr.Scene) -> str:
     return "; ".join(f"{head}: {names[0]}" for head, names in named if len(names) == 1)
 
 
-#: The string's thickness, as a share of its row's; a broken string's loose ends, each this share of
-#: the gap between the ships.
-STRING_THICKNESS = 0.35
-LOOSE_END_SHARE = 0.2
-
-
 @dataclass(frozen=True)
-class StringPicture:
-    """Bell's string in a lane at one instant: its bar (two loose ends once broken) and its words."""
+class ObjectPicture:
+    """A scene object in a lane at one instant (:func:`object_picture`): its bars and its words."""
 
     boxes: tuple[Box, ...]
-    strain: float
-    """The core's strain when the string's rear end is at the lane's time."""
-    broken: bool
+    value: float | None
+    """Its field at the lane's time (the core's), or ``None`` (it has none)."""
+    parted: bool
+    """Whether its event has parted it (a broken string: two loose ends)."""
     color: str
     text: str
-    """For the lane's title: the strain and the colour's scale, or that the string has broken."""
+    """For the lane's title (:func:`.objects.object_words`): empty for a body without a field."""
 
 
-def string_picture(scene: rr.BellScene, frame: rr.Frame, now: float, x: FloatArray, geo: LaneGeometry) -> StringPicture:
-    """The string between the ships at time ``now`` of ``frame`` (``x``: the snapshot in lane units,
-    ``(rods, fractions)``, whose first and last fractions are the rods' ends): a thin bar on the ships'
-    row from the rear ship's front end to the front ship's rear end, coloured by the core's strain
-    from unstretched (``0``) to the breaking strain (or, without one, to the strain it ends at); once
-    the core says it has broken, two loose ends in the breaking colour."""
-    (rear_rod, rear_f), (front_rod, front_f) = scene.string_ends
-    x0 = float(x[rear_rod, -1 if rear_f == 1.0 else 0])
-    x1 = float(x[front_rod, -1 if front_f == 1.0 else 0])
-    strain = float(scene.string_strains([now], frame=frame)[0])
-    broken = bool(scene.string_broken([now], frame=frame)[0])
-    full_scale = scene.breaking_strain if scene.breaking_strain is not None else scene.final_strain
-    color = ramp_color(1.0 if broken else (strain / full_scale if full_scale > 0 else 0.0), STRAIN_RAMP)
-    centre, share = bar_rows(scene.rod_groups)[scene.rod_groups[rear_rod]]
-    z, height = centre * geo.rod_height, STRING_THICKNESS * share * geo.rod_height
-    percent = f"{100.0 * full_scale:.3g} %"
-    if broken:
-        loose = LOOSE_END_SHARE * (x1 - x0)
-        boxes = (Box(x0, x0 + loose, height, color, z), Box(x1 - loose, x1, height, color, z))
-        text = f"string broken (at its breaking strain {percent})"
+def object_picture(
+    scene: rr.Scene, obj: rr.SceneObject, frame: rr.Frame, now: float, x: FloatArray, geo: LaneGeometry
+) -> ObjectPicture:
+    """``obj`` at time ``now`` of ``frame`` in lane units, drawn from its description alone
+    (``x``: the rods' snapshot in lane units, ``(rods, TICK_FRACTIONS)``).
+
+    A body (:data:`.objects.OBJECT_STYLES`' ``"bar"``) is a bar the height of the lane's bodies at its
+    face, on the side its matter lies; a tie is a thin bar from its first end to its second on the
+    row of its first end's rod, coloured on its style's ramp by its field from 0 (faint) to the
+    field's full scale (strong), and once its event parts it, two loose ends in the strongest colour.
+    """
+    style = object_style(obj)
+    value = None if obj.field is None else float(obj.field.values([now], frame=frame)[0])
+    parted = bool(obj.parted([now], frame=frame)[0])
+    text = object_words(obj, value, parted)
+    if style.glyph == "bar":
+        face = _lane_x(obj.worldlines[0], frame, now, x, geo)
+        x0, x1 = (face - style.width, face) if obj.side < 0 else (face, face + style.width)
+        bar = Box(x0, x1, geo.wall_height, style.color, z=0.5 * (geo.wall_height - geo.rod_height))
+        return ObjectPicture((bar,), value, parted, style.color, text)
+    first, second = (_lane_x(w, frame, now, x, geo) for w in obj.worldlines[:2])
+    color = style.color
+    if obj.field is not None and value is not None:
+        full = obj.field.full_scale
+        color = ramp_color(1.0 if parted else (value / full if full > 0 else 0.0), style.ramp)
+    centre, share = _row_of(scene, obj.worldlines[0])
+    z, height = centre * geo.rod_height, style.width * share * geo.rod_height
+    if parted:
+        loose = style.loose_end_share * (second - first)
+        boxes = (Box(first, first + loose, height, color, z), Box(second - loose, second, height, color, z))
     else:
-        boxes = (Box(x0, x1, height, color, z),)
-        scale = "breaks" if scene.breaking_strain is not None else "its final"
-        text = f"string strain {100.0 * strain:.1f} % (faint → strong: 0 → {percent}, {scale})"
-    return StringPicture(boxes, strain, broken, color, text)
+        boxes = (Box(first, second, height, color, z),)
+    return ObjectPicture(boxes, value, parted, color, text)
 
 
-def obstacle_box(obstacle: rr.Obstacle, x: float, geo: LaneGeometry) -> Box:
-    """An obstacle at lane x ``x``: a wall is a tall grey bar whose face is at ``x`` (its other side
-    towards negative x, where the rods never are)."""
-    if obstacle.kind is rr.ObstacleKind.WALL:
-        return Box(x - 0.02, x, geo.wall_height, WALL_COLOR, z=0.5 * (geo.wall_height - geo.rod_height))
-    if obstacle.kind is rr.ObstacleKind.BARN_DOOR:  # a thin bar whose inner face is at x (the barn lies below x)
-        return Box(x, x + 0.01, geo.wall_height, DOOR_COLOR, z=0.5 * (geo.wall_height - geo.rod_height))
-    raise ValueError(f"no lane drawing for obstacle kind {obstacle.kind!r}")
+def _lane_x(
+    w: rr.InertialWorldline | rr.MaterialWorldline, frame: rr.Frame, now: float, x: FloatArray, geo: LaneGeometry
+) -> float:
+    """Lane x of an object's worldline at ``now``: a rod's material point that the snapshot ``x`` holds
+    (its ends, its first and last columns; the others if it has :data:`TICK_FRACTIONS`' columns) is read
+    off it, the very number its rod is drawn at; anything else is asked of the core."""
+    if isinstance(w, rr.MaterialWorldline):
+        if w.fraction in (0.0, 1.0):
+            return float(x[w.rod, 0 if w.fraction == 0.0 else -1])
+        k = np.flatnonzero(w.fraction == TICK_FRACTIONS)
+        if x.shape[1] == TICK_FRACTIONS.size and k.size:
+            return float(x[w.rod, int(k[0])])
+    return float(w.positions(now, frame=frame)) / geo.unit
+
+
+def _row_of(scene: rr.Scene, w: rr.InertialWorldline | rr.MaterialWorldline) -> tuple[float, float]:
+    """The row ``(centre, height)`` of the rod band (shares of it, :func:`bar_rows`) a tie lies on: its
+    first end's rod's, or the whole band for an end on no rod."""
+    if isinstance(w, rr.MaterialWorldline):
+        return bar_rows(scene.rod_groups)[scene.rod_groups[w.rod]]
+    return (0.0, 1.0)
 
 
 def lane_static(

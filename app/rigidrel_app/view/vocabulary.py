@@ -26,13 +26,11 @@ SHADES: tuple[Shade, ...] = get_args(Shade)
 Anchor = Literal["left", "right", "center"]
 
 # palette (colour-blind safe: blue / orange / purple, Okabe-Ito)
-ROD_COLORS = ("#0072B2", "#E8710A", "#009E73")  # a third rod (Bell's comparison rod): Okabe-Ito green
+ROD_COLORS = ("#0072B2", "#E8710A", "#009E73")  # a third rod: Okabe-Ito green
 FRAME_COLOR = "#7B3FA0"
 LIGHT_COLOR = "#C9A400"
-WALL_COLOR = "#6E6E6E"
-DOOR_COLOR = "#8C5A2B"
-"""A barn's front door (an obstacle nothing hits)."""
 INK = "#222222"
+# the colours of the scenes' objects that are not rods: the style table, :mod:`.objects`
 
 
 def rgb(color: str) -> tuple[int, int, int]:
@@ -199,14 +197,7 @@ def markdown_literal(text: str) -> str:
     return _MARKDOWN_PUNCTUATION.sub(r"\\\1", html.escape(text, quote=False))
 
 
-#: A string's strain, unstretched to breaking: stops of matplotlib's "magma" map from 0.8 down to 0.2
-#: (light peach to dark violet). Its lightness falls monotonically, so the order reads in every kind of
-#: colour vision and in grey; none of its stops is a rod's colour. The words for it are "faint → strong",
-#: true on a light ground and on a dark one, which shows every colour at the opposite lightness.
-STRAIN_RAMP = ("#FE9F6D", "#F7705C", "#DE4968", "#B73779", "#8C2981", "#641A80", "#3B0F70")
-
-
-def ramp_color(fraction: float, ramp: tuple[str, ...] = STRAIN_RAMP) -> str:
+def ramp_color(fraction: float, ramp: tuple[str, ...]) -> str:
     """The colour ``fraction`` (clipped to ``[0, 1]``) of the way along ``ramp``, mixed linearly in sRGB
     between its neighbouring stops and rounded to 1/50 of the ramp (a colour that changes smoothly
     during playback, yet not in every frame)."""
