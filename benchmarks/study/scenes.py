@@ -6,6 +6,7 @@ A frame of velocity ``beta`` has ``t' = gamma (t - beta x)``, ``x' = gamma (x - 
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Literal
@@ -14,6 +15,7 @@ import numpy as np
 import numpy.typing as npt
 
 import rigidrel_core as rr
+from rigidrel_core.examples import FIG1_CONSTANT_ACCELERATION, FIG3_CASE_ONE
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -79,8 +81,14 @@ def rod_collision(
     return BenchScene(label, "rod-collision", tuple(zip(names, (v1, v2, mass1, mass2, length1, length2, eps))))
 
 
-FIG1 = constant_acceleration("Fig. 1: acceleration to V = 0.6, a'_F L0 = 1/2", 0.6, 1.0, 0.5)
-FIG3 = rod_collision("Fig. 3: collision V1 = 0.6, M2 = 2 M1", 0.6, 0.0, 1.0, 2.0, 1.0, 1.0, 1.0)
+def paper_case(label: str, kind: BenchKind, values: Mapping[str, float | None]) -> BenchScene:
+    """One of the paper's canonical cases (:mod:`rigidrel_core.examples`), as the scenes' presets are."""
+    parameters = tuple((name, value) for name, value in values.items() if value is not None)
+    return BenchScene(label, kind, parameters)
+
+
+FIG1 = paper_case("Fig. 1: acceleration to V = 0.6, a'_F L0 = 1/2", "constant-acceleration", FIG1_CONSTANT_ACCELERATION)
+FIG3 = paper_case("Fig. 3: collision V1 = 0.6, M2 = 2 M1", "rod-collision", FIG3_CASE_ONE)
 ULTRA_9 = constant_acceleration("acceleration to V = 1 - 1e-9", 1.0 - 1e-9, 1.0, 0.5)
 ULTRA_12 = rod_collision("collision V1 = 1 - 1e-12, equal masses", 1.0 - 1e-12, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0)
 HORIZON = constant_acceleration("acceleration with a'_F L0 = 1 - 1e-6", 0.6, 1.0, 1.0 - 1e-6)
