@@ -31,14 +31,13 @@ from typing import Literal
 
 import numpy as np
 import viser
-from viser import _messages  # pyright: ignore[reportPrivateUsage]
-from viser._image_encoding import cv2_imencode_with_fallback  # pyright: ignore[reportPrivateUsage]
 
 from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
 from ..view.lanes import Box, LanePicture, LaneState, ruler_text, segments_array
 from ..view.layout import CanvasLayout, lane_title_text
 from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, lightness_flipped, plain_text, rgb
+from ._viser import encode_png, make_image, set_image_png, write_label
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
 _CUBE_FACES = np.array(
@@ -315,28 +314,6 @@ def label_scale(px: float) -> float:
     return px / LABEL_EM_PX
 
 
-def _write_label(
-    scene: viser.SceneApi,
-    handle: viser.LabelHandle,
-    changes: dict[str, object],
-    position: tuple[float, float, float] | None,
-) -> None:
-    """Assign a label's changed props (``changes``: text, font_screen_scale, anchor) in one
-    update message, and its new ``position`` (or ``None``) in another. The handle's own setters
-    send one message per prop, each cast and compared first (about 20 us each, against 10 us
-    per message here); this is their write path (the handle's state, then the message), minus
-    those checks: the caller sends only what changed, in the types viser keeps."""
-    impl = handle._impl  # pyright: ignore[reportPrivateUsage]
-    queue = scene._queue_scene_message  # pyright: ignore[reportPrivateUsage]
-    if changes:
-        for name, value in changes.items():
-            setattr(impl.props, name, value)
-        queue(_messages.SceneNodeUpdateMessage(impl.name, changes))
-    if position is not None:
-        impl.position[:] = position
-        queue(_messages.SetPositionMessage(impl.name, position))
-
-
 class _Texts:
     """Label nodes under one name prefix, grown when needed and never re-added (changing a label
     costs ~60 us, creating one ~500 us); only what changed is assigned; unused ones are hidden."""
@@ -383,7 +360,7 @@ class _Texts:
             changes["font_screen_scale"] = scale
         if old is None or old[3] != anchor:
             changes["anchor"] = anchor
-        _write_label(self._scene, h, changes, position if old is None or old[1] != position else None)
+        write_label(self._scene, h, changes, position if old is None or old[1] != position else None)
         if old is None:
             h.visible = True
         self._shown[k] = state
@@ -578,7 +555,7 @@ def flat_still(image: np.ndarray, scale: float, shade: Shade, version: int) -> F
         return None
     r0, r1, c0, c1 = int(rows[0]), int(rows[-1]) + 1, int(cols[0]), int(cols[-1]) + 1
     cut = sent_for_shade(image[r0:r1, c0:c1], shade)
-    png = cv2_imencode_with_fallback("png", np.ascontiguousarray(cut), None, "rgb")
+    png = encode_png(cut)
     rows_all = image.shape[0]
     box = (c0 / scale, (rows_all - r1) / scale, c1 / scale, (rows_all - r0) / scale)
     return FlatStill(png, box, version, scale)
@@ -682,16 +659,9 @@ class PageRenderer:
         # the image's plane faces the camera (on -y), its first row at the top (+z)
         wxyz = (np.sqrt(0.5), -np.sqrt(0.5), 0.0, 0.0)
         if self._flat is None:
-            message = _messages.ImageMessage(
-                name="/page/flat",
-                props=_messages.ImageProps(
-                    _format="png", _data=flat.png, render_width=w, render_height=h,
-                    cast_shadow=False, receive_shadow=False, scale=1.0,
-                ),
-            )  # fmt: skip
-            self._flat = viser.ImageHandle._make(self._scene, message, "/page/flat", wxyz, position, True)  # pyright: ignore[reportPrivateUsage]
+            self._flat = make_image(self._scene, "/page/flat", flat.png, (w, h), wxyz, position)
         else:
-            self._flat._data = flat.png  # pyright: ignore[reportPrivateUsage]
+            set_image_png(self._flat, flat.png)
             if (self._flat.render_width, self._flat.render_height) != (w, h):
                 self._flat.render_width, self._flat.render_height = w, h
             if tuple(self._flat.position) != position:

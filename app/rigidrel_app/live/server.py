@@ -16,9 +16,8 @@ from importlib import metadata
 from typing import Any
 
 import viser
-from viser import _messages as viser_messages
-from viser.infra import WebsockClientConnection
 
+from ..backends._viser import CONTROL_MESSAGE_TYPES, WebsockClientConnection, live_websocket, on_connection
 from ..lessons import Lesson
 from ..view.scenario import Scenario
 from ..view.state import Settings
@@ -79,14 +78,7 @@ class MessageBudget:
 
 #: Messages that ask the session to act (each may redraw the scene), as their type names appear
 #: in the msgpack a client sends (the budget is spent before a message is decoded).
-_CONTROL_TYPE_NAMES = tuple(
-    cls.__name__.encode()
-    for cls in (
-        viser_messages.GuiUpdateMessage,
-        viser_messages.CommandTriggerMessage,
-        viser_messages.GuiButtonHoldMessage,
-    )
-)
+_CONTROL_TYPE_NAMES = CONTROL_MESSAGE_TYPES
 
 
 class _Bucket:
@@ -194,7 +186,7 @@ class App:
         self.server.on_client_disconnect(self._disconnect)
         # every message a client sends passes its budget as it is read off the socket, before viser
         # decodes it (a connection that never became a tab, sending no camera message, included)
-        self.server._websock_server.on_client_connect(self._guard)
+        on_connection(self.server, self._guard)
         self._loop = threading.Thread(target=self._animate, name="rigidrel-animation", daemon=True)
         self._loop.start()
 
@@ -216,7 +208,7 @@ class App:
         """Give a new connection a :class:`MessageBudget`: its websocket's ``recv`` (viser's reading
         loop calls it for every message) spends the tokens, and drops the client once they are spent."""
         client_id = connection.client_id
-        websocket = self.server._websock_server._live_connections.get(client_id)
+        websocket = live_websocket(self.server, client_id)
         if websocket is None:  # gone already
             return
         budget = self.budget
