@@ -21,6 +21,14 @@ Python, private to viser (inventory):
 - ``ViserServer._websock_server``: ``on_client_connect`` (a connection before it is a client)
   and ``_live_connections`` (its websocket, whose ``recv`` the message budget wraps).
 - ``viser.infra.WebsockClientConnection``: that connection's type.
+- ``viser.SceneApi(owner, thread_executor=, event_loop=)`` on a connection of our own
+  (``infra.WebsockMessageHandler`` subclassed: its buffer's ``push``, ``atomic_start``,
+  ``atomic_end``, ``remove_entity_state_from_buffer``, ``sanctioned_dead_writes``), and a scene's
+  ``_owner_id``: a scene that belongs to no client, recorded for the playback runtime.
+- ``_messages._CreateSceneNodeMessage`` (a node's creation), ``SetOrientationMessage``,
+  ``SetSceneNodeVisibilityMessage``, ``Message.as_serializable_dict(binary_buffers=)`` and
+  ``infra._messages._prepare_for_serialization``: recorded messages written as viser's client
+  takes them.
 
 The browser, private to viser's client (inventory; the scripts in ``live/assets/`` use these):
 
@@ -29,17 +37,28 @@ The browser, private to viser's client (inventory; the scripts in ``live/assets/
   (``.mantine-NumberInput-root``); a panel is a ``[data-dock-group]`` or a ``.mantine-Tabs-root``.
 - React's fiber tree from ``#root`` to viser's ``ViewerContext`` value (``mutable``,
   ``useSceneTree``, ``useGuiConfig``), its ``mutable.current.messageQueue`` (a plain array drained
-  by the render loop), ``requestRender()`` and ``sendMessage()`` (the playback runtime).
+  by the render loop), ``requestRender()`` and ``sendMessage()`` (the playback runtime); the
+  wire shapes of ``SceneNodeUpdateMessage``, ``SetPositionMessage``, ``SetOrientationMessage``,
+  ``SetSceneNodeVisibilityMessage`` and the creation messages, ``owner`` included, and numpy
+  fields as typed arrays of their dtype.
 """
 
 from __future__ import annotations
 
+import asyncio
+import concurrent.futures
+import contextlib
+import functools
+import threading
+import types
+import uuid
+from dataclasses import dataclass, field
 from importlib import metadata
 from typing import Any
 
 import numpy as np
 import viser
-from viser import _messages  # pyright: ignore[reportPrivateUsage]
+from viser import _messages, infra  # pyright: ignore[reportPrivateUsage]
 from viser._image_encoding import cv2_imencode_with_fallback  # pyright: ignore[reportPrivateUsage]
 from viser.infra import WebsockClientConnection
 
@@ -47,6 +66,10 @@ __all__ = [
     "CONTROL_MESSAGE_TYPES",
     "SUPPORTED_VISER",
     "Message",
+    "NodeKey",
+    "PlaybackMessage",
+    "RecordingScene",
+    "SceneFold",
     "WebsockClientConnection",
     "check_version",
     "encode_png",
@@ -56,7 +79,10 @@ __all__ = [
     "on_connection",
     "queue_to_client",
     "run_javascript",
+    "scene_owner",
     "set_image_png",
+    "wire_dict",
+    "wire_value",
     "write_label",
 ]
 
@@ -163,3 +189,142 @@ def on_connection(server: viser.ViserServer, callback: Any) -> None:
 def live_websocket(server: viser.ViserServer, client_id: int) -> Any:
     """The websocket of a live connection, or ``None`` once it has gone."""
     return server._websock_server._live_connections.get(client_id)  # pyright: ignore[reportPrivateUsage]
+
+
+# ---------------------------------------------------------------------------- recording a scene
+class _Keeper(infra.WebsockMessageHandler):
+    """A connection that sends nowhere: every message queued on it is kept, in order."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.messages: list[Message] = []
+
+    def get_message_buffer(self) -> Any:
+        return self
+
+    def push(self, message: Message) -> None:
+        self.messages.append(message)
+
+    def atomic_start(self) -> None:
+        pass
+
+    def atomic_end(self) -> None:
+        pass
+
+    def register_handler(self, message_cls: type[Any], callback: Any) -> None:
+        del message_cls, callback  # nothing comes back from nowhere
+
+    def unregister_handler(self, message_cls: type[Any], callback: Any = None) -> None:
+        del message_cls, callback
+
+    def remove_entity_state_from_buffer(self, entity_type: str, entity_id: str) -> None:
+        del entity_type, entity_id
+
+    def sanctioned_dead_writes(self) -> contextlib.AbstractContextManager[None]:
+        return contextlib.nullcontext()
+
+
+class RecordingScene:
+    """A viser scene API that belongs to no client: whatever its handles send is kept, to be taken
+    with :meth:`take` (the messages since the last take, in order). The playback's frames and the
+    moving parts a browser's runtime draws are recorded on one (``scene``)."""
+
+    def __init__(self) -> None:
+        self._keeper = _Keeper()
+        owner = types.SimpleNamespace(
+            client_id=0,
+            _websock_connection=self._keeper,
+            _viser_server=types.SimpleNamespace(_scene_lifecycle_lock=threading.RLock()),
+        )
+        self.scene = viser.SceneApi(
+            owner,  # pyright: ignore[reportArgumentType]
+            thread_executor=_RECORDING_EXECUTOR,
+            event_loop=_recording_loop(),
+        )
+        self.take()  # what making the API sent
+
+    def take(self) -> list[Message]:
+        messages, self._keeper.messages = self._keeper.messages, []
+        return messages
+
+
+_RECORDING_EXECUTOR = concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="rigidrel-recording")
+
+
+@functools.cache
+def _recording_loop() -> asyncio.AbstractEventLoop:
+    """An event loop that never runs: a recording scene schedules nothing (no client answers it)."""
+    return asyncio.new_event_loop()
+
+
+#: A piece of a scene node's state, as a fold keeps it: ``("props", name, prop)`` (one prop),
+#: ``("position", name)``, ``("wxyz", name)`` or ``("visible", name)``.
+NodeKey = tuple[str, ...]
+
+
+@dataclass
+class SceneFold:
+    """The state of the scene nodes a sequence of messages made: each node's latest creation message
+    (:attr:`created`) and every piece of its state since (:attr:`state`, seeded from the creation).
+    Folding a recorded frame's messages into it gives the frame's full state, whatever it changed."""
+
+    created: dict[str, Message] = field(default_factory=dict)
+    state: dict[NodeKey, object] = field(default_factory=dict)
+
+    def add(self, message: Message) -> None:
+        """Fold one message in; anything but a scene node's creation, props, pose, visibility or
+        removal is refused."""
+        if isinstance(message, _messages._CreateSceneNodeMessage):  # pyright: ignore[reportPrivateUsage]
+            name = message.name
+            self.created.pop(name, None)
+            self.created[name] = message  # a later creation goes after the ones it may depend on
+            for prop, value in vars(message.props).items():  # pyright: ignore[reportAttributeAccessIssue]
+                self.state[("props", name, prop)] = value
+            self.state.setdefault(("visible", name), True)
+        elif isinstance(message, _messages.SceneNodeUpdateMessage):
+            for prop, value in message.updates.items():
+                self.state[("props", message.name, prop)] = value
+        elif isinstance(message, _messages.SetPositionMessage):
+            self.state[("position", message.name)] = tuple(float(v) for v in message.position)
+        elif isinstance(message, _messages.SetOrientationMessage):
+            self.state[("wxyz", message.name)] = tuple(float(v) for v in message.wxyz)
+        elif isinstance(message, _messages.SetSceneNodeVisibilityMessage):
+            self.state[("visible", message.name)] = bool(message.visible)
+        elif isinstance(message, _messages.RemoveSceneNodeMessage):  # gone: made again, or hidden, by a runtime
+            self.created.pop(message.name, None)
+            for key in [k for k in self.state if k[1] == message.name]:
+                del self.state[key]
+        else:
+            raise TypeError(f"a recorded frame holds scene nodes' state only, not a {type(message).__name__}")
+
+
+def wire_dict(message: Message, buffers: list[memoryview]) -> dict[str, Any]:
+    """``message`` as viser's client takes it (``{"type": ..., fields}``), its arrays moved into
+    ``buffers`` and replaced by ``{"__binary_index": i, "dtype": ...}`` (viser's own wire format)."""
+    return message.as_serializable_dict(binary_buffers=buffers)
+
+
+def wire_value(value: object, buffers: list[memoryview]) -> object:
+    """One piece of a node's state as :func:`wire_dict` writes it (arrays into ``buffers``)."""
+    return infra._messages._prepare_for_serialization(value, Any, buffers)  # pyright: ignore[reportPrivateUsage]
+
+
+# ---------------------------------------------------------------------------- the playback's messages
+@dataclass
+class PlaybackMessage(Message, include_in_scene_serialization=False):
+    """Server to one tab's playback runtime (``live/assets/runtime.js``), which takes it out of
+    viser's message queue before viser sees it: an ``action`` on the timeline ``timeline`` (its
+    id), with a number ``value`` and, for ``"frames"``, one block of frames ``payload`` (gzip)."""
+
+    action: str
+    timeline: str
+    value: float = 0.0
+    payload: np.ndarray = field(default_factory=lambda: np.zeros(0, np.uint8))
+
+    def redundancy_key(self) -> str:
+        return f"rigidrel-playback-{uuid.uuid4()}"  # never merged with another
+
+
+def scene_owner(client: viser.ClientHandle) -> str:
+    """The owner id the tab's scene stamps on its messages (the runtime stamps its own the same)."""
+    return str(client.scene._owner_id)  # pyright: ignore[reportPrivateUsage]

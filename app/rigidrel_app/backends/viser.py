@@ -365,6 +365,10 @@ class _Texts:
             h.visible = True
         self._shown[k] = state
 
+    @property
+    def handles(self) -> tuple[viser.LabelHandle, ...]:
+        return tuple(self._handles)
+
     def hide(self, k: int) -> None:
         if k < len(self._handles) and self._shown[k] is not None:
             self._handles[k].visible = False
@@ -422,6 +426,10 @@ class _LineNodes:
         self.points = np.zeros((0, 2, 3), dtype=np.float32)
         """Every segment shown, ``(n, 2, 3)`` world (page) coordinates, as last sent."""
 
+    @property
+    def handles(self) -> tuple[viser.LineSegmentsHandle, ...]:
+        return tuple(self._nodes.values())
+
     def show(self, lines: Sequence[PageLines]) -> None:
         groups: dict[tuple[float, int], list[PageLines]] = {}
         for ln in lines:
@@ -468,6 +476,10 @@ class _DotNodes:
         self.shade: Shade = "light"
         """The page's ground; colours are sent for it (:func:`sent_for_shade`)."""
 
+    @property
+    def handles(self) -> tuple[viser.PointCloudHandle, ...]:
+        return tuple(self._nodes.values())
+
     def show(self, dots: Sequence[PageDots]) -> None:
         groups: dict[tuple[str, float, int], list[PageDots]] = {}
         for d in dots:
@@ -507,6 +519,10 @@ class _Ruler:
         self._texts = _Texts(scene, f"{prefix}/n")
         self._origin: float | None = None
         self._slots: dict[int, int] = {}
+
+    @property
+    def handles(self) -> tuple[viser.SceneNodeHandle, ...]:
+        return (*self._texts.handles, self._node)
 
     def show(self, lane: LanePicture, x0: float, x1: float, z: float, px: float) -> None:
         if self._origin != lane.origin_px:
@@ -563,10 +579,16 @@ def flat_still(image: np.ndarray, scale: float, shade: Shade, version: int) -> F
 
 class PageRenderer:
     """Draws a :class:`~rigidrel_app.view.layout.CanvasLayout` page into one client's scene: the
-    diagrams' static pictures once per scene, the lanes and the moving parts every frame."""
+    diagrams' static pictures once per scene, the lanes and the moving parts every frame.
 
-    def __init__(self, scene: viser.SceneApi) -> None:
+    The moving parts (the lanes' boxes, lines, clocks, titles and rulers, the diagrams' now-lines
+    and markers) go into ``moving`` if given: a scene of their own, which a tab's playback runtime
+    draws from (recorded, :class:`~rigidrel_app.backends._viser.RecordingScene`), not the client's."""
+
+    def __init__(self, scene: viser.SceneApi, moving: viser.SceneApi | None = None) -> None:
         self._scene = scene
+        moving = scene if moving is None else moving
+        self._moving_scene = moving
         scene.configure_environment_map(None)
         scene.configure_default_lights(enabled=False)
         scene.add_light_ambient("/page/ambient", intensity=AMBIENT)
@@ -591,19 +613,46 @@ class PageRenderer:
         self._static_dots = _DotNodes(scene, "/page/static_dots")
         self.static_texts = _Texts(scene, "/page/text")
         self.axis_names = _Texts(scene, "/page/axis_name")
-        self._moving_lines = _LineNodes(scene, "/page/moving")
-        self._moving_dots = _DotNodes(scene, "/page/moving_dots")
+        self.layout: CanvasLayout | None = None
+        self._make_moving(moving)
+
+    def _make_moving(self, moving: viser.SceneApi) -> None:
+        self._moving_scene = moving
+        self._moving_lines = _LineNodes(moving, "/page/moving")
+        self._moving_dots = _DotNodes(moving, "/page/moving_dots")
         # in front of the rods' boxes (which reach to y = -_PAGE_ROD_DEPTH / 2): the ticks, clock
         # hands and light pulses are never inside a box, where the depth test may hide them
-        self._lane_lines = _LineNodes(scene, "/page/lanes", _LANE_LINES_Y)
-        self.titles = _Texts(scene, "/page/title")
-        self._rulers = (_Ruler(scene, "/page/ruler0"), _Ruler(scene, "/page/ruler1"))
+        self._lane_lines = _LineNodes(moving, "/page/lanes", _LANE_LINES_Y)
+        self.titles = _Texts(moving, "/page/title")
+        self._rulers = (_Ruler(moving, "/page/ruler0"), _Ruler(moving, "/page/ruler1"))
         self._boxes: viser.BatchedMeshHandle | None = None
         self._box_capacity = 0
         self._box_state: tuple[bytes, bytes, tuple[str, ...], Shade] | None = None
         self._dials: viser.BatchedMeshHandle | None = None
-        self._dial_key: tuple[int, float, Shade] | None = None
-        self.layout: CanvasLayout | None = None
+        self._dial_capacity = 0
+        self._dial_key: tuple[float, Shade] | None = None
+        if self.layout is not None:
+            for nodes in (self._moving_lines, self._moving_dots, self._lane_lines):
+                nodes.shade = self.layout.theme.shade
+
+    def draw_moving_into(self, moving: viser.SceneApi) -> None:
+        """Draw the moving parts into ``moving`` from now on (a tab's runtime takes them over: the
+        nodes drawn so far into the client's scene are removed, and made again where they go)."""
+        for handle in self._moving_handles():
+            handle.remove()
+        self._make_moving(moving)
+
+    def _moving_handles(self) -> list[viser.SceneNodeHandle]:
+        handles: list[viser.SceneNodeHandle] = [
+            *self._moving_lines.handles,
+            *self._moving_dots.handles,
+            *self._lane_lines.handles,
+            *self.titles.handles,
+        ]
+        for ruler in self._rulers:
+            handles += [*ruler.handles]
+        handles += [h for h in (self._boxes, self._dials) if h is not None]
+        return handles
 
     def moving_points(self) -> np.ndarray:
         """The diagrams' moving segments (now-lines) as last sent, ``(n, 2, 3)`` page coordinates."""
@@ -706,12 +755,23 @@ class PageRenderer:
         self._moving_lines.show(moving.lines)
         self._moving_dots.show(moving.dots)
 
-    def _update_boxes(self, boxes: Sequence[Box], shade: Shade) -> None:
-        if len(boxes) > self._box_capacity:
-            self._box_capacity = max(len(boxes), 4)
+    def reserve(self, boxes: int, dials: int) -> None:
+        """Room for this many boxes and clock dials, made before any frame needs it (a recording
+        reserves what its frames will show, so that no frame makes or removes a node)."""
+        if boxes > self._box_capacity:
+            self._box_capacity = boxes
             if self._boxes is not None:
                 self._boxes.remove()
                 self._boxes = None
+        if dials > self._dial_capacity:
+            self._dial_capacity = dials
+            if self._dials is not None:
+                self._dials.remove()
+                self._dials = None
+
+    def _update_boxes(self, boxes: Sequence[Box], shade: Shade) -> None:
+        if len(boxes) > self._box_capacity:
+            self.reserve(max(len(boxes), 4), self._dial_capacity)
         n = self._box_capacity
         positions = np.tile(np.array((0.0, 1e5, 0.0), dtype=np.float32), (n, 1))
         scales = np.full((n, 3), 1e-6, dtype=np.float32)
@@ -721,7 +781,7 @@ class PageRenderer:
         names = tuple(b.color for b in boxes) + ("#ffffff",) * (n - len(boxes))
         colors = _instance_colors(names, shade)
         if self._boxes is None:
-            self._boxes = self._scene.add_batched_meshes_simple(
+            self._boxes = self._moving_scene.add_batched_meshes_simple(
                 "/page/boxes", _CUBE_VERTICES, _CUBE_FACES,
                 batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (n, 1)),
                 batched_positions=positions, batched_scales=scales, batched_colors=colors,
@@ -740,16 +800,18 @@ class PageRenderer:
 
     def _update_dials(self, centres: np.ndarray, radius: float, shade: Shade) -> None:
         n = len(centres)
-        positions = np.zeros((max(n, 1), 3), dtype=np.float32)
-        positions[:, 1] = 1e5  # none: one instance out of sight
+        if n > self._dial_capacity:
+            self.reserve(self._box_capacity, max(n, 4))
+        positions = np.zeros((max(self._dial_capacity, 1), 3), dtype=np.float32)
+        positions[:, 1] = 1e5  # the unused instances out of sight
         if n:
-            positions[:, 0], positions[:, 1], positions[:, 2] = centres[:, 0], _LANE_LINES_Y + 0.5, centres[:, 1]
-        key = (len(positions), radius, shade)
+            positions[:n, 0], positions[:n, 1], positions[:n, 2] = centres[:, 0], _LANE_LINES_Y + 0.5, centres[:, 1]
+        key = (radius, shade)
         if self._dials is None or key != self._dial_key:
             if self._dials is not None:
                 self._dials.remove()
             vertices, faces = _ring(radius, width=0.2)
-            self._dials = self._scene.add_batched_meshes_simple(
+            self._dials = self._moving_scene.add_batched_meshes_simple(
                 "/page/dials", vertices, faces,
                 batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (len(positions), 1)),
                 batched_positions=positions, batched_colors=np.array(linear_rgb(INK, shade), dtype=np.uint8),
