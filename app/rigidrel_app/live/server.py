@@ -26,6 +26,7 @@ from .controls import configure_panel
 from .greeting import greet
 from .playback import FRAME_RATE
 from .session import Session
+from .timeline import TimelineCache
 
 #: 3-D lanes are redrawn at this rate per client while playing (>= 30 fps delivered, with margin).
 ANIMATION_HZ = FRAME_RATE
@@ -177,6 +178,8 @@ class App:
         configure_panel(self.server.gui, shade)
         loop = self.server.get_event_loop()
         loop.call_soon_threadsafe(loop.set_exception_handler, self._loop_exception)
+        self.timelines = TimelineCache()
+        """The playback timelines the tabs' browsers play, made once per state and canvas, shared."""
         self.sessions: dict[int, Session] = {}
         self._departed: set[int] = set()
         """Clients that left while their session was being built."""
@@ -243,7 +246,9 @@ class App:
             with self._lock:
                 first = self.leader_step if self.follow else 0
             start = self.start or Scenario(Settings())
-            session = Session(client, start.settings, self.lesson, self.follow, self, first, self.shade, start.t)
+            session = Session(
+                client, start.settings, self.lesson, self.follow, self, first, self.shade, start.t, self.timelines
+            )
         finally:
             with self._lock:
                 gone = client.client_id in self._departed
@@ -336,6 +341,7 @@ class App:
     def stop(self) -> None:
         self._stop.set()
         self._loop.join(timeout=2.0)
+        self.timelines.stop()
         with contextlib.redirect_stdout(sys.stderr):  # viser says "Server stopped"; keep stdout for our output
             self.server.stop()
 
