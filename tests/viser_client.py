@@ -532,6 +532,8 @@ class RuntimeClient(LightClient):
         self.played: list[_Played] = []
         self.still_frames: list[float] = []
         """When each still frame (a ``frame`` action: a state's first picture) arrived."""
+        self.pages: list[tuple[float, bool]] = []
+        """When each shared still picture came (True) or went (False) (a ``page`` action)."""
         self._speed, self._loop = 1.0, True
 
     def _consume(self, data: bytes) -> None:
@@ -573,6 +575,8 @@ class RuntimeClient(LightClient):
         elif action == "frame":
             self._stop_playing(now)
             self.still_frames.append(now)
+        elif action == "page":
+            self.pages.append((now, value != 0.0))
         elif action == "speed":
             self._speed = value
         elif action == "loop":

@@ -545,7 +545,10 @@ class _Ruler:
 #: to ``y = _PAGE_ROD_DEPTH / 2``).
 _FLAT_Y = 0.5 * _PAGE_ROD_DEPTH + 0.5
 #: The nodes that hold the still picture's lines, dots and labels (shown or hidden together).
-_VECTOR_ROOTS = ("/page/static", "/page/static_dots", "/page/text")
+#: The still picture's node groups, under a page root ("/page" for a tab's own, :data:`SHARED_ROOT`).
+_VECTOR_ROOTS = ("static", "static_dots", "text")
+#: Where a page shared by many tabs (:func:`record_still`) is drawn: one node, removed whole.
+SHARED_ROOT = "/shared"
 
 
 @dataclass(frozen=True)
@@ -585,19 +588,27 @@ class PageRenderer:
     and markers) go into ``moving`` if given: a scene of their own, which a tab's playback runtime
     draws from (recorded, :class:`~rigidrel_app.backends._viser.RecordingScene`), not the client's."""
 
-    def __init__(self, scene: viser.SceneApi, moving: viser.SceneApi | None = None) -> None:
+    def __init__(self, scene: viser.SceneApi, moving: viser.SceneApi | None = None, still_root: str = "/page") -> None:
+        """``still_root``: where the still picture's nodes go (``/page`` on a tab's own scene, which
+        gets its lights too; :data:`SHARED_ROOT` for a recorded page many tabs share)."""
         self._scene = scene
         moving = scene if moving is None else moving
         self._moving_scene = moving
-        scene.configure_environment_map(None)
-        scene.configure_default_lights(enabled=False)
-        scene.add_light_ambient("/page/ambient", intensity=AMBIENT)
-        scene.add_light_directional("/page/front_light", intensity=FRONT, position=(0.0, -10.0, 4.0))
+        if still_root == "/page":
+            scene.configure_environment_map(None)
+            scene.configure_default_lights(enabled=False)
+            scene.add_light_ambient("/page/ambient", intensity=AMBIENT)
+            scene.add_light_directional("/page/front_light", intensity=FRONT, position=(0.0, -10.0, 4.0))
+        else:  # one node to remove it whole
+            scene.add_frame(still_root, show_axes=False)
         # the still picture's nodes hang under these (before any of them exists), so that one
         # message each shows or hides them all
-        self._vector_roots = tuple(scene.add_frame(name, show_axes=False) for name in _VECTOR_ROOTS)
+        self._vector_roots = tuple(scene.add_frame(f"{still_root}/{name}", show_axes=False) for name in _VECTOR_ROOTS)
         self.vectors_shown = True
         """Whether the still picture shows as lines, dots and labels (else only as its image)."""
+        self.still_lent = False
+        """Whether the tab shows a page shared with other tabs instead of its own still picture
+        (:meth:`lend_still`): its own is hidden until :meth:`set_static` draws it again."""
         self._flat: viser.ImageHandle | None = None
         self.flat_version: int | None = None
         """The page version whose image is shown (``None``: no image shown)."""
@@ -609,10 +620,10 @@ class PageRenderer:
         """The still picture as last sent: the diagrams and the legend (the rulers' names apart)."""
         self.still_at = 0.0
         """When it was sent (``time.monotonic``)."""
-        self._static_lines = _LineNodes(scene, "/page/static")
-        self._static_dots = _DotNodes(scene, "/page/static_dots")
-        self.static_texts = _Texts(scene, "/page/text")
-        self.axis_names = _Texts(scene, "/page/axis_name")
+        self._static_lines = _LineNodes(scene, f"{still_root}/static")
+        self._static_dots = _DotNodes(scene, f"{still_root}/static_dots")
+        self.static_texts = _Texts(scene, f"{still_root}/text")
+        self.axis_names = _Texts(scene, f"{still_root}/axis_name")
         self.layout: CanvasLayout | None = None
         self._make_moving(moving)
 
@@ -664,9 +675,8 @@ class PageRenderer:
     def set_static(self, layout: CanvasLayout, picture: PagePicture, axis_names: Sequence[str]) -> None:
         """What does not move: the diagrams (axes, curves, events, labels), the legend, the rulers' names.
         Every colour from here on is sent for the layout theme's ground (:func:`sent_for_shade`)."""
-        self.layout = layout
-        for nodes in (self._static_lines, self._static_dots, self._moving_lines, self._moving_dots, self._lane_lines):
-            nodes.shade = layout.theme.shade
+        self._take_layout(layout)
+        self.still_lent = False  # its own again: the groups are shown below (show_vectors), the names here
         self._static_lines.show(picture.lines)
         self._static_dots.show(picture.dots)
         names = [
@@ -678,6 +688,29 @@ class PageRenderer:
         self.still, self.still_at = picture, time.monotonic()
         self.version += 1
         self.show_vectors()
+
+    def _take_layout(self, layout: CanvasLayout) -> None:
+        self.layout = layout
+        for nodes in (self._static_lines, self._static_dots, self._moving_lines, self._moving_dots, self._lane_lines):
+            nodes.shade = layout.theme.shade
+
+    def lend_still(self, layout: CanvasLayout) -> None:
+        """The tab shows a still picture of ``layout`` drawn by others (a shared page, sent to its
+        runtime): its own is hidden (one message a group), and the moving parts are drawn for
+        ``layout`` from now on. :meth:`set_static` draws its own again."""
+        self._take_layout(layout)
+        if not self.still_lent:
+            self.still_lent = True
+            if self.vectors_shown:
+                for root in self._vector_roots:
+                    root.visible = False
+                self.vectors_shown = False
+            for k in range(len(self.axis_names.handles)):
+                self.axis_names.hide(k)
+        if self._flat is not None and self.flat_version is not None:
+            self._flat.visible = False
+            self.flat_version = None
+        self.version += 1  # an image of the picture it had is not shown
 
     def show_vectors(self) -> None:
         """The still picture as lines, dots and labels; its image, if any, taken away."""

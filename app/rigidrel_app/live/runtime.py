@@ -16,6 +16,7 @@ from typing import Literal
 import viser
 
 from ..backends._viser import handle_uuid
+from ..backends.viser import SHARED_ROOT
 from .playback import FRAME_RATE
 
 #: The hidden control's label (it is never shown).
@@ -70,7 +71,13 @@ class RuntimeConfig:
 def runtime_script(config: RuntimeConfig) -> str:
     """The runtime's source with its configuration filled in."""
     source = resources.files("rigidrel_app.live").joinpath("assets", "runtime.js").read_text(encoding="utf-8")
-    values = {"owner": config.owner, "report": config.report, "clock": config.clock, "frameRate": FRAME_RATE}
+    values = {
+        "owner": config.owner,
+        "report": config.report,
+        "clock": config.clock,
+        "frameRate": FRAME_RATE,
+        "sharedRoot": SHARED_ROOT,
+    }
     return source.replace("__CONFIG__", json.dumps(values))
 
 

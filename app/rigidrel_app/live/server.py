@@ -24,9 +24,10 @@ from ..view.state import Settings
 from ..view.vocabulary import Shade
 from .controls import configure_panel
 from .greeting import greet
+from .painting import PaintingCache
 from .playback import FRAME_RATE
 from .session import Session
-from .timeline import TimelineCache
+from .timeline import ProcessRecorder, TimelineCache
 
 #: 3-D lanes are redrawn at this rate per client while playing (>= 30 fps delivered, with margin).
 ANIMATION_HZ = FRAME_RATE
@@ -178,8 +179,10 @@ class App:
         configure_panel(self.server.gui, shade)
         loop = self.server.get_event_loop()
         loop.call_soon_threadsafe(loop.set_exception_handler, self._loop_exception)
-        self.timelines = TimelineCache()
+        self.timelines = TimelineCache(ProcessRecorder())
         """The playback timelines the tabs' browsers play, made once per state and canvas, shared."""
+        self.paintings = PaintingCache()
+        """The states laid out and drawn for a canvas, made once per state and canvas, shared."""
         self.sessions: dict[int, Session] = {}
         self._departed: set[int] = set()
         """Clients that left while their session was being built."""
@@ -247,7 +250,16 @@ class App:
                 first = self.leader_step if self.follow else 0
             start = self.start or Scenario(Settings())
             session = Session(
-                client, start.settings, self.lesson, self.follow, self, first, self.shade, start.t, self.timelines
+                client,
+                start.settings,
+                self.lesson,
+                self.follow,
+                self,
+                first,
+                self.shade,
+                start.t,
+                self.timelines,
+                self.paintings,
             )
         finally:
             with self._lock:
@@ -305,8 +317,11 @@ class App:
             self._followed = 0
             leader, step = self.leader, self.leader_step
             sessions = list(self.sessions.items())
-        for client_id, s in sessions:
-            if leader is not None and client_id != leader and s.step_index != step:
+        moving = [s for client_id, s in sessions if leader is not None and client_id != leader and s.step_index != step]
+        for s in moving:  # the new step's picture first, to every tab (made once per canvas size) ...
+            s.preview_step(step)
+        for client_id, s in sessions:  # ... then its controls, locks and playback
+            if s in moving:
                 s.go_to_step(step, report=False)
             s.show_leader(None if leader is None else client_id == leader)
             s.client.flush()

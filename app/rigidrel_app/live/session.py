@@ -12,7 +12,7 @@ import time
 import uuid
 from collections.abc import Callable
 from dataclasses import replace
-from typing import Protocol
+from typing import Protocol, overload
 
 import numpy as np
 import viser
@@ -25,7 +25,7 @@ from ..backends.viser import FlatStill, PageRenderer, flat_still
 from ..lessons import Lesson
 from ..lessons.tour import arrival, caption_html, clamp_step, lock_notice, lock_reason, locked_changes
 from ..view import camera as cam
-from ..view.canvas import ChartFrame, legend_rows, moving_picture, still_picture
+from ..view.canvas import ChartFrame, moving_picture
 from ..view.lanes import LanePicture
 from ..view.layers import Layer
 from ..view.layout import (
@@ -35,10 +35,9 @@ from ..view.layout import (
     CanvasLayout,
     CanvasSize,
     canvas_layout,
-    titles_fit_one_line,
 )
 from ..view.scenario import ScenarioError, format_scenario, parse_scenario
-from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, build_drawing, nice_step
+from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, nice_step
 from ..view.scene_view import readout_markdown as readout
 from ..view.state import (
     Resolved,
@@ -63,6 +62,7 @@ from .controls import (
     time_entry,
 )
 from .keys import Action
+from .painting import Painting, PaintingCache, PaintingKey
 from .playback import Playback
 from .runtime import Report, RuntimeConfig, add_playback_report, clock_controls, parse_report, runtime_script
 from .timeline import FRAMES_PER_BLOCK, Mirror, Timeline, TimelineCache, TimelineKey
@@ -119,12 +119,14 @@ class Session:
         shade: Shade = "light",
         start_time: float | None = None,
         timelines: TimelineCache | None = None,
+        paintings: PaintingCache | None = None,
     ) -> None:
         """``lesson``: the tab gives it, opening on ``first_step`` (from 0); ``follow``: ``--follow``
         (the Lesson folder says who leads); ``hooks``: where step changes and key L are reported;
         ``shade``: the theme the tab opens in (key T changes it); ``start_time``: the time the tab
         opens at, in the settings' frame (a scenario line's ``--t``; not with a lesson); ``timelines``:
-        where the tab's browser gets its playback from (None: the server draws every frame)."""
+        where the tab's browser gets its playback from (None: the server draws every frame);
+        ``paintings``: the server's paintings, shared by its tabs (None: the tab's own)."""
         self.client = client
         self.shade: Shade = shade
         """The tab's theme: light, or the dark projector theme (key T)."""
@@ -175,6 +177,14 @@ class Session:
         """The still-picture version and scale whose image was last asked for."""
         self._flat_sent_at = 0.0
         self.timelines = timelines
+        self.paintings = paintings or PaintingCache(capacity=2)
+        self._sent_page: str | None = None
+        """The painting whose page the runtime shows (its id), if any."""
+        self._sent_frame: tuple[str, float] | None = None
+        """The painting's frame the runtime shows (its id and time), if it shows one."""
+        self.painting: Painting | None = None
+        """The painting whose shared page (and frames) the tab's runtime shows, if any (a step the
+        leading tab chose); None while the tab draws its own picture."""
         self.runtime_ready = False
         """The tab's playback runtime said it is ready: it draws the moving parts (:mod:`.timeline`)."""
         self.mirror: Mirror | None = None
@@ -278,7 +288,8 @@ class Session:
                 return
             self._show(new, refit)
 
-    def _show(self, new: Settings, refit: bool | None) -> None:
+    def _show(self, new: Settings, refit: bool | None, shared: bool = False, draw: bool = True) -> None:
+        """``shared``, ``draw``: as :meth:`_apply`."""
         with self.lock:
             resolved = resolve_settings(new)
             old, self.settings = self.settings, new
@@ -288,7 +299,7 @@ class Session:
                     self.controls.show_settings(new)
                     return
                 self._set_notice("")
-                self._apply(resolved, refit=self.controls.fit.value if refit is None else refit)
+                self._apply(resolved, self.controls.fit.value if refit is None else refit, shared, draw)
 
     def set_parameter(self, parameter: rr.Parameter, value: float) -> None:
         """A parameter control moved; a control of another scene (hidden here) changes nothing."""
@@ -396,18 +407,19 @@ class Session:
             index = clamp_step(self.lesson, index)
             moved = index != self.step_index
             with self.client.atomic():
-                self._arrive(index)
+                self._arrive(index, shared=not report)
         if moved and report and self.hooks is not None:
             self.hooks.step_changed(self, index)
 
-    def _arrive(self, index: int) -> None:
-        """Arrive at step ``index``: its settings, window, start, autoplay, locks and caption."""
+    def _arrive(self, index: int, shared: bool = False) -> None:
+        """Arrive at step ``index``: its settings, window, start, autoplay, locks and caption
+        (``shared``: a step the leading tab chose, drawn as a page shared by the tabs that follow)."""
         assert self.lesson is not None
         step = self.lesson.steps[index]
         a = arrival(step)
         self.step_index, self.locked = index, a.locked
         self.step_window = (a.settings.scene, a.window) if a.window is not None else None
-        self._show(a.settings, refit=True)
+        self._show(a.settings, refit=True, shared=shared, draw=False)
         playback = self.playback
         if a.start is not None:
             playback = playback.seek(a.start)
@@ -426,6 +438,41 @@ class Session:
         if c.lesson is not None:
             c.lesson.show_step(index)
         self._send_page()
+
+    def preview_step(self, index: int) -> None:
+        """The picture of step ``index`` that the leading tab chose, before anything else of it: the
+        page and first instant shared by every tab on a canvas of this size, and the caption (the
+        rest follows with :meth:`go_to_step`). Only with a runtime ready; else nothing."""
+        with self.lock:
+            if self.lesson is None or self.closed or not self.runtime_ready:
+                return
+            index = clamp_step(self.lesson, index)
+            a = arrival(self.lesson.steps[index])
+            painting = self._painting(a.settings, None)
+            if painting is None:
+                return  # a step that makes no scene: go_to_step says so
+            window = a.window if a.window is not None else painting.drawn.window
+            playback = self.playback.with_window(window)
+            now = playback.seek(a.start).now if a.start is not None else Playback.start(playback.window).now
+            with self.client.atomic():
+                self._lend_page(painting)
+                if self._sent_frame != (painting.id, now):
+                    self._to_runtime("frame", payload=painting.frame(now))
+                    self._sent_frame = (painting.id, now)
+                    self._runtime_nodeset = painting.id
+                step = self.lesson.steps[index]
+                band = caption_html(step, self.presenter, False)
+                self.client.local_storage.set_item(
+                    self.caption_key, caption_message(band, self.caption_shown, self.shade)
+                )
+        self.client.flush()
+
+    def _lend_page(self, painting: Painting) -> None:
+        """Show ``painting``'s shared page (sent once) instead of the tab's own still picture."""
+        self.renderer.lend_still(painting.layout)
+        if self._sent_page != painting.id:
+            self._to_runtime("page", painting.id, 1.0, payload=painting.page())
+            self._sent_page = painting.id
 
     def show_leader(self, leads: bool | None) -> None:
         """The Lesson folder's line on who leads (``None``: no tab leads)."""
@@ -544,14 +591,40 @@ class Session:
         return frame_choice(d.resolved.scene, d.resolved.frame, d.resolved.ride) if d is not None else "lab"
 
     # ------------------------------------------------------------------ drawing
-    def _apply(self, resolved: Resolved, refit: bool) -> None:
-        c = self.controls
-        # the legend's rows and the titles' lines as the last drawing needed them: a slider's redraw
-        # then lays out and draws once, and its labels are placed for the plots' areas once
+    @overload
+    def _painting(self, settings: Settings, resolved: Resolved) -> Painting: ...
+    @overload
+    def _painting(self, settings: Settings, resolved: None) -> Painting | None: ...
+    def _painting(self, settings: Settings, resolved: Resolved | None) -> Painting | None:
+        """``settings`` (resolved as ``resolved``, or here if None) laid out and drawn for this tab's
+        canvas and look (shared, :mod:`.painting`); the legend rows and title lines of the last one
+        are the first guess. None if ``settings`` make no scene."""
+        theme = replace(PRESENTER if self.presenter else NORMAL, shade=self.shade)
+        key = PaintingKey(settings, self.canvas_size.width, self.canvas_size.height, theme)
+        found = self.paintings.find(key)
+        if found is not None:
+            return found
+        if resolved is None:
+            made = resolve_settings(settings)
+            if isinstance(made, str):
+                return None
+            resolved = made
         if self.drawn is not None and self.drawn.resolved.scene.kind != resolved.scene.kind:
             self.one_line_titles = True
-        self.layout = layout = self._canvas_layout(self.legend_rows, self.one_line_titles)
-        self.drawn = d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
+        return self.paintings.get(resolved, key, (self.legend_rows, self.one_line_titles))
+
+    def _apply(self, resolved: Resolved, refit: bool, shared: bool = False, draw: bool = True) -> None:
+        """Show ``resolved``: its painting, the controls that follow the state, the picture. With
+        ``shared`` (a step the leading tab chose) and a runtime ready, the picture is the painting's
+        own payloads, made once for every tab on a canvas of this size; else the tab draws it.
+        ``draw``: False if the caller draws the moving parts (once it has set the clock)."""
+        c = self.controls
+        # the state on screen drawn again (a new canvas or look), else the settings just taken
+        shown = self.shown_settings if self.drawn is not None and resolved is self.drawn.resolved else None
+        painting = self._painting(shown or self.settings, resolved)
+        self.layout, self.drawn = layout, d = painting.layout, painting.drawn
+        self.legend_rows, self.one_line_titles = painting.legend_rows, painting.one_line_titles
+        self.chart_frames = painting.chart_frames
         c.show_settings(self.settings)
         choices = frame_choices(resolved.scene)
         if tuple(c.frame.options) != choices:
@@ -578,29 +651,20 @@ class Session:
         self.shown_settings = self.settings
         self.set_playback(self.playback.with_window(window))
         c.time.retarget(time_entry(window, nice_step(window[1] - window[0])))
-        legend = d.legend()
-        rows = legend_rows(legend, layout.legend.width, layout.theme)
-        if rows != self.legend_rows:  # the plots give the legend the rows it needs (their curves still fit)
-            self.legend_rows = rows
-            self.layout = layout = self._canvas_layout(rows, self.one_line_titles)
-        if layout.lanes[0].title_lines == 1 and not titles_fit_one_line(
-            [p.title for p in d.lane_pictures(d.window[0], layout)], layout
-        ):
-            # this scene's lane titles are too long for one line: they keep two, the text steps down
-            self.one_line_titles = False
-            self.layout = layout = self._canvas_layout(rows, one_line_titles=False)
-            self.drawn = d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
-        self.chart_frames, picture = still_picture(d.charts, layout.charts, legend, layout.legend, layout.theme)
-        self.renderer.set_static(layout, picture, RULER_NAMES)
-        self.timeline, self.runtime_playing, self._pausing = (
-            None,
-            False,
-            False,
-        )  # the runtime's frames were another state's
+        self.painting = painting if shared and self.runtime_ready else None
+        if self.painting is not None:
+            self._lend_page(painting)
+        else:
+            if self._sent_page is not None:
+                self._to_runtime("page", "", 0.0)  # the shared page goes: the tab's own comes back
+                self._sent_page = None
+            self.renderer.set_static(layout, painting.still, RULER_NAMES)
+        self.timeline, self.runtime_playing, self._pausing = None, False, False  # the runtime's were another state's
         if refit:
             self.fit_camera()
         c.readout.content = readout(resolved)
-        self.draw_now(force_plots=True)
+        if draw:
+            self.draw_now(force_plots=True)
         if self.playback.playing:
             self._play_in_browser()
         if self.lesson is not None and self.caption_off_step != (
@@ -647,15 +711,26 @@ class Session:
         wall = time.monotonic()
         if self.runtime_ready and self._pausing:
             return  # the runtime's frame where it paused is coming: it is the picture
-        instant = d.ride_instant(now)  # the riding lane's instant (None unless it rides a point)
-        lanes = d.lane_pictures(now, layout, instant)
-        self.renderer_lanes = lanes
+        painting = self.painting  # a page shared with other tabs (None: the tab draws its own)
+        # the riding lane's instant (None unless it rides a point)
+        instant = None if painting is not None else d.ride_instant(now)
+        lanes = [] if painting is not None else d.lane_pictures(now, layout, instant)
+        if painting is None:
+            self.renderer_lanes = lanes
         with self.client.atomic():
-            if not self._runtime_frame(now):
+            if self._runtime_frame(now):
+                pass  # a frame of the timeline the runtime holds: it shows it
+            elif painting is not None:  # the painting's frame, made once for all the tabs that show it
+                if self._sent_frame != (painting.id, now):
+                    self._to_runtime("frame", payload=painting.frame(now))
+                    self._sent_frame = (painting.id, now)
+                self._runtime_nodeset = painting.id  # not the mirror's: its next frame goes whole
+            else:
                 ends = [lane.ends for lane in lanes]
                 moving = moving_picture(self.chart_frames, d.moving_items(now, ends, instant), layout.theme)
                 self.renderer.update(lanes, moving)
                 if self.mirror is not None:  # the runtime draws the moving parts: they go to it
+                    self._sent_frame = None
                     prologue = self._runtime_nodeset != self.mirror.nodeset
                     self._to_runtime("frame", payload=self.mirror.frame(now, prologue))
                     self._runtime_nodeset = self.mirror.nodeset
@@ -761,6 +836,7 @@ class Session:
         self._to_runtime("loop", value=float(self.playback.loop))
         t0, t1 = self.playback.window
         frame = (self.playback.now - t0) / (t1 - t0) * (len(timeline.times) - 1) if t1 > t0 else 0.0
+        self._sent_frame = None
         self._to_runtime("play", timeline.id, frame)
         self.runtime_playing, self._pausing = True, False
         self._runtime_nodeset = timeline.id
@@ -774,6 +850,7 @@ class Session:
         frame = timeline.frame_of(now)
         if frame is None:
             return False
+        self._sent_frame = None
         self._to_runtime("seek", timeline.id, frame)
         self._runtime_nodeset = timeline.id
         return True
@@ -800,7 +877,7 @@ class Session:
         shows them again at once (:meth:`PageRenderer.set_static`), so a control's answer is
         never held up by the image; the image follows when the picture stands still again."""
         r, layout, wall = self.renderer, self.layout, time.monotonic()
-        if layout is None or not self.slow_canvas:
+        if layout is None or not self.slow_canvas or r.still_lent:
             return
         # the image's px on the canvas' rendered pixels (CSS px times the screen's pixel ratio
         # times the client's adaptive resolution): a texture drawn at another scale blurs

@@ -27,10 +27,13 @@ with, except for ``const``, a u8 ``changed`` flag per frame (it differs from the
 
 from __future__ import annotations
 
+import concurrent.futures
 import gzip
 import hashlib
 import itertools
 import json
+import multiprocessing
+import sys
 import threading
 from collections import OrderedDict
 from collections.abc import Callable, Hashable, Sequence
@@ -47,6 +50,7 @@ from ..view.lanes import LanePicture
 from ..view.layout import CanvasLayout
 from ..view.scene_view import RULER_NAMES, Drawn, build_drawing
 from ..view.state import Resolved
+from ..view.state import resolve as resolve_settings
 from .playback import FRAME_RATE, PLAY_SECONDS
 
 #: Frames in one block: the first block plays while the others are on their way.
@@ -257,9 +261,12 @@ def timeline_id(key: TimelineKey) -> str:
     return hashlib.sha1(repr(key).encode()).hexdigest()[:16]
 
 
-def record_timeline(key: TimelineKey, resolved: Resolved, count: int = TIMELINE_FRAMES) -> Timeline:
+def record_timeline(
+    key: TimelineKey, resolved: Resolved, count: int = TIMELINE_FRAMES, tid: str | None = None
+) -> Timeline:
     """Every frame of ``resolved``'s playback ``key.window`` laid out as ``key.layout``, drawn by a
-    :class:`PageRenderer` on a recording scene (module docstring). Pure of any tab: any thread."""
+    :class:`PageRenderer` on a recording scene (module docstring). Pure of any tab: any thread.
+    ``tid``: its id (default :func:`timeline_id`, in this process)."""
     layout = key.layout
     drawn = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
     chart_frames, picture = still_picture(drawn.charts, layout.charts, drawn.legend(), layout.legend, layout.theme)
@@ -289,7 +296,7 @@ def record_timeline(key: TimelineKey, resolved: Resolved, count: int = TIMELINE_
     for s in states:
         for k in every - s.keys():
             s[k] = last[k]
-    tid = timeline_id(key)
+    tid = timeline_id(key) if tid is None else tid
     prologue = list(fold.created.values())
     # what never changes goes once, in the first block: the later blocks carry what moves
     steady = {k for k in every if all(_same(states[0][k], s[k]) for s in states[1:])}
@@ -310,6 +317,42 @@ def record_timeline(key: TimelineKey, resolved: Resolved, count: int = TIMELINE_
     return Timeline(tid, times, tuple(blocks))
 
 
+def _record_settings(key: TimelineKey, tid: str) -> Timeline:
+    """In a recorder process: the timeline of ``key``, whose ``resolved`` is the state's settings,
+    with the id the server gave it (a key's repr, sets included, differs between processes)."""
+    resolved = resolve_settings(key.resolved)  # type: ignore[arg-type]
+    if isinstance(resolved, str):  # a state the server drew makes a scene here too
+        raise ValueError(resolved)
+    return record_timeline(key, resolved, tid=tid)
+
+
+class ProcessRecorder:
+    """Records timelines in a process of its own (started on the first one, spawned: nothing of the
+    server's threads is copied), so that the second or third of a second a timeline takes never
+    holds the server's interpreter: the tabs' answers and the frames on their way keep flowing
+    meanwhile. The key's ``resolved`` must be the state's :class:`~rigidrel_app.view.state.Settings`
+    (they are sent, not the scene). Call :meth:`shutdown` when done."""
+
+    def __init__(self) -> None:
+        self._pool: concurrent.futures.ProcessPoolExecutor | None = None
+        self._lock = threading.Lock()
+
+    def __call__(self, key: TimelineKey, resolved: Resolved) -> Timeline:
+        del resolved  # made again in the recorder from the key's settings
+        with self._lock:
+            if self._pool is None:
+                context = multiprocessing.get_context("spawn")
+                self._pool = concurrent.futures.ProcessPoolExecutor(max_workers=1, mp_context=context)
+            pool = self._pool
+        return pool.submit(_record_settings, key, timeline_id(key)).result()
+
+    def shutdown(self) -> None:
+        with self._lock:
+            pool, self._pool = self._pool, None
+        if pool is not None:
+            pool.shutdown(wait=True, cancel_futures=True)
+
+
 @dataclass
 class _Job:
     key: TimelineKey
@@ -323,6 +366,8 @@ class TimelineCache:
     :data:`CACHED_TIMELINES` are kept."""
 
     def __init__(self, record: Callable[[TimelineKey, Resolved], Timeline] = record_timeline) -> None:
+        """``record``: makes a timeline (in this process, or a :class:`ProcessRecorder`, which
+        :meth:`stop` shuts down)."""
         self._record = record
         self._done: OrderedDict[TimelineKey, Timeline] = OrderedDict()
         self._jobs: OrderedDict[TimelineKey, _Job] = OrderedDict()
@@ -370,6 +415,8 @@ class TimelineCache:
             self._stopped = True
             self._wake.notify()
         self._thread.join(timeout=5)
+        if isinstance(self._record, ProcessRecorder):
+            self._record.shutdown()
 
     def _work(self) -> None:
         while True:
@@ -379,7 +426,13 @@ class TimelineCache:
                 if self._stopped:
                     return
                 key, job = self._jobs.popitem(last=True)
-            timeline = self._record(job.key, job.resolved)
+            try:
+                timeline = self._record(job.key, job.resolved)
+            except Exception as exc:  # a recorder process that failed (killed, out of memory): made here
+                if self._record is record_timeline:
+                    raise
+                print(f"rigidrel: recording a timeline in its process: {exc!r}; made in the server", file=sys.stderr)
+                timeline = record_timeline(job.key, job.resolved)
             with self._lock:
                 self.recorded += 1
                 self._done[key] = timeline

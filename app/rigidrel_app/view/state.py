@@ -72,6 +72,11 @@ class Settings:
         object.__setattr__(self, "values", values)
         object.__setattr__(self, "_by_name", MappingProxyType(dict(values)))
 
+    def __reduce__(self) -> tuple[type[Settings], tuple[object, ...]]:
+        """Pickled as its fields (a timeline is recorded in a process of its own)."""
+        fields = (self.scene, self.values, self.frame, self.beta, self.overlay, self.layers, self.ride, self.cone)
+        return (Settings, fields)
+
     @classmethod
     def of(cls, scene: str, **values: float | None) -> Settings:
         """The settings of ``scene`` with ``values`` (the rest at their defaults)."""

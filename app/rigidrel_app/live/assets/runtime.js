@@ -142,6 +142,7 @@
       this.timelines = new Map(); // id -> {first block's nodes/prologue/consts, blocks: Map first -> block, total, times}
       this.pending = Promise.resolve(); // payloads decode in the order they came
       this.nodeset = null; // the node set the moving parts are drawn on now
+      this.page = null; // the shared still picture shown (its node set), or null
       this.created = new Set(); // the moving nodes this runtime made
       this.current = null; // the timeline playing or shown (its id), or null: the server's own frame
       this.applied = -1; // its frame on screen
@@ -212,6 +213,8 @@
         t.blocks.set(block.first, block);
         this.stats.blocks += 1;
         if (this.waiting && this.current === id && this.blockOf(this.position)) this.resume();
+      } else if (action === "page") { // a still picture shared with other tabs (value 1), or its end (0)
+        this.showPage(value ? block : null);
       } else if (action === "forget") {
         this.timelines.delete(id);
       } else if (action === "speed") {
@@ -315,6 +318,18 @@
       else this.send(messages(block.consts.map((c) => [c.key, c.value]), CONFIG.owner));
       this.applied = -1;
       this.stats.frames += 1;
+    }
+    // the shared still picture: the old one removed whole (one node), the new one made under it
+    showPage(block) {
+      const out = [];
+      if (this.page !== null) out.push({ type: "RemoveSceneNodeMessage", name: CONFIG.sharedRoot, owner: CONFIG.owner });
+      this.page = null;
+      if (block) {
+        for (const m of block.prologue) out.push(Object.assign({}, m, { owner: CONFIG.owner }));
+        this.page = block.nodeset;
+      }
+      this.send(out);
+      if (block) this.send(messages(block.consts.map((c) => [c.key, c.value]), CONFIG.owner));
     }
     // draw on another node set: make its nodes, hide ours it does not have, set what never changes
     switchTo(head) {

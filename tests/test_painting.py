@@ -1,0 +1,137 @@
+"""A state painted once per canvas and shared (``rigidrel_app.live.painting``): the same painting
+whatever the first guess, made once per key, its page the still picture under the shared root, its
+frame the moving parts as the timeline draws them; and a hall of tabs that follow a leader getting
+one painting per canvas size."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pytest
+
+from rigidrel_app.backends.viser import SHARED_ROOT
+from rigidrel_app.live.painting import PaintingCache, PaintingKey, paint
+from rigidrel_app.live.timeline import TimelineKey, record_timeline
+from rigidrel_app.view.layout import LEGEND_ROWS, NORMAL, PRESENTER
+from rigidrel_app.view.state import Resolved, Settings, resolve
+from tests.test_timeline import read_payload, same
+
+
+def resolved_of(settings: Settings) -> Resolved:
+    r = resolve(settings)
+    assert isinstance(r, Resolved)
+    return r
+
+
+#: The pole in the barn in presenter mode on a short canvas: its legend needs more rows than the
+#: default and its lane titles two lines (the guesses that a first painting gets wrong).
+POLE = Settings("pole-barn")
+SHORT = PaintingKey(POLE, 1240.0, 560.0, PRESENTER)
+
+
+def test_a_painting_does_not_depend_on_the_first_guess() -> None:
+    resolved = resolved_of(POLE)
+    first = paint(resolved, SHORT)
+    assert first.legend_rows != LEGEND_ROWS and not first.one_line_titles  # both guesses were wrong
+    for guess in ((first.legend_rows, first.one_line_titles), (1, False), (LEGEND_ROWS + 2, True)):
+        again = paint(resolved, SHORT, guess)
+        assert again.layout == first.layout
+        assert (again.legend_rows, again.one_line_titles) == (first.legend_rows, first.one_line_titles)
+        assert [t.text for t in again.still.texts] == [t.text for t in first.still.texts]
+        assert len(again.still.lines) == len(first.still.lines)
+        for a, b in zip(again.still.lines, first.still.lines, strict=True):
+            np.testing.assert_array_equal(a.points, b.points)
+
+
+def test_the_cache_makes_a_painting_once_and_lets_the_oldest_go() -> None:
+    cache = PaintingCache(capacity=2)
+    keys = [PaintingKey(Settings.of("constant-acceleration", v=v), 1280.0, 720.0, NORMAL) for v in (0.3, 0.5, 0.7)]
+    first = cache.get(resolved_of(keys[0].settings), keys[0])
+    assert cache.get(resolved_of(keys[0].settings), keys[0]) is first and cache.made == 1
+    assert cache.find(keys[1]) is None
+    for key in keys[1:]:
+        cache.get(resolved_of(key.settings), key)
+    assert cache.made == 3 and cache.find(keys[0]) is None and cache.find(keys[2]) is not None
+
+
+def test_the_page_is_the_still_picture_under_the_shared_root() -> None:
+    painting = paint(resolved_of(POLE), SHORT)
+    page = painting.page()
+    assert painting.page() is page  # made once
+    head, frames = read_payload(page)
+    assert head["nodeset"] == f"page-{painting.id}" and head["count"] == 1
+    assert head["nodes"][0] == SHARED_ROOT and all(n.startswith(SHARED_ROOT + "/") for n in head["nodes"][1:])
+    labels = [m["props"]["text"] for m in head["prologue"] if m["type"] == "LabelMessage"]
+    expected = [t.text for t in painting.still.texts if t.text.strip()]
+    assert sorted(labels) == sorted([*expected, *("x", "x′")]) or set(expected) <= set(labels)
+    lines = {m["name"] for m in head["prologue"] if m["type"] == "LineSegmentsMessage"}
+    (state,) = frames  # every node's state, once
+    sent = sum(np.size(state[("props", name, "points")]) for name in lines)
+    assert sent == 2 * 3 * sum(len(ln.points) for ln in painting.still.lines)  # every segment: two 3-D points
+
+
+@pytest.mark.parametrize("settings", [POLE, Settings("rod-collision"), Settings("bell-spaceships")])
+def test_a_frame_is_the_moving_parts_as_the_timeline_draws_them(settings: Settings) -> None:
+    painting = paint(resolved_of(settings), PaintingKey(settings, 1280.0, 720.0, NORMAL))
+    window = painting.drawn.window
+    frame = painting.frame(window[0])
+    assert painting.frame(window[0]) is frame  # made once per instant
+    head, (state,) = read_payload(frame)
+    assert head["times"] == [window[0]] and all(n.startswith("/page") for n in head["nodes"])
+    timeline = record_timeline(TimelineKey(settings, painting.layout, window), painting.resolved, count=3)
+    theirs, frames = read_payload(timeline.blocks[0])
+    assert set(head["nodes"]) <= set(theirs["nodes"])  # the timeline has room for every frame's labels
+
+    def shown(frame: dict[Any, Any]) -> set[str]:
+        return {k[1] for k, v in frame.items() if k[0] == "visible" and v} | {
+            n for n in {k[1] for k in frame} if ("visible", n) not in frame
+        }
+
+    assert shown(state) == shown(frames[0])  # the same nodes on screen
+    for key, value in state.items():
+        if key[1] in shown(state):
+            theirs_value = frames[0][key]
+            if key[-1].startswith("batched_"):  # the timeline reserves instances for its busiest frame
+                theirs_value = np.asarray(theirs_value).ravel()[: np.size(value)]
+            assert same(value, theirs_value), key
+
+
+# ---------------------------------------------------------------------------- a hall that follows
+@pytest.mark.slow  # a served lesson and light clients
+def test_followers_share_one_painting_per_canvas_and_get_their_own_back() -> None:
+    from rigidrel_app.lessons import lesson_from
+    from rigidrel_app.live.server import App
+    from tests.viser_client import ClientLoop, RuntimeClient, wait_until
+
+    with App(port=0, lesson=lesson_from("paper"), follow=True) as app:
+        loop = ClientLoop()
+        try:
+            clients = [RuntimeClient(app.url) for _ in range(3)]
+            for c in clients:  # the first leads
+                loop.run(c.connect())
+                loop.start(c.run(3600))
+                wait_until(lambda c=c: c.report_uuid is not None and c.still_frames, timeout=60)
+            sessions = wait_until(lambda: list(app.sessions.values()) if len(app.sessions) == 3 else None)
+            wait_until(lambda: all(s.runtime_ready for s in sessions), timeout=60)
+            made = app.paintings.made
+            before = [len(c.still_frames) for c in clients]
+            loop.run(clients[0].set_value("Next step", True))
+            followers = sessions[1:]
+            wait_until(lambda: all(s.step_index == 1 and s.painting is not None for s in followers), timeout=60)
+            wait_until(lambda: all(len(c.still_frames) > b for c, b in zip(clients, before, strict=True)), timeout=60)
+            assert app.paintings.made == made + 1  # the leader's, then every follower's (one canvas size)
+            assert followers[0].painting is followers[1].painting
+            assert all(s.renderer.still_lent for s in followers) and not sessions[0].renderer.still_lent
+            assert all(c.pages and c.pages[-1][1] for c in clients[1:]) and not clients[0].pages
+            # a follower's own move (presenter mode): its own picture comes back, the shared page goes
+            followers[0].set_presenter(True)
+            wait_until(lambda: clients[1].pages[-1] == (clients[1].pages[-1][0], False), timeout=30)
+            assert followers[0].painting is None and not followers[0].renderer.still_lent
+            errors: list[Any] = [e for c in clients for e in c.stats.errors]
+            assert not errors and app.errors == 0
+            for c in clients:
+                c.stop()
+                loop.run(c.close())
+        finally:
+            loop.close()
