@@ -13,6 +13,7 @@ import pytest
 from rigidrel_app.backends.viser import SHARED_ROOT
 from rigidrel_app.live.painting import PaintingCache, PaintingKey, paint
 from rigidrel_app.live.timeline import TimelineKey, record_timeline
+from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.layout import LEGEND_ROWS, NORMAL, PRESENTER
 from rigidrel_app.view.state import Resolved, Settings, resolve
 from tests.test_timeline import read_payload, same
@@ -124,8 +125,8 @@ def test_followers_share_one_painting_per_canvas_and_get_their_own_back() -> Non
             assert followers[0].painting is followers[1].painting
             assert all(s.renderer.still_lent for s in followers) and not sessions[0].renderer.still_lent
             assert all(c.pages and c.pages[-1][1] for c in clients[1:]) and not clients[0].pages
-            # a follower's own move (presenter mode): its own picture comes back, the shared page goes
-            followers[0].set_presenter(True)
+            # a follower's own move (a layer): its own picture comes back, the shared page goes
+            followers[0].set_layer(Layer.SIGNALS, Layer.SIGNALS not in followers[0].settings.layers)
             wait_until(lambda: clients[1].pages[-1] == (clients[1].pages[-1][0], False), timeout=30)
             assert followers[0].painting is None and not followers[0].renderer.still_lent
             errors: list[Any] = [e for c in clients for e in c.stats.errors]

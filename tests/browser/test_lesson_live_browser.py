@@ -239,11 +239,28 @@ def test_follow_the_leading_tab(open_tab: OpenTab, shots: Path) -> None:
         other.wait_caption(PAPER.steps[2].title)
         assert other.session.step_index == 2
         wait_until(lambda: "follow" in other.session.controls.lesson.status.content.lower(), timeout=30)  # type: ignore[union-attr]
+
+        def node(tab: Any, name: str) -> dict[str, Any] | None:
+            return tab.page.evaluate("(n) => window.__rigidrelPlayback.node(n)", name)
+
+        # the follower shows the step's shared page (its own still picture hidden), the leader its own
+        wait_until(lambda: (node(other, "/shared/text/0") or {}).get("visible"), timeout=30)
+        assert not (node(other, "/page/static") or {}).get("visible", True)
+        assert node(lead, "/shared") is None and not lead.session.renderer.still_lent
+        labels = other.page.evaluate(
+            "() => Array.from({length: 40}, (_, k) => window.__rigidrelPlayback.node('/shared/text/' + k))"
+            ".filter((n) => n && n.visible).map((n) => n.props.text)"
+        )
+        assert sorted(labels) == sorted(t.text for t in other.session.painting.still.texts if t.text.strip())  # type: ignore[union-attr]
+        other.page.screenshot(path=str(shots / "follower-shared-page.png"))
         # the other tab moves on its own; then it takes the lead with L
         other.press("L")
         wait_until(lambda: app.leader == other.session.client.client_id, timeout=30)
         other.press("PageDown")
         lead.wait_caption(PAPER.steps[3].title)
+        # the new leader draws its own picture again; the shared page is gone from its canvas
+        wait_until(lambda: node(other, "/shared") is None, timeout=30)
+        assert not other.session.renderer.still_lent  # its own picture (lines, or their image on a slow canvas)
         other.page.screenshot(path=str(shots / "follower-now-leads.png"))
         assert lead.errors == [] and other.errors == []
     finally:

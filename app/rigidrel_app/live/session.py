@@ -613,11 +613,14 @@ class Session:
             self.one_line_titles = True
         return self.paintings.get(resolved, key, (self.legend_rows, self.one_line_titles))
 
-    def _apply(self, resolved: Resolved, refit: bool, shared: bool = False, draw: bool = True) -> None:
+    def _apply(self, resolved: Resolved, refit: bool, shared: bool | None = None, draw: bool = True) -> None:
         """Show ``resolved``: its painting, the controls that follow the state, the picture. With
         ``shared`` (a step the leading tab chose) and a runtime ready, the picture is the painting's
         own payloads, made once for every tab on a canvas of this size; else the tab draws it.
-        ``draw``: False if the caller draws the moving parts (once it has set the clock)."""
+        ``shared`` None: as the picture on screen is (the same state on a new canvas, in another
+        look). ``draw``: False if the caller draws the moving parts (once it has set the clock)."""
+        if shared is None:
+            shared = self.painting is not None
         c = self.controls
         # the state on screen drawn again (a new canvas or look), else the settings just taken
         shown = self.shown_settings if self.drawn is not None and resolved is self.drawn.resolved else None
