@@ -16,11 +16,13 @@ infers the size from the camera's pixels (:meth:`~rigidrel_app.view.layout.Canva
 
 from __future__ import annotations
 
+import html
 from dataclasses import dataclass
 
 import viser
 
 from ..backends._viser import handle_uuid
+from .runtime import page_asset
 
 #: ``(width * SIZE_BASE + height) * RATIO_BASE + ratio``: one number carries the two sides (each
 #: below ``SIZE_BASE`` px) and the pixel ratio in thousandths (below ``RATIO_BASE``), under 2**53.
@@ -65,23 +67,11 @@ def decode(value: float) -> CssSize | None:
 def script(uuid: str) -> str:
     """The HTML that hides the box's panel (its whole window) and keeps the box up to date with the
     canvas."""
-    js = (
-        "(function () { var last = ''; setInterval(function () { "
-        f"var box = document.getElementById('{uuid}'); "
-        "var canvas = document.querySelector('canvas[data-engine]'); "
-        "if (!box || !canvas || !canvas.clientWidth || !canvas.clientHeight) { return; } "
-        "var h = Math.round(canvas.clientHeight); "
-        f"var v = String((Math.round(canvas.clientWidth) * {SIZE_BASE} + h) * {RATIO_BASE} "
-        "+ Math.round(1000 * canvas.height / canvas.clientHeight)); "
-        "if (v === last) { return; } last = v; "
-        "var set = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value').set; "
-        "set.call(box, v); box.dispatchEvent(new Event('input', { bubbles: true })); "
-        f"}}, {POLL_MS}); }})()"
-    )
+    js = page_asset("canvas-report.js", box_id=uuid, size_base=SIZE_BASE, ratio_base=RATIO_BASE, poll_ms=POLL_MS)
     # the floating window on a desktop; the panel's section of the bottom sheet on a phone
     hidden = f'div:has(> [data-dock-group] [for="{uuid}"]), .mantine-Tabs-root:has([for="{uuid}"])'
     style = f"<style>{hidden} {{ display: none !important; }}</style>"
-    return f'{style}<img alt="" src="data:," style="display: none" onerror="{js}">'
+    return f'{style}<img alt="" src="data:," style="display: none" onerror="{html.escape(js, quote=True)}">'
 
 
 def add_canvas_report(gui: viser.GuiApi) -> viser.GuiNumberHandle[float]:

@@ -35,6 +35,7 @@ from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, preset_menu
 from ..view.vocabulary import ROD_COLORS, Shade, shaded
 from .keys import HOTKEYS, LESSON_HOTKEYS, Action, Hotkey, key_line
 from .playback import Playback
+from .runtime import page_asset
 
 T = TypeVar("T")
 
@@ -280,12 +281,7 @@ def locked_box_css(controls: Sequence[NumberControl]) -> str:
 #: hotkeys hear them. viser's HTML element runs no ``<script>``; an image that fails to load runs
 #: its ``onerror`` (the listener is added once per page).
 ARROWS_STAY_IN_SLIDERS = (
-    '<img alt="" src="data:," style="display: none" onerror="'
-    "if (!window.rigidrelArrows) { window.rigidrelArrows = true; "
-    "document.body.addEventListener('keydown', function (e) { var t = e.target; "
-    "if ((e.key === 'ArrowLeft' || e.key === 'ArrowRight') && t && t.getAttribute "
-    "&& t.getAttribute('role') === 'slider') { e.stopPropagation(); } }); }"
-    '">'
+    f'<img alt="" src="data:," style="display: none" onerror="{html.escape(page_asset("arrows.js"), quote=True)}">'
 )
 
 
@@ -496,12 +492,7 @@ class Controls:
 
 #: The copy button copies its ``data-s`` (the clipboard API where the page is a secure context, as
 #: on 127.0.0.1, else a selected text area and the browser's copy command).
-_COPY_JS = (
-    "var s = this.dataset.s; var done = function (b) { b.textContent = 'Copied'; }; var b = this; "
-    "if (navigator.clipboard && window.isSecureContext) { navigator.clipboard.writeText(s).then(function () "
-    "{ done(b); }); } else { var t = document.createElement('textarea'); t.value = s; "
-    "document.body.appendChild(t); t.select(); document.execCommand('copy'); t.remove(); done(b); }"
-)
+_COPY_JS = page_asset("copy.js")
 
 
 def scenario_html(text: str) -> str:
@@ -522,34 +513,11 @@ def scenario_html(text: str) -> str:
 #: the page out again under the band, and keeps one ``<style>`` element in the page's head. The
 #: server sends the band's content and the style through the tab's localStorage (a message viser
 #: always delivers) under the session's own key; the script takes them from there and removes them.
-_CAPTION_JS = (
-    "window.rigidrelCaptionKey = this.dataset.key; if (!window.rigidrelCaption) { window.rigidrelCaption = true; "
-    "var band = document.createElement('div'); band.id = 'rigidrel-caption'; band.style.display = 'none'; "
-    "document.body.appendChild(band); var root = document.getElementById('root'); "
-    "var fit = function () { var h = band.style.display === 'none' ? 0 : band.offsetHeight; "
-    "root.style.position = 'fixed'; root.style.left = '0'; root.style.right = '0'; root.style.bottom = '0'; "
-    "root.style.height = 'auto'; root.style.top = h + 'px'; }; new ResizeObserver(fit).observe(band); "
-    "setInterval(function () { var v = localStorage.getItem(window.rigidrelCaptionKey); if (v === null) return; "
-    "localStorage.removeItem(window.rigidrelCaptionKey); var m = JSON.parse(v); "
-    "var sheet = document.getElementById('rigidrel-page-style'); "
-    "if (!sheet) { sheet = document.createElement('style'); sheet.id = 'rigidrel-page-style'; "
-    "document.head.appendChild(sheet); } sheet.textContent = m.style; "
-    "band.innerHTML = m.html; band.style.display = m.shown ? 'block' : 'none'; fit(); }, 150); }"
-)
-
+_CAPTION_JS = page_asset("caption.js")
 #: The band's colours: dark text on a pale band, a rule in the rods' blue below it.
 CAPTION_GROUND, CAPTION_INK, CAPTION_RULE = "#FFFCEB", "#111111", ROD_COLORS[0]
 #: The band's looks: 17 px text (in presenter mode 19 px on a 1280x720 screen, 28 px on 1920x1080).
-CAPTION_CSS = (
-    "<style>#rigidrel-caption { position: fixed; top: 0; left: 0; right: 0; z-index: 150; "
-    f"background: {CAPTION_GROUND}; border-bottom: 3px solid {CAPTION_RULE}; padding: 6px 16px 2px; "
-    f"max-height: 45vh; overflow: auto; font-family: sans-serif; color: {CAPTION_INK}; }} "
-    "#rigidrel-caption h2 { margin: 0 0 4px; } "
-    "#rigidrel-caption p { margin: 0 0 6px; } .rr-caption-normal { font-size: 17px; line-height: 1.35; } "
-    ".rr-caption-normal h2 { font-size: 20px; } .rr-caption-presenter { font-size: clamp(18px, 1.3vh + 0.75vw, 30px); "
-    "line-height: 1.3; } .rr-caption-presenter h2 { font-size: 1.15em; }</style>"
-)
-
+CAPTION_CSS = f"<style>{page_asset('caption.css', ground=CAPTION_GROUND, ink=CAPTION_INK, rule=CAPTION_RULE)}</style>"
 
 #: viser's client stores the server's ``local_storage`` items under this prefix.
 VISER_STORAGE_PREFIX = "viser-user:"
@@ -566,9 +534,11 @@ def caption_installer(key: str) -> str:
 
 
 #: The band in the dark theme: its colours as the dark canvas shows every colour (lightness flipped).
-CAPTION_DARK_CSS = (
-    f"body #rigidrel-caption {{ background: {shaded(CAPTION_GROUND, 'dark')}; color: {shaded(CAPTION_INK, 'dark')}; "
-    f"border-bottom-color: {shaded(CAPTION_RULE, 'dark')}; }} "
+CAPTION_DARK_CSS = page_asset(
+    "caption-dark.css",
+    ground=shaded(CAPTION_GROUND, "dark"),
+    ink=shaded(CAPTION_INK, "dark"),
+    rule=shaded(CAPTION_RULE, "dark"),
 )
 
 

@@ -8,7 +8,9 @@ server draws the tab's frames itself, as for a client without a browser.
 
 from __future__ import annotations
 
+import functools
 import json
+import string
 from dataclasses import dataclass
 from importlib import resources
 from typing import Literal
@@ -68,9 +70,21 @@ class RuntimeConfig:
     clock: tuple[tuple[str, Literal["number", "text"]], ...]
 
 
+@functools.cache
+def _asset_source(name: str) -> str:
+    return resources.files("rigidrel_app.live").joinpath("assets", name).read_text(encoding="utf-8")
+
+
+def page_asset(name: str, **values: object) -> str:
+    """A file of the page's JavaScript or CSS (``live/assets/NAME``, package data) with its
+    ``$placeholders`` filled in from ``values`` (every one must be given)."""
+    source = _asset_source(name)
+    return string.Template(source).substitute({k: str(v) for k, v in values.items()}) if values else source
+
+
 def runtime_script(config: RuntimeConfig) -> str:
     """The runtime's source with its configuration filled in."""
-    source = resources.files("rigidrel_app.live").joinpath("assets", "runtime.js").read_text(encoding="utf-8")
+    source = _asset_source("runtime.js")
     values = {
         "owner": config.owner,
         "report": config.report,
