@@ -32,7 +32,8 @@ V = Parameter(
     "c",
     SPEED,
     0.6,
-    "speed V (c = 1), before or after the change as the scene's summary says",
+    "speed V (c = 1): the final speed of a rod that starts at rest, or the approach speed of one that moves "
+    "at −V toward its stop (each scene's help says which)",
     Slider(0.01, 0.99, 0.01),
 )
 LENGTH = Parameter("length", "L0", "L0", "length unit", SIZE, 1.0, "rest length L0", typical=(0.1, 10.0))

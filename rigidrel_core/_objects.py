@@ -128,6 +128,8 @@ class ObjectEvent:
     """Whether the object is in two parts from this event on (a broken string's loose ends)."""
     state: str = ""
     """What the object is from then on, as a title says it: ``"broken"``."""
+    meaning: str = ""
+    """What the event is, in words, as an events table gives it: ``"the barn's door closes"``."""
 
     def in_frame(self, *, frame: Frame = LAB) -> tuple[float, float]:
         """The event as ``(t', x')`` of ``frame`` (one boost)."""

@@ -135,6 +135,7 @@ CONSTANT_ACCELERATION = SceneDescription(
         EventDescription("T_F", "the front end stops accelerating", "Sec. 3, Eq. (9)"),
     ),
     presets=(ScenePreset("Fig. 1: acceleration to V = 0.6", FIG1_CONSTANT_ACCELERATION, overlay=True),),
+    meanings=MappingProxyType({"v": "final speed V (c = 1): the rod starts at rest and ends moving at +V"}),
     overlay=Overlay("impulsive (Fig. 1 dashed)", _fig1_impulsive),
     order=10,
 )
@@ -181,6 +182,7 @@ DECELERATION = SceneDescription(
         EventDescription("-T_F", "the right (trailing) end starts braking", "Sec. 3, Eq. (9) with t → −t"),
         EventDescription("-T_B", "the left (leading) end starts braking", "Sec. 3, Eq. (9) with t → −t"),
     ),
+    meanings=MappingProxyType({"v": "approach speed V (c = 1): the rod moves at −V until it brakes to rest"}),
     order=20,
 )
 

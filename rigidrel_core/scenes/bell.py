@@ -27,10 +27,34 @@ end is met on its hyperbola where ``r sinh(phi - theta) = s sinh theta`` and
 
 is that rear end's distance from ``C_1``; the string is ``D(theta) - r - l`` long: ``s - l`` at
 rest, ``gamma s - l`` once both ships coast (``theta = theta_V``), and increasing in between.
-Its strain is ``(D - r - l)/(s - l) - 1``. Given a breaking strain ``e_b``, it breaks where
-``D = r + l + (1 + e_b)(s - l)``: ``cosh theta = (D^2 - r^2 + s^2)/(2 D s)`` (the first form
-squared) or ``theta = theta_V - acosh((r + s gamma)/D)`` (the second); the break event is the
-string's rear end there, ``C_1 + R (sinh theta, cosh theta)``.
+
+**Its strain** is ``(D - r - l)/(s - l) - 1 = E/(s - l)``, with ``E = D - r - s`` the string's
+stretch, formed from products so that nothing cancels at small speeds or small strains
+(``cosh x - 1 = 2 sinh^2(x/2)``):
+
+.. math::
+    E = 2 s \sinh^2\frac{\theta}{2} + \frac{q^2}{\sqrt{r^2 + q^2} + r}
+    \quad (q = s \sinh\theta,\ \text{first form}),
+
+    E = \frac{2}{\cosh\delta}\Bigl(s \sinh\bigl(\theta_V - \tfrac{\theta}{2}\bigr) \sinh\frac{\theta}{2}
+        - r \sinh^2\frac{\delta}{2}\Bigr) \quad (\delta = \theta_V - \theta,\ \text{second form}),
+
+and ``(gamma - 1) s`` once both coast (``gamma - 1`` from the product ``(gamma V)^2/(gamma + 1)``).
+The strain is measured in the **rear ship's momentarily comoving frame** (the string's rear end's):
+that is the convention every number of the string depends on. Measured in the front ship's frame
+the same strain is reached at another event (later: the front ship accelerates after the rear
+ship in that frame's time), so the break event names its frame.
+
+**The break**, given a breaking strain ``e_b``, is where ``E = e_b (s - l)``: on the first form
+(``D = r + s + E``, its square solved for ``cosh theta``)
+
+.. math::
+    \cosh\theta - 1 = \frac{E (2 r + E)}{2 D s}, \quad
+    \theta = 2 \operatorname{asinh}\sqrt{\frac{E (2 r + E)}{4 D s}},
+
+or, where the front ship's rear already coasts, ``cosh delta - 1 = ((gamma - 1) s - E)/D``; the
+break event is the string's rear end there, ``C_1 + R (sinh theta, cosh theta)``, i.e. lab
+``(R sinh theta, l + 2 R sinh^2(theta/2))`` (Sec. 3, Eq. (4) about ``C_1``, ``R = 1/a + l``).
 
 **The comparison rod** spans the same two rear ends, rest length ``s``, with the same rear
 acceleration ``a``: Born-rigid, its front end accelerates less, ``a / (1 + a s)`` (Eq. (15)),
@@ -49,6 +73,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import _dd
+from .._budget import PhysicalSystem
 from .._build import ACCELERATION, SIZE, V, checked_scene, rigid_motion
 from .._description import (
     EventDescription,
@@ -60,12 +85,14 @@ from .._description import (
     SceneDescription,
     ScenePreset,
     Slider,
+    given,
 )
 from .._exact import REST, ExactVelocity
 from .._frame import LAB, Frame, check_frame
 from .._objects import MaterialWorldline, ObjectEvent, ObjectField, SceneObject
 from .._scene import EventSpec, Rod, Scene
 from .._validate import ParameterError, refuse_renamed
+from .._words import event_in_words
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -91,18 +118,26 @@ A_BACK = Parameter(
     Slider(0.05, 5.0, 0.05),
     typical=(0.05, 5.0),
 )
+
+
+def default_ship_length(separation: float) -> float:
+    """Each ship's rest length when none is given: a tenth of the separation, ``l = s/10``."""
+    return 0.1 * separation
+
+
 SHIP_LENGTH = Parameter(
     "ship_length",
     "l",
     "l (ship)",
     "length unit",
     SIZE,
-    0.1,
-    "rest length l of each ship (the constructor's default, none: a tenth of the separation)",
-    Slider(0.01, 0.9, 0.01),
-    typical=(0.01, 0.9),
+    None,
+    "rest length l of each ship (default none: a tenth of the separation, s/10)",
+    Slider(0.01, 1.0, 0.01),
+    typical=(0.01, 1.0),
     optional=True,
     constraint="ship_length < separation",
+    when_omitted=lambda p: default_ship_length(given(p, "separation")),
 )
 BREAKING_STRAIN = Parameter(
     "breaking_strain",
@@ -153,29 +188,43 @@ class BellString:
         return self.separation - self.ship_length
 
     @property
+    def final_stretch(self) -> float:
+        """How much longer the string ends than it starts, ``(gamma - 1) s`` (``gamma - 1`` a product:
+        exact at small ``V``)."""
+        return self.velocity.lorentz_factor_minus_one() * self.separation
+
+    @property
     def final(self) -> float:
-        """The string's rest length once both ships coast, ``gamma s - l``."""
-        return self.separation * self.velocity.lorentz_factor() - self.ship_length
+        """The string's rest length once both ships coast, ``gamma s - l = (s - l) + (gamma - 1) s``."""
+        return self.unstretched + self.final_stretch
 
     @property
     def final_strain(self) -> float:
-        """The strain once both ships coast: ``(gamma - 1) s / (s - l)``."""
-        return (self.velocity.lorentz_factor() - 1.0) * self.separation / self.unstretched
+        """The strain once both ships coast: ``(gamma - 1) s / (s - l)``, measured in the ships'
+        common rest frame after (the rear ship's comoving frame then)."""
+        return self.final_stretch / self.unstretched
 
-    def rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
-        """The string's rest length when the rear ship has lab rapidity ``theta`` (clipped to
-        ``[0, theta_V]``): ``D(theta) - r - l`` of the module docstring, each form without
-        cancellation (``sqrt(r^2 + q^2) - r = q^2 / (sqrt(r^2 + q^2) + r)``)."""
+    def stretch_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """The string's stretch ``E = L_string - (s - l)`` when the rear ship has lab rapidity ``theta``
+        (clipped to ``[0, theta_V]``), its rest length measured in the rear ship's comoving frame: each
+        form of the module docstring from products, without cancellation (``sinh^2`` for ``cosh - 1``,
+        ``sqrt(r^2 + q^2) - r = q^2 / (sqrt(r^2 + q^2) + r)``)."""
         theta_v = self.velocity.rapidity()
         theta = np.clip(np.asarray(rapidity, dtype=np.float64), 0.0, theta_v)
-        s, r, ship = self.separation, 1.0 / self.a_back, self.ship_length
+        s, r = self.separation, 1.0 / self.a_back
         q = s * np.sinh(theta)
-        root = np.hypot(r, q)
-        on_hyperbola = s * np.cosh(theta) + q * q / (root + r) - ship
-        half = np.sinh(0.5 * (theta_v - theta))
-        coasting = (s * math.cosh(theta_v) - 2.0 * r * half * half) / np.cosh(theta_v - theta) - ship
+        half = np.sinh(0.5 * theta)
+        on_hyperbola = 2.0 * s * half * half + q * q / (np.hypot(r, q) + r)
+        delta = theta_v - theta
+        half_delta = np.sinh(0.5 * delta)
+        coasting = 2.0 * (s * np.sinh(theta_v - 0.5 * theta) * half - r * half_delta * half_delta) / np.cosh(delta)
         phi = theta + np.arcsinh(q / r)
         return np.where(phi <= theta_v, on_hyperbola, coasting)
+
+    def rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """The string's rest length (in the rear ship's comoving frame) when the rear ship has lab
+        rapidity ``theta`` (clipped to ``[0, theta_V]``): ``D(theta) - r - l = (s - l) + E``."""
+        return self.unstretched + self.stretch_at_rapidity(rapidity)
 
     def rapidities(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """The rear ship's lab rapidity when the string's rear end is at frame time ``t'``: that end's
@@ -191,24 +240,40 @@ class BellString:
         return self.rest_length_at_rapidity(self.rapidities(t, frame=frame))
 
     def strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
-        """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
-        return self.rest_lengths(t, frame=frame) / self.unstretched - 1.0
+        """``L_string / (s - l) - 1 = E / (s - l)`` when the string's rear end is at frame time ``t'``,
+        the string's length measured in the rear ship's comoving frame (from the stretch ``E``: exact
+        however small the strain)."""
+        return self.stretch_at_rapidity(self.rapidities(t, frame=frame)) / self.unstretched
 
     @property
-    def break_event(self) -> tuple[float, float] | None:
-        """Lab ``(t, x)`` of the string's rear end when the strain reaches the breaking strain, or
-        ``None`` (no breaking strain, or one the string never reaches)."""
+    def break_rapidity(self) -> float | None:
+        """The rear ship's lab rapidity where the strain (in its comoving frame) reaches the breaking
+        strain, or ``None`` (no breaking strain, or one the string never reaches): the module
+        docstring's closed forms, from products."""
         e_b = self.breaking_strain
         if e_b is None or e_b > self.final_strain:
             return None
-        s, r, ship = self.separation, 1.0 / self.a_back, self.ship_length
+        s, r = self.separation, 1.0 / self.a_back
         theta_v = self.velocity.rapidity()
-        d = r + ship + (1.0 + e_b) * self.unstretched
-        theta = math.acosh(max(1.0, (d * d - r * r + s * s) / (2.0 * d * s)))
+        stretch = e_b * self.unstretched
+        d = r + s + stretch
+        theta = 2.0 * math.asinh(math.sqrt(stretch * (2.0 * r + stretch) / (4.0 * d * s)))
         if theta + math.asinh(s * math.sinh(theta) / r) > theta_v:  # the front ship's rear coasts there
-            theta = theta_v - math.acosh(max(1.0, (r + s * math.cosh(theta_v)) / d))
-        big_r = r + ship
-        return (big_r * math.sinh(theta), -r + big_r * math.cosh(theta))
+            rest = max(0.0, self.final_stretch - stretch)
+            theta = theta_v - 2.0 * math.asinh(math.sqrt(rest / (2.0 * d)))
+        return min(max(theta, 0.0), theta_v)
+
+    @property
+    def break_event(self) -> tuple[float, float] | None:
+        """Lab ``(t, x)`` of the string's rear end when the strain, measured in the rear ship's
+        comoving frame, reaches the breaking strain: ``(R sinh theta, l + 2 R sinh^2(theta/2))``
+        (Sec. 3, Eq. (4), ``R = 1/a + l``); ``None`` if it never does."""
+        theta = self.break_rapidity
+        if theta is None:
+            return None
+        big_r = 1.0 / self.a_back + self.ship_length
+        half = math.sinh(0.5 * theta)
+        return (big_r * math.sinh(theta), self.ship_length + 2.0 * big_r * half * half)
 
     def scene_object(self, front_end: MaterialWorldline) -> SceneObject:
         """The string as a scene object from its rear end to ``front_end`` (the front ship's rear end),
@@ -224,7 +289,11 @@ class BellString:
             percent=True,
         )
         lab = self.break_event
-        event = None if lab is None else ObjectEvent("break", lab, parts=True, state="broken")
+        meaning = (
+            "the string breaks: its strain, measured in the rear ship's comoving frame, reaches the breaking "
+            "strain (the event of its rear end)"
+        )
+        event = None if lab is None else ObjectEvent("break", lab, parts=True, state="broken", meaning=meaning)
         return SceneObject("string", ObjectKind.STRING, (self.rear_end, front_end), field=field, event=event)
 
 
@@ -236,6 +305,7 @@ class BellScene(Scene):
 
     separation: float = 1.0
     ship_length: float = 0.1
+    """Each ship's rest length ``l`` (the constructor's default: ``separation / 10``)."""
     a_back: float = 0.5
     """The proper acceleration ``a`` of each ship's rear (back) end, the paper's ``a'_B``."""
     breaking_strain: float | None = None
@@ -272,7 +342,8 @@ class BellScene(Scene):
         return self.string.rest_lengths(t, frame=frame)
 
     def string_strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
-        """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
+        """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``, ``L_string``
+        measured in the rear ship's momentarily comoving frame (:meth:`BellString.strains`)."""
         return self.string.strains(t, frame=frame)
 
     @property
@@ -306,25 +377,49 @@ class BellScene(Scene):
         the same as ``strain(t') >= e_b``); all ``False`` if it never breaks. Shape of ``t``."""
         return self.objects[0].parted(t, frame=frame)
 
+    @property
+    def systems(self) -> tuple[PhysicalSystem, ...]:
+        """Two physical systems, never summed: the two ships (and the massless string between them),
+        and the Born-rigid rod on the same two rear ends, which stands in their place (a comparison:
+        it occupies the ships' places, so it is an alternative to them, not a third body)."""
+        return (
+            PhysicalSystem("the two ships (and the string between them)", (REAR_SHIP, FRONT_SHIP), "drive", 0.0),
+            PhysicalSystem(
+                "the Born-rigid rod on the same rear ends (instead of the ships, never beside them)",
+                (COMPARISON_ROD,),
+                "drive",
+                0.0,
+            ),
+        )
+
     def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
-        """The string's story and the rear ends' distance in the ships' frame after, in words."""
+        """The rear ends' distance in the lab and in the ships' frame after, the string's strain and the
+        frame it is measured in (the rear ship's comoving frame), and its fate, the break event given
+        in ``frame`` (labelled)."""
         frame = check_frame(frame)
         g = self.rods[0].motion.velocity_final.lorentz_factor()
+        breaks = self.breaking_strain is not None and self.breaking_strain <= self.final_strain
         lines = [
             f"the rear ends stay {self.separation:.6g} apart in the lab; in the ships' frame after they are "
             f"gamma s = {g * self.separation:.6g} apart",
-            f"the string's rest length grows from s - l = {self.string_unstretched:.6g} to gamma s - l = "
-            f"{self.string_final:.6g} (strain {self.final_strain:.4g}); the Born-rigid rod keeps {self.separation:.6g}",
+            "the string's strain is its rest length, measured in the rear ship's momentarily comoving frame, "
+            f"over s - l, minus 1: that rest length grows from s - l = {self.string_unstretched:.6g} to gamma s - l "
+            f"= {self.string_final:.6g} (strain {self.final_strain:.4g}){' if the string holds' if breaks else ''}; "
+            f"the Born-rigid rod, an alternative to the ships, keeps its rest length {self.separation:.6g}",
         ]
         event = self.string_break_in(frame=frame)
         if self.breaking_strain is None:
             lines.append("no breaking strain given: the string stretches and holds")
         elif event is None:
-            lines.append(f"the string holds: its strain never reaches the breaking strain {self.breaking_strain:.4g}")
+            lines.append(
+                f"the string holds: its strain (in the rear ship's comoving frame) never reaches the breaking "
+                f"strain {self.breaking_strain:.4g}"
+            )
         else:
             lines.append(
-                f"the string breaks at strain {self.breaking_strain:.4g}: at its rear end, (t, x) = "
-                f"({event[0]:.6g}, {event[1]:.6g}) in this frame"
+                f"the string breaks where its strain, measured in the rear ship's comoving frame, reaches "
+                f"{self.breaking_strain:.4g}: at its rear end, {event_in_words(event, frame, 6)} (measured in the "
+                "front ship's frame, the same strain is reached at another event)"
             )
         return tuple(lines)
 
@@ -353,7 +448,8 @@ def bell_spaceships(
 ) -> BellScene:
     """Bell's spaceships (module docstring): rear ends at 0 and ``separation``, each with proper
     acceleration ``a_back`` from lab ``t = 0`` until it reaches ``v`` at ``T_B = gamma v / a``
-    (Sec. 3, Eq. (9)); ships of rest length ``ship_length`` (default ``0.1 separation``), Born-rigid
+    (Sec. 3, Eq. (9)); ships of rest length ``ship_length`` (default :func:`default_ship_length`,
+    ``separation / 10``: the registry, the command line and the app default to it too), Born-rigid
     (front ends at ``a / (1 + a l)``, Eq. (15)); a string from the rear ship's front to the front
     ship's rear, breaking at ``breaking_strain`` if given; and the Born-rigid comparison rod on
     ``[0, separation]`` with the same rear acceleration (its front end at ``a / (1 + a s)``).
@@ -365,7 +461,7 @@ def bell_spaceships(
     v = V.check(v)
     separation = SEPARATION.check(separation)
     a_back = A_BACK.check(a_back)
-    ship = 0.1 * separation if ship_length is None else SHIP_LENGTH.check(ship_length)
+    ship = default_ship_length(separation) if ship_length is None else SHIP_LENGTH.check(ship_length)
     if not ship < separation:  # names both: either may be the one to change
         raise ParameterError(
             "parameters", "such that ship_length < separation", {"separation": separation, "ship_length": ship}
@@ -416,7 +512,10 @@ def _figure_caption(scene: Scene) -> str:
     t_b = scene.events["T_B1"][0]
     broken = scene.string_break
     if broken is not None:
-        fate = f"at breaking strain {scene.breaking_strain:g} it breaks at (t, x) = ({broken[0]:.4g}, {broken[1]:.4g})"
+        fate = (
+            f"at breaking strain {scene.breaking_strain:g} (measured in the rear ship's comoving frame) it breaks "
+            f"at (lab t, x) = ({broken[0]:.4g}, {broken[1]:.4g})"
+        )
     else:
         fate = "it holds"
     return (
@@ -443,8 +542,10 @@ BELL_SPACESHIPS = SceneDescription(
     kind="bell-spaceships",
     title="Bell's spaceships",
     summary=(
-        "Two ships with the same proper acceleration stay a lab distance s apart; the string between "
-        "them stretches to γ s − l in their frame. A Born-rigid rod beside them does not stretch."
+        "Two ships whose rear ends have the same proper acceleration stay a lab distance s apart; the string "
+        "between them, its length measured in the rear ship's comoving frame, stretches towards γs − l (and "
+        "breaks first if its breaking strain is lower). A Born-rigid rod on the same rear ends, instead of "
+        "the ships, keeps its rest length."
     ),
     source="Sec. 1; Sec. 3",
     constructor=bell_spaceships,
@@ -477,6 +578,7 @@ BELL_SPACESHIPS = SceneDescription(
             {"v": 0.6, "separation": 1.0, "a_back": 0.5, "breaking_strain": 1.0},
         ),
     ),
+    meanings=MappingProxyType({"v": "final speed V (c = 1) of both ships, which start at rest"}),
     order=60,
     renamed=RENAMED,
 )

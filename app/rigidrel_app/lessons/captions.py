@@ -12,9 +12,12 @@ scene in the step's frame (c = 1):
                             ``length_before``, ``length_after``)
 ``{param[v]}``              a parameter's value
 ``{frame.beta}``            the step's frame velocity (``frame.name``)
-``{heat}``                  rest energy created (the budget's heat)
-``{verdict[1]}``            the core's first causal verdict in words
-``{note[1]}``               the scene's first note in words (the string's strain, the barn's verdicts)
+``{heat}``                  rest energy created (the budget's heat; of the scene's first
+                            physical system where its rods are alternatives)
+``{verdict[1]}``            the core's first causal verdict in words, its events in the step's
+                            frame, each labelled (``(lab t, x) = ...`` in the lab)
+``{note[1]}``               the scene's first note in words (the string's strain, the barn's
+                            verdicts), its events in the step's frame, labelled
 ==========================  ===========================================================
 
 A format spec follows a colon as usual: ``{event[T_1].t:.3g}``. Write ``{{`` and ``}}`` for braces.
@@ -105,7 +108,7 @@ def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
         )
         for k, rod in enumerate(scene.rods)
     }
-    verdicts: Sequence[str] = verdict_lines(scene)
+    verdicts: Sequence[str] = verdict_lines(scene, frame)
     return {
         "event": _Table("event", {k: EventValue(*v) for k, v in scene.events_in(frame=frame).items()}),
         "lab": _Table("lab", {k: EventValue(*v) for k, v in scene.events.items()}),
@@ -113,7 +116,7 @@ def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
         "rod": _Table("rod", rods),
         "param": _Table("param", {k: v for k, v in scene.parameters.items()}, rr.describe(scene).renamed),
         "frame": FrameValues(frame.beta, frame.label()),
-        "heat": scene.budget(frame=frame).heat,
+        "heat": scene.budget(frame=frame).systems[0].heat,
         "verdict": _Table("verdict", {str(k + 1): v for k, v in enumerate(verdicts)}),
         "note": _Table("note", {str(k + 1): n[:1].upper() + n[1:] for k, n in enumerate(scene.notes(frame=frame))}),
     }

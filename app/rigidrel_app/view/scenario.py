@@ -67,7 +67,7 @@ def format_scenario(settings: Settings, t: float | None = None) -> str:
     d = settings.description
     parts = [settings.scene]
     for p in d.parameters:
-        value = settings.value(p.name)
+        value = settings.chosen(p.name)  # "none" for an omitted one: it keeps following the others
         if p.slider is not None or value != p.default:
             parts += [flag(p), format_value(value)]
     if settings.frame == CUSTOM_FRAME:
@@ -195,7 +195,7 @@ def add_scene_options(parser: argparse.ArgumentParser, description: rr.SceneDesc
             type=parameter_value(p),
             default=argparse.SUPPRESS,
             metavar=p.symbol.replace("′", "'"),
-            help=f"{p.help}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
+            help=f"{description.help_for(p)}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
             + ("; 'none' omits it" if p.optional else ""),
         )
     for old, new in description.renamed.items():  # a line written before a parameter was renamed

@@ -433,21 +433,23 @@ def lane_states(d: Drawn, now: float, labels: bool = True) -> list[LaneState]:
 
 def signals_readout(resolved: Resolved) -> str:
     """The causal verdicts in words (:func:`.signals.verdict_lines`, from the core's
-    :meth:`~rigidrel_core.Scene.causal_verdicts`) as readout Markdown, or ``""`` while the
-    :attr:`~.layers.Layer.SIGNALS` layer is hidden."""
+    :meth:`~rigidrel_core.Scene.causal_verdicts`, their events the lab's and labelled so, as the
+    readout's) as readout Markdown, or ``""`` while the :attr:`~.layers.Layer.SIGNALS` layer is hidden."""
     if Layer.SIGNALS not in resolved.layers:
         return ""
     return "".join(f"  \n**Light** {line}" for line in verdict_lines(resolved.scene))
 
 
 def readout_markdown(resolved: Resolved) -> str:
-    """Parameters, final velocities and events in plain numbers, for the control panel."""
+    """Parameters, final velocities and events in plain numbers, for the control panel: every event,
+    in the numbers and in the words (notes, verdicts), the lab's, and labelled "(lab t, x)"."""
     scene, frame = resolved.scene, resolved.frame
     d = rr.describe(scene)
     params = [f"{d.parameter(k).symbol} = {format_value(v)}" for k, v in scene.parameters.items()]
     v = ", ".join(f"{r.name}: {signed(v, 4)}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
     ev = " · ".join(f"{k} ({_fixed(t)}, {_fixed(x)})" for k, (t, x) in scene.events.items())
-    notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame=frame))  # a paradox's verdicts, in words
+    # a paradox's verdicts in words, their events the lab's (labelled "(lab t, x)"), as the events above
+    notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame=_LAB))
     shown = frame_title(frame)
     if resolved.ride is not None:
         shown = f"the lower lane rides: {resolved.ride.label(scene)} ({RIDE_RULE}); the second diagram: {shown}"

@@ -184,9 +184,10 @@ def signal_items(signals: Signals, x_range: tuple[float, float], t_range: tuple[
     return tuple(items)
 
 
-def verdict_lines(scene: rr.Scene) -> tuple[str, ...]:
-    """The core's causal verdicts in words, one per rod end that changes away from the key event."""
-    verdicts = scene.causal_verdicts()
+def verdict_lines(scene: rr.Scene, frame: rr.Frame = rr.LAB) -> tuple[str, ...]:
+    """The core's causal verdicts in words, one per rod end that changes away from the key event, each
+    event named or given as ``(t, x)`` of ``frame`` and labelled so (``"(lab t, x) = ..."`` in the lab)."""
+    verdicts = scene.causal_verdicts(frame=frame)
     if verdicts:
         return tuple(v.text[:1].upper() + v.text[1:] for v in verdicts)
     return (
