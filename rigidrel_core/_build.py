@@ -4,7 +4,7 @@ double-double), the frame presets, the shared parameters and the check that a sc
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from types import MappingProxyType
 from typing import Literal
 
@@ -14,7 +14,7 @@ from ._description import SPEED, UNIT_CLOSED, Interval, Parameter, Slider
 from ._exact import ExactVelocity
 from ._frame import LAB, Frame
 from ._motion import RigidMotion
-from ._scene import Scene
+from ._scene import Rod, Scene
 from ._validate import ParameterError
 
 # ---------------------------------------------------------------------- shared parameters
@@ -159,21 +159,27 @@ def single_rod_frames(motion: RigidMotion) -> Mapping[str, Frame]:
 
 def checked_scene(scene: Scene) -> Scene:
     """Reject parameter combinations whose derived numbers leave the representable range."""
+    checked_rods(scene.rods, scene.parameters)
+    return scene
+
+
+def checked_rods(rods: Sequence[Rod], parameters: Mapping[str, float]) -> None:
+    """:func:`checked_scene` on a scene's rods before the scene is made (a constructor that derives
+    more from them, such as Bell's string, checks them first); ``parameters`` for the error."""
     bound = MAX_SCENE_COORDINATE
-    for r in scene.rods:
+    for r in rods:
         m = r.motion
         v_i, v_f = m.velocity_initial, m.velocity_final
         if not (v_i.gap > 0.0 and v_f.gap > 0.0):
             below_light = "such that every velocity stays below light speed"
-            raise ParameterError("parameters", below_light, dict(scene.parameters))
+            raise ParameterError("parameters", below_light, dict(parameters))
         # the lab events of the ends: the centre, the radii, the mass, radius times gamma v of the
         # faster velocity (the smaller gap); NaN fails too
         reach = max(m.radius_left, m.radius_right) * abs((v_i if v_i.gap < v_f.gap else v_f).proper_velocity())
         if not (abs(m.horizon_x) <= bound and m.radius_left <= bound and m.radius_right <= bound):
-            raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
+            raise ParameterError("parameters", _OUT_OF_RANGE, dict(parameters))
         if not (r.mass_after <= bound and reach <= bound):
-            raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
-    return scene
+            raise ParameterError("parameters", _OUT_OF_RANGE, dict(parameters))
 
 
 _OUT_OF_RANGE = f"such that every lab event and Rindler radius lies within {MAX_SCENE_COORDINATE:g} of the origin"

@@ -74,7 +74,7 @@ import numpy.typing as npt
 
 from .. import _dd
 from .._budget import PhysicalSystem
-from .._build import ACCELERATION, SIZE, V, checked_scene, rigid_motion
+from .._build import ACCELERATION, SIZE, V, checked_rods, checked_scene, rigid_motion
 from .._description import (
     EventDescription,
     Interval,
@@ -209,17 +209,28 @@ class BellString:
         (clipped to ``[0, theta_V]``), its rest length measured in the rear ship's comoving frame: each
         form of the module docstring from products, without cancellation (``sinh^2`` for ``cosh - 1``,
         ``sqrt(r^2 + q^2) - r = q^2 / (sqrt(r^2 + q^2) + r)``)."""
+        return self.separation * self._stretch_per_separation(rapidity)
+
+    def _stretch_per_separation(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """``E / s`` at the rear ship's lab rapidity (clipped to ``[0, theta_V]``): the module
+        docstring's forms with ``s = 1`` and ``r/s`` for ``r``, so that no product of two lengths
+        under- or overflows however small or large the scene."""
         theta_v = self.velocity.rapidity()
         theta = np.clip(np.asarray(rapidity, dtype=np.float64), 0.0, theta_v)
-        s, r = self.separation, 1.0 / self.a_back
-        q = s * np.sinh(theta)
+        r = self._radius_per_separation
+        q = np.sinh(theta)
         half = np.sinh(0.5 * theta)
-        on_hyperbola = 2.0 * s * half * half + q * q / (np.hypot(r, q) + r)
+        on_hyperbola = 2.0 * half * half + q * q / (np.hypot(r, q) + r)
         delta = theta_v - theta
         half_delta = np.sinh(0.5 * delta)
-        coasting = 2.0 * (s * np.sinh(theta_v - 0.5 * theta) * half - r * half_delta * half_delta) / np.cosh(delta)
+        coasting = 2.0 * (np.sinh(theta_v - 0.5 * theta) * half - r * half_delta * half_delta) / np.cosh(delta)
         phi = theta + np.arcsinh(q / r)
         return np.where(phi <= theta_v, on_hyperbola, coasting)
+
+    @property
+    def _radius_per_separation(self) -> float:
+        """``r / s = 1 / (a s)``: the rear ends' Rindler radius in separations."""
+        return (1.0 / self.a_back) / self.separation
 
     def rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
         """The string's rest length (in the rear ship's comoving frame) when the rear ship has lab
@@ -243,7 +254,8 @@ class BellString:
         """``L_string / (s - l) - 1 = E / (s - l)`` when the string's rear end is at frame time ``t'``,
         the string's length measured in the rear ship's comoving frame (from the stretch ``E``: exact
         however small the strain)."""
-        return self.stretch_at_rapidity(self.rapidities(t, frame=frame)) / self.unstretched
+        per_separation = self._stretch_per_separation(self.rapidities(t, frame=frame))
+        return per_separation * (self.separation / self.unstretched)
 
     @property
     def break_rapidity(self) -> float | None:
@@ -253,13 +265,14 @@ class BellString:
         e_b = self.breaking_strain
         if e_b is None or e_b > self.final_strain:
             return None
-        s, r = self.separation, 1.0 / self.a_back
+        # in separations (s = 1, r/s for r): no product of two lengths to under- or overflow
+        r = self._radius_per_separation
         theta_v = self.velocity.rapidity()
-        stretch = e_b * self.unstretched
-        d = r + s + stretch
-        theta = 2.0 * math.asinh(math.sqrt(stretch * (2.0 * r + stretch) / (4.0 * d * s)))
-        if theta + math.asinh(s * math.sinh(theta) / r) > theta_v:  # the front ship's rear coasts there
-            rest = max(0.0, self.final_stretch - stretch)
+        stretch = e_b * (self.unstretched / self.separation)
+        d = r + 1.0 + stretch
+        theta = 2.0 * math.asinh(math.sqrt((stretch / d) * ((2.0 * r + stretch) / 4.0)))
+        if theta + math.asinh(math.sinh(theta) / r) > theta_v:  # the front ship's rear coasts there
+            rest = max(0.0, self.velocity.lorentz_factor_minus_one() - stretch)
             theta = theta_v - 2.0 * math.asinh(math.sqrt(rest / (2.0 * d)))
         return min(max(theta, 0.0), theta_v)
 
@@ -462,9 +475,15 @@ def bell_spaceships(
     separation = SEPARATION.check(separation)
     a_back = A_BACK.check(a_back)
     ship = default_ship_length(separation) if ship_length is None else SHIP_LENGTH.check(ship_length)
-    if not ship < separation:  # names both: either may be the one to change
+    if not 0.0 < ship < separation:  # names both: either may be the one to change
         raise ParameterError(
-            "parameters", "such that ship_length < separation", {"separation": separation, "ship_length": ship}
+            "parameters", "such that 0 < ship_length < separation", {"separation": separation, "ship_length": ship}
+        )
+    if not 0.0 < (1.0 / a_back) / separation < math.inf:  # the string's forms take r/s = 1/(a s)
+        raise ParameterError(
+            "parameters",
+            "such that 1/(a_back separation) is a positive finite number",
+            {"separation": separation, "a_back": a_back},
         )
     strain = None if breaking_strain is None else BREAKING_STRAIN.check(breaking_strain)
     velocity = ExactVelocity.from_float(v)
@@ -474,15 +493,16 @@ def bell_spaceships(
         Rod("front ship", rigid_motion(REST, velocity, ship, rho, separation), mass, mass),
         Rod("Born-rigid rod", rigid_motion(REST, velocity, separation, rho, 0.0), mass, mass),
     )
-    (rear_rod, rear_f), (front_rod, front_f) = _STRING_ENDS
-    rear_end = MaterialWorldline(rear_rod, rear_f, rods[rear_rod].motion)
-    front_end = MaterialWorldline(front_rod, front_f, rods[front_rod].motion)
-    string = BellString(separation, ship, a_back, rods[REAR_SHIP].motion.velocity_final, rear_end, strain)
     params: dict[str, float] = {"v": v, "separation": separation, "a_back": a_back}
     if ship_length is not None:
         params["ship_length"] = ship
     if strain is not None:
         params["breaking_strain"] = strain
+    checked_rods(rods, params)  # before the string is derived from them
+    (rear_rod, rear_f), (front_rod, front_f) = _STRING_ENDS
+    rear_end = MaterialWorldline(rear_rod, rear_f, rods[rear_rod].motion)
+    front_end = MaterialWorldline(front_rod, front_f, rods[front_rod].motion)
+    string = BellString(separation, ship, a_back, rods[REAR_SHIP].motion.velocity_final, rear_end, strain)
     frames: Mapping[str, Frame] = MappingProxyType({"lab": LAB, "ships after": Frame(velocity, "ships after")})
     scene = BellScene(
         kind=BELL_SPACESHIPS.kind,
@@ -522,10 +542,11 @@ def _figure_caption(scene: Scene) -> str:
         f"Bell's spaceships: two ships (solid) whose rear ends have the same proper acceleration a = {a:g} start "
         f"{s:g} apart and reach V = {v.value:g} at the same lab time, T_B1 and T_B2 (t = γV/a = {t_b:.4g}): their "
         f"rear ends stay {s:g} apart in the lab and end γs = {v.lorentz_factor() * s:.4g} apart in the ships' frame. "
-        f"The string from the rear ship's front to the front ship's rear stretches from rest length "
-        f"{scene.string_unstretched:.4g} to {scene.string_final:.4g} (strain {scene.final_strain:.3g}): {fate}. "
-        f"The Born-rigid rod on the same rear ends (dashed) keeps its rest length {s:g}: its front accelerates "
-        "less, a/(1 + a s) (Eq. (15)), and reaches V only at T_Frod."
+        f"The string from the rear ship's front to the front ship's rear {'would stretch' if broken else 'stretches'} "
+        f"from rest length {scene.string_unstretched:.4g} to {scene.string_final:.4g} (strain "
+        f"{scene.final_strain:.3g}){' if it held' if broken else ''}: {fate}. The Born-rigid rod on the same rear "
+        f"ends (dashed, drawn instead of the ships) keeps its rest length {s:g}: its front accelerates less, "
+        "a/(1 + a s) (Eq. (15)), and reaches V only at T_Frod."
     )
 
 

@@ -330,16 +330,22 @@ def pole_barn(
     mass = MASS.check(mass)
     velocity = ExactVelocity.from_float(-v)
     d = moving_length(v, length) if barn_length is None else BARN_LENGTH.check(barn_length)
-    if door_time is None:
-        t_d = paradox_door_time(v, length, d)
-        if t_d not in _DOOR_TIMES:
-            raise ParameterError(
-                "parameters",
-                f"such that the door's default closing time (L0/γ − D)/V is within {MAX_SCENE_COORDINATE:g} of 0",
-                {"v": v, "length": length, "barn_length": d},
-            )
-    else:
-        t_d = DOOR_TIME.check(door_time)
+    t_d = None if door_time is None else DOOR_TIME.check(door_time)
+    # the events the verdicts and notes name, like every lab event of a scene, within 1e120 of the
+    # origin: the unstopped rear end's passing the door (the default door time) and the stop front's
+    # reaching the signal-limited pole's rear end, at L0/(gamma (c_s + V))
+    paradox = paradox_door_time(v, length, d)
+    stop_front = moving_length(v, length) / (c_s + v)
+    if paradox not in _DOOR_TIMES or (model != "born" and not stop_front <= MAX_SCENE_COORDINATE):
+        within = f"within {MAX_SCENE_COORDINATE:g} of the origin"
+        raise ParameterError(
+            "parameters",
+            f"such that the unstopped rear end passes the door, at lab t = (L0/γ − D)/V, and the stop front "
+            f"reaches the rear end, at lab t = L0/(γ (c_s + V)), {within}",
+            {"v": v, "length": length, "barn_length": d, "sound_speed": c_s},
+        )
+    if t_d is None:
+        t_d = paradox
     models: tuple[Literal["born", "signal"], ...] = ("born", "signal") if model == "both" else (model,)
     rods: list[Rod] = []
     specs: list[EventSpec] = []

@@ -1,0 +1,156 @@
+"""Words a student can trust: every coordinate pair in words is of the frame shown, or says it is the lab's.
+
+``rigidrel events`` in three frames (in-process): every ``(t, x) = (a, b)`` its words give (the causal
+verdicts, the paradoxes' notes) names the frame of the output and matches a row of that output's
+tables (events, light arrivals, the changes the verdicts name); in the lab each is labelled
+``(lab t, x)``. The app's readout labels every pair ``(lab t, x)`` and each matches a lab event; the
+built-in lesson's captions label every pair with the step's frame. No heading calls coordinates the
+same in every frame.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+from decimal import Decimal
+
+import numpy as np
+import pytest
+
+import rigidrel_core as rr
+from rigidrel_app.cli import main
+from rigidrel_app.lessons import lesson_from
+from rigidrel_app.view.layers import Layer
+from rigidrel_app.view.scene_view import readout_markdown
+from rigidrel_app.view.signals import signals_in
+from rigidrel_app.view.state import Settings, build
+
+NUMBER = r"-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?"
+#: A coordinate pair in words, with what precedes it: ``(lab t, x) = (1, 1)``, ``(t, x) = (0.75, 0.75) in
+#: the frame 'custom' (β = 0.3)``.
+PAIR = re.compile(
+    rf"(?P<label>\((?:lab )?t, x\) = )?\((?P<t>{NUMBER}), (?P<x>{NUMBER})\)"
+    rf"(?P<after> in the frame (?:'[^']*' \(β = {NUMBER}\)|β = {NUMBER}))?"
+)
+#: The headers of the tables whose rows (name ..., t, x) words may cite.
+TABLES = ("event ", "arrival ", "change ")
+
+
+def frame_words(frame: rr.Frame) -> str:
+    return (
+        f" in the frame '{frame.name}' (β = {frame.beta:.4g})" if frame.name else f" in the frame β = {frame.beta:.4g}"
+    )
+
+
+def tables_and_words(out: str) -> tuple[list[tuple[float, float]], str]:
+    """The ``(t, x)`` of every row of the event, arrival and change tables, and the words (the notes
+    and the verdicts, wrapped lines joined)."""
+    rows: list[tuple[float, float]] = []
+    words: list[str] = []
+    table = ""
+    for line in out.splitlines():
+        if not line.strip():
+            table = ""
+        elif line.startswith(TABLES):
+            table = line.split()[0]
+        elif table in ("event", "arrival"):  # name, then t and x in columns of 20 (the events' meaning after)
+            rows.append((float(line[12:32]), float(line[32:52])))
+        elif table == "change" and not line.startswith(" "):
+            t, x = line.split()[-2:]
+            rows.append((float(t), float(x)))
+        elif line.startswith(("note ", "  ")) and not line.startswith(("  heat", "  total", "  from", "  system")):
+            table = ""
+            words.append(line.strip().removeprefix("note").strip())
+    return rows, " ".join(words)
+
+
+def matches(pair: tuple[str, str], rows: list[tuple[float, float]]) -> bool:
+    """Whether a pair printed with a few significant digits is one of the rows (to half a unit of
+    its last printed digit)."""
+
+    def near(text: str, value: float) -> bool:
+        last = Decimal(text).as_tuple().exponent
+        assert isinstance(last, int)
+        return abs(float(text) - value) <= 0.5 * 10.0**last * (1 + 1e-9) + 1e-12 * abs(value)
+
+    return any(near(pair[0], row[0]) and near(pair[1], row[1]) for row in rows)
+
+
+def events_output(kind: str, frame: str, capsys: pytest.CaptureFixture[str]) -> str:
+    assert main(["events", kind, f"--frame={frame}"]) == 0
+    return capsys.readouterr().out
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_every_coordinate_in_words_is_a_row_of_the_frame_shown(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    """Three frames: the lab, a custom velocity and the scene's default preset."""
+    d = rr.describe(kind)
+    scene = d.build()
+    for frame_text in ("lab", "-0.45", d.default_frame):
+        out = events_output(kind, frame_text, capsys)
+        frame = scene.frame(frame_text) if frame_text in scene.frames else rr.Frame.from_velocity(-0.45, "custom")
+        lab = frame.same_velocity(rr.LAB)
+        assert "the same in every frame)" not in out  # no heading makes coordinates read as invariants
+        rows, words = tables_and_words(out)
+        assert rows, out
+        pairs = list(PAIR.finditer(words))
+        if scene.causal_verdicts():
+            assert pairs, words  # the verdicts give at least the first light's arrival
+        for m in pairs:
+            pair = (m["t"], m["x"])
+            assert m["label"] is not None, f"{m[0]!r}: a coordinate pair without its frame in {words!r}"
+            if lab:
+                assert m["label"] == "(lab t, x) = " and m["after"] is None, m[0]
+            else:
+                assert m["label"] == "(t, x) = " and m["after"] == frame_words(frame), m[0]
+            assert matches(pair, rows), f"{m[0]!r} is no row of the {frame_text} tables: {rows}"
+
+
+def lab_events(scene: rr.Scene) -> list[tuple[float, float]]:
+    """Every lab event the readout's words may give: named events, the objects' events, and each
+    verdict's start, stop and first light."""
+    events = list(scene.events.values())
+    events += [o.event.lab for o in scene.objects if o.event is not None]
+    for v in scene.causal_verdicts():
+        events += [v.start, v.stop] + ([v.arrival] if v.arrival is not None else [])
+    return events
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_the_readout_labels_every_pair_as_the_labs(kind: str) -> None:
+    """The readout's events are the lab's; its notes and verdicts say so for every pair, whatever the
+    frame chosen, and each pair is a lab event of the scene."""
+    d = rr.describe(kind)
+    settings = replace(Settings(kind), frame=d.default_frame).with_layers(frozenset(Layer))
+    r = build(settings)
+    text = readout_markdown(r)
+    words = text.split("**Clocks**", 1)[1]
+    events = lab_events(r.scene)
+    for m in PAIR.finditer(words):
+        assert m["label"] == "(lab t, x) = " and m["after"] is None, m[0]
+        assert matches((m["t"], m["x"]), events), m[0]
+
+
+def test_the_lesson_captions_label_every_pair_with_the_steps_frame() -> None:
+    """Every coordinate pair a caption gives is labelled: ``(lab t, x)`` in a lab step, the step's frame
+    by name in any other; and it is an event of that frame."""
+    lesson = lesson_from("paper")
+    checked = 0
+    for step in lesson.steps:
+        scene, frame = step.resolved.scene, step.resolved.frame
+        events = [frame @ np.array(e) for e in lab_events(scene)]
+        events += [np.array(leg) for leg in scene.events_in(frame=frame).values()]
+        rows = [(float(e[0]), float(e[1])) for e in events]
+        rows += [leg.arrival for leg in signals_in(scene, frame).legs]
+        text = " ".join(step.caption.split())
+        for m in PAIR.finditer(text):
+            if m["label"] is None and not re.search(r"= $", text[: m.start()]):
+                continue  # not a coordinate pair (Eq. (28)'s misprinted Lorentz factors)
+            assert m["label"] is not None, f"step {step.title!r}: {m[0]!r} has no frame"
+            if frame.same_velocity(rr.LAB):
+                assert m["label"] == "(lab t, x) = ", m[0]
+            else:
+                assert m["after"] == frame_words(frame), m[0]
+            assert matches((m["t"], m["x"]), rows), f"step {step.title!r}: {m[0]!r}"
+            checked += 1
+    assert checked >= 14  # every step that gives an event in words
