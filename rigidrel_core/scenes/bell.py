@@ -250,12 +250,15 @@ class BellString:
         the rear ship's momentarily comoving frame. Shape of ``t``."""
         return self.rest_length_at_rapidity(self.rapidities(t, frame=frame))
 
+    def strain_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """``L_string / (s - l) - 1 = E / (s - l)`` when the rear ship has lab rapidity ``theta``
+        (clipped to ``[0, theta_V]``), the string's length measured in the rear ship's comoving frame:
+        from the stretch ``E`` (module docstring), exact however small the strain."""
+        return self._stretch_per_separation(rapidity) * (self.separation / self.unstretched)
+
     def strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
-        """``L_string / (s - l) - 1 = E / (s - l)`` when the string's rear end is at frame time ``t'``,
-        the string's length measured in the rear ship's comoving frame (from the stretch ``E``: exact
-        however small the strain)."""
-        per_separation = self._stretch_per_separation(self.rapidities(t, frame=frame))
-        return per_separation * (self.separation / self.unstretched)
+        """:meth:`strain_at_rapidity` when the string's rear end is at frame time ``t'``."""
+        return self.strain_at_rapidity(self.rapidities(t, frame=frame))
 
     @property
     def break_rapidity(self) -> float | None:

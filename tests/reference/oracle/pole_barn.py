@@ -16,6 +16,7 @@ import mpmath as mp
 
 from . import (
     PARADOXES,
+    SMALL_SPEEDS,
     F,
     Mp,
     ReferenceCase,
@@ -82,6 +83,8 @@ POLE_BARN = SceneReference(
             PARADOXES + 12,
         ),
         ReferenceCase("pole-barn", {"v": 1 - 1e-9, "length": 1.0, "sound_speed": 0.3}, PARADOXES + 13),
+        ReferenceCase("pole-barn", {"v": 1e-6, "length": 1.0}, SMALL_SPEEDS + 11),
+        ReferenceCase("pole-barn", {"v": 1e-3, "length": 1.0, "sound_speed": 0.5}, SMALL_SPEEDS + 12),
     ),
 )
 
