@@ -7,7 +7,8 @@ With ``u = t - x`` and ``w = t + x`` a light ray moving in ``+x`` keeps its ``u`
 * inertial at rapidity ``theta'`` (frame rapidity) through a switch event ``(u_s, w_s)``:
   ``w - w_s = e^(2 theta') (u - u_s)``;
 * on its hyperbola of radius ``rho`` about the centre ``(u_C, w_C)``:
-  ``(u - u_C)(w - w_C) = -rho^2`` (paper Sec. 3, Eq. (4), written about the Rindler horizon).
+  ``(u - u_C)(w - w_C) = -rho^2`` (paper Sec. 3, Eq. (4), written about the centre event ``C``,
+  whose light cone ``u = u_C``, ``w = w_C`` is the Rindler horizon).
 
 A ray meets each piece once at most, at ``w = w_s + e^(2 theta') (u_0 - u_s)`` or
 ``w = w_C - rho^2 / (u_0 - u_C)`` (and the mirror forms for a ray in ``-x``): no root finding,

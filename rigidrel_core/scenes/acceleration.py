@@ -267,7 +267,10 @@ def velocity_change(
 VELOCITY_CHANGE = SceneDescription(
     kind="velocity-change",
     title="Any velocity change",
-    summary="A rod changes velocity from V_i to V_f Born-rigidly, at constant proper accelerations.",
+    summary=(
+        "A rod changes velocity from V_i to V_f Born-rigidly, each point at its own constant proper "
+        "acceleration (a′_F L0 = 1 or none: at once, an impulse)."
+    ),
     source="Secs. 3-4",
     constructor=velocity_change,
     parameters=(V_INITIAL, V_FINAL, LENGTH, A_FRONT_OR_IMPULSE, MASS),
