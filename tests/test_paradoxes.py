@@ -241,7 +241,8 @@ def test_pole_barn_events_command_prints_the_verdicts(capsys: pytest.CaptureFixt
     assert main(["events", "pole-barn", "--v", "0.8", "--length", "1", "--barn-length", "0.6", "--json"]) == 0
     notes = json.loads(capsys.readouterr().out)["notes"]
     assert notes[0].endswith("in the barn's frame the moving pole just fits")
-    assert notes[1].startswith("the door closes at (lab t, x) = (0, 0.6): the instant the paradox names")
+    assert notes[1].startswith("the door closes at lab t_d = 0, the instant the paradox names")
+    assert notes[1].endswith(": at (lab t, x) = (0, 0.6)")
     assert notes[2].startswith("the Born-rigid pole is never entirely inside the barn, in any frame")
     assert notes[3].startswith("the signal-limited pole (c_s = 1) is entirely inside the barn at some instant")
 

@@ -189,9 +189,11 @@ def budget_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
     budget = scene.budget(frame=frame)
     several = len(budget.systems) > 1
     head = "4-momentum in this frame (E, p)"
-    if several:
-        head += ", per physical system (alternatives: never summed)"
-    lines = [f"{head:<44}{'M':>12}{'E':>16}{'p':>16}"]
+    if several:  # the title on its own line, the columns' heads below it
+        lines = [f"{head}: one block per physical system (alternatives, never summed)"]
+        lines.append(f"{'':<44}{'M':>12}{'E':>16}{'p':>16}")
+    else:
+        lines = [f"{head:<44}{'M':>12}{'E':>16}{'p':>16}"]
     for system in budget.systems:
         indent = "    " if several else "  "
         if several:

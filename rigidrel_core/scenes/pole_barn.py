@@ -267,10 +267,11 @@ class PoleBarnScene(Scene):
             when = "the instant the paradox names, when the rear end, were the pole not stopped, would pass it"
         else:
             when = (
-                f"at lab t_d = {self.door_time:.4g}, not the paradox's instant (the rear end, were the pole "
-                f"not stopped, would pass the door at lab t = {paradox:.4g})"
+                "not the paradox's instant (the rear end, were the pole not stopped, would pass the door at "
+                f"lab t = {paradox:.4g})"
             )
-        door = f"the door closes at {event_in_words(self.door_closing_in(frame=frame), frame)}: {when}"
+        seen = event_in_words(self.door_closing_in(frame=frame), frame)
+        door = f"the door closes at lab t_d = {self.door_time:.4g}, {when}: at {seen}"
         return (barn, door, *(v.text for v in self.verdicts()))
 
     def verdicts(self) -> tuple[PoleVerdict, ...]:
