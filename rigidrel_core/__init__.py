@@ -13,6 +13,8 @@ viser or plotly.
 """
 
 from ._budget import FourMomentumBudget as FourMomentumBudget
+from ._budget import PhysicalSystem as PhysicalSystem
+from ._budget import SystemBudget as SystemBudget
 from ._description import EventDescription as EventDescription
 from ._description import Interval as Interval
 from ._description import Overlay as Overlay
@@ -87,6 +89,7 @@ __all__ = [
     "Overlay",
     "Parameter",
     "ParameterError",
+    "PhysicalSystem",
     "PlasticMotion",
     "PoleBarnScene",
     "PoleVerdict",
@@ -98,6 +101,7 @@ __all__ = [
     "SceneObject",
     "ScenePreset",
     "Slider",
+    "SystemBudget",
     "bell_spaceships",
     "build_scene",
     "causal_relation",

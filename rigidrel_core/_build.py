@@ -21,8 +21,13 @@ from ._validate import ParameterError
 #: Largest |coordinate| of a lab event or Rindler radius a scene may have; squares of
 #: anything a frame makes of it (times gamma <= 7e7) stay far inside float64.
 MAX_SCENE_COORDINATE = 1e120
-#: Lengths and masses: positive and at most 1e120 (so every product a frame forms stays finite).
-SIZE = Interval(0.0, MAX_SCENE_COORDINATE, hi_closed=True)
+#: Smallest length or mass a scene may have: a product or quotient of two sizes (a window's width,
+#: a drawing's scale, Bell's r/s) stays a normal float, never 0 (a subnormal rod once made a drawing
+#: of no width).
+MIN_SCENE_SIZE = 1.0 / MAX_SCENE_COORDINATE
+#: Lengths and masses: from 1e-120 to 1e120 (so every product a frame forms stays finite and none
+#: underflows).
+SIZE = Interval(MIN_SCENE_SIZE, MAX_SCENE_COORDINATE, lo_closed=True, hi_closed=True)
 #: Proper accelerations: a Rindler radius 1/a of at most 1e120.
 ACCELERATION = Interval(1.0 / MAX_SCENE_COORDINATE, math.inf)
 V = Parameter(

@@ -5,13 +5,15 @@ accepts (its domain's ends or the floats just inside them, its slider's and typi
 the smallest and largest floats, ``none`` for an optional one), in any frame from the lab to
 ``|beta| = 1 - 2**-53``. ``rigidrel events`` (in-process: the events, the budget of each physical
 system, the light signals, the verdicts and the notes, as text and as JSON) then either prints
-everything, finite, or refuses in one line on stderr with exit status 2, as for any bad argument.
+everything, finite, or refuses in one line on stderr with exit status 2, as for any bad argument;
+the app, given the same values as a scenario line, refuses it with a notice or draws it.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import shlex
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -19,6 +21,9 @@ from hypothesis import strategies as st
 
 import rigidrel_core as rr
 from rigidrel_app.cli import main
+from rigidrel_app.view.scenario import parse_scenario
+from rigidrel_app.view.scene_view import build_drawing, lane_states, readout_markdown
+from rigidrel_app.view.state import build
 
 SCENES = list(rr.scene_descriptions())
 #: Frames from the lab to the fastest a float64 velocity allows.
@@ -94,3 +99,21 @@ def test_a_door_time_beyond_the_scene_is_refused_in_one_line(value: str, capsys:
 def test_a_door_time_at_the_bound_prints(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["events", "pole-barn", "--door-time", "1e120", "--frame", "pole before"]) == 0
     assert "door closes" in capsys.readouterr().out
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(args=command())
+def test_the_app_draws_every_accepted_extreme(args: list[str]) -> None:
+    """The same edges as a scenario line: the app refuses the line with a notice, or draws it (the
+    diagrams, the lanes at the window's ends, the readout): no accepted value fails a later step."""
+    frame = next(a for a in args if a.startswith("--frame=")).split("=", 1)[1]
+    options = [a.replace("=", " ", 1) for a in args[2:] if a.startswith("--") and a not in ("--json",)]
+    line = " ".join([args[1], *(o for o in options if not o.startswith("--frame")), "--frame", shlex.quote(frame)])
+    try:
+        resolved = build(parse_scenario(line + " --layers all").settings)
+    except ValueError:  # a ScenarioError or the core's ParameterError: a notice in the app
+        return
+    drawn = build_drawing(resolved)
+    for now in drawn.window:
+        lane_states(drawn, now)
+    assert readout_markdown(resolved)

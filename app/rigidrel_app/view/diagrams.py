@@ -118,7 +118,7 @@ def equal_scale_ranges(
     half_x = 0.55 * (x[1] - x[0]) + 0.05
     half_t = 0.5 * (t[1] - t[0])
     ratio = area[0] / area[1]  # pixels wide per pixel high
-    if half_x / half_t > ratio:
+    if not half_t > 0.0 or half_x / half_t > ratio:  # a window of no width (a degenerate scene): from x
         half_t = half_x / ratio
     else:
         half_x = half_t * ratio

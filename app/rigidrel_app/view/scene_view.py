@@ -405,7 +405,10 @@ def _signals_end(end: float, start: float, signals: tuple[Signals, Signals] | No
 def _round_outward(t0: float, t1: float) -> tuple[float, float]:
     """The window widened to round numbers (about 1/20 of its length), for a tidy time slider."""
     step = nice_step(t1 - t0) * 50.0
-    return (math.floor(t0 / step) * step, math.ceil(t1 / step) * step)
+    lo, hi = (t0 / step, t1 / step) if step > 0.0 else (math.inf, math.inf)
+    if not (math.isfinite(lo) and math.isfinite(hi)):  # a window of subnormal width: kept as it is
+        return (t0, t1)
+    return (math.floor(lo) * step, math.ceil(hi) * step)
 
 
 def camera_pose(lane_x_range: tuple[float, float], aspect: float) -> cam.CameraPose:
