@@ -247,6 +247,31 @@ def test_pole_barn_events_command_prints_the_verdicts(capsys: pytest.CaptureFixt
     assert notes[3].startswith("the signal-limited pole (c_s = 1) is entirely inside the barn at some instant")
 
 
+@pytest.mark.parametrize("kind", ["pole-barn", "bell-spaceships"])
+def test_the_events_command_totals_each_physical_system_apart(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    """The two poles (alternatives) and Bell's comparison rod (drawn instead of the ships) never share a
+    total: the command line prints one labelled block per system, whose totals are its own rods', and
+    its JSON has no scene-wide total."""
+    from rigidrel_app.cli import main
+
+    assert main(["events", kind, "--frame=0.3"]) == 0
+    out = capsys.readouterr().out
+    assert "one block per physical system (alternatives, never summed)" in out
+    scene = rr.build_scene(kind)
+    budget = scene.budget(frame=rr.Frame.from_velocity(0.3))
+    blocks = out.split("  system: ")[1:]
+    assert [b.splitlines()[0] for b in blocks] == [s.name for s in budget.systems]
+    assert len(blocks) == 2
+    for block, system in zip(blocks, budget.systems, strict=True):
+        rows = {line[:44].strip(): line[44:].split() for line in block.splitlines()[1:] if line.startswith("    ")}
+        assert [float(v) for v in rows["total before"]] == pytest.approx(list(system.total_before), rel=1e-9)
+        rods = [scene.rods[i].name for i in system.system.rods]
+        assert {k.removesuffix(" before") for k in rows if k.endswith(" before") and k != "total before"} == set(rods)
+    assert main(["events", kind, "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)["budget"]
+    assert "total_before" not in report and len(report["systems"]) == 2
+
+
 # ---------------------------------------------------------------- the pole in the barn
 def test_pole_barn_checks_at_eight_tenths() -> None:
     """V = 0.8, L0 = 1, D = 0.6 (= L0/gamma): the Born-rigid pole's rear end never gets nearer the wall

@@ -5,7 +5,8 @@ verdicts, the paradoxes' notes) names the frame of the output and matches a row 
 tables (events, light arrivals, the changes the verdicts name); in the lab each is labelled
 ``(lab t, x)``. The app's readout labels every pair ``(lab t, x)`` and each matches a lab event; the
 built-in lesson's captions label every pair with the step's frame. No heading calls coordinates the
-same in every frame.
+same in every frame. Bell's strain names the frame it is measured in wherever it is shown; loose
+words the physics once had do not come back; V's help says whether it is a final or an approach speed.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 from decimal import Decimal
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -154,3 +156,82 @@ def test_the_lesson_captions_label_every_pair_with_the_steps_frame() -> None:
             assert matches((m["t"], m["x"]), rows), f"step {step.title!r}: {m[0]!r}"
             checked += 1
     assert checked >= 14  # every step that gives an event in words
+
+
+#: Bell's string's length, and so its strain and its break, is measured in this frame: a convention
+#: the numbers depend on (in the front ship's frame the same strain is reached at another event).
+STRAIN_FRAME = re.compile(r"rear ship's (?:momentarily )?comoving frame")
+
+
+def test_bells_strain_names_its_frame_wherever_it_is_shown(capsys: pytest.CaptureFixture[str]) -> None:
+    """The string's strain and break event are shown with the frame they are measured in: the notes
+    (command line and readout), the break event's meaning, the summary, the print figure's caption and
+    the lesson's caption."""
+    scene = rr.bell_spaceships(0.6, 1.0, 0.5, breaking_strain=0.25)
+    strain_notes = [n for n in scene.notes() if "strain" in n]
+    assert len(strain_notes) == 2 and all(STRAIN_FRAME.search(n) for n in strain_notes), strain_notes
+    assert "front ship's frame" in strain_notes[-1]  # the convention matters: another event there
+    (string,) = scene.objects
+    assert string.event is not None and STRAIN_FRAME.search(string.event.meaning)
+    d = rr.describe("bell-spaceships")
+    assert STRAIN_FRAME.search(d.summary)
+    (figure,) = [p.figure for p in d.presets if p.figure is not None]
+    assert STRAIN_FRAME.search(figure.caption(d.build(**next(p for p in d.presets if p.figure).values)))
+    readout = readout_markdown(build(Settings("bell-spaceships")))
+    assert len(STRAIN_FRAME.findall(readout)) >= 2, readout
+    out = events_output("bell-spaceships", "ships after", capsys)
+    assert len(STRAIN_FRAME.findall(" ".join(out.split()))) >= 3, out  # the break's meaning and two notes
+    (step,) = [s for s in lesson_from("paper").steps if s.resolved.scene.kind == "bell-spaceships"]
+    assert len(STRAIN_FRAME.findall(" ".join(step.caption.split()))) >= 3, step.caption
+
+
+#: Words the physics once had wrong or loose, and why: none may come back in the README, the docs,
+#: the lesson, a scene's summary or help, or what the core writes.
+LOOSE_WORDS = {
+    r"kick is the (?:\(?Rindler\)? )?horizon": "the kick is an event; the horizon is its light cone",
+    r"centre event \(the Rindler horizon\)": "the centre event is the horizon's vertex, not the horizon",
+    r"from the wall told": "light from the wall before the contact does reach the back end in time",
+    r"respond to the wall": "the rod stops at the wall; what no frame sees is a response to the contact",
+    r"in faster frames after": "only frames with β < −V see the braking start after the contact",
+    r"happens before the contact": "the back end's change starts before the contact and ends at its lab time",
+    r"two meanings of rigid": "the signal-limited pole is compressed: not rigid in any sense",
+    r"\(the same in every frame\)": "coordinates differ between frames; only the verdicts' kinds do not",
+}
+
+
+def texts_a_student_reads() -> dict[str, str]:
+    """The README, every docs page, the lesson files, and every scene's summary, help and notes."""
+    root = Path(__file__).parent.parent
+    pages = [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "app").rglob("lessons/*.toml"))]
+    texts = {str(p.relative_to(root)): p.read_text() for p in pages}
+    for kind, d in rr.scene_descriptions().items():
+        scene = d.build()
+        helps = [d.help_for(p) for p in d.parameters]
+        texts[kind] = "\n".join([d.summary, *helps, *scene.notes(), *(v.text for v in scene.causal_verdicts())])
+    return texts
+
+
+def test_no_loose_words_come_back() -> None:
+    for name, text in texts_a_student_reads().items():
+        flat = " ".join(text.split())
+        for pattern, why in LOOSE_WORDS.items():
+            found = re.search(pattern, flat, re.IGNORECASE)
+            assert found is None, f"{name}: {found[0]!r}: {why}"
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_v_says_whether_it_is_a_final_or_an_approach_speed(kind: str) -> None:
+    """Where a scene has one speed V, its help says what V is there: the final speed of a rod that starts
+    at rest, or the approach speed of one that moves at −V toward its stop."""
+    d = rr.describe(kind)
+    if "v" not in d.parameter_map:
+        return
+    scene = d.build()
+    before = {r.motion.velocity_initial.value for r in scene.rods}
+    after = {r.motion.velocity_final.value for r in scene.rods}
+    v = scene.parameters["v"]
+    help_text = d.help_for(d.parameter("v"))
+    if before == {0.0}:
+        assert v in after and help_text.startswith("final speed V"), help_text
+    else:
+        assert before == {-v} and help_text.startswith("approach speed V") and "−V" in help_text, help_text
