@@ -130,7 +130,12 @@ class DoorOrder(StrEnum):
     AFTER = "after the rear end passes the door"
     SAME_EVENT = "as the rear end passes the door (the same event)"
     BEFORE = "before the rear end passes the door"
-    NEVER_PASSES = "while the rear end never passes the door"
+    NEVER_PASSES = "but the rear end never passes the door"
+
+    def words(self) -> str:
+        """``"the door closes after the rear end passes the door"``; ``"the door closes, but the rear end
+        never passes the door"``."""
+        return f"the door closes, {self.value}" if self is DoorOrder.NEVER_PASSES else f"the door closes {self.value}"
 
 
 @dataclass(frozen=True)
@@ -293,12 +298,12 @@ class PoleBarnScene(Scene):
                     f"lab x = {x_rest:.4g}, beyond the door at lab x = {d:.4g}"
                 )
             if door is DoorOrder.NEVER_PASSES:
-                text = f"{where}; the door closes {door.value}."
+                text = f"{where}; {door.words()}."
             elif door is DoorOrder.SAME_EVENT:
-                text = f"{where}; the door closes {door.value}, in every frame."
+                text = f"{where}; {door.words()}, in every frame."
             else:  # both events at the barn's x = D: a timelike (or null) separation
                 text = (
-                    f"{where}; the door closes {door.value}, in every frame: both events happen at lab "
+                    f"{where}; {door.words()}, in every frame: both events happen at lab "
                     f"x = {d:.4g}, so no frame reverses them."
                 )
             out.append(PoleVerdict(i, model, x_rest, inside, door, text))
@@ -423,10 +428,10 @@ def _figure_caption(scene: Scene) -> str:
         f"back wall at x = 0, door dashed at x = {d:g}, closing at t = {t_d:g}. Solid: the Born-rigid stop (Sec. 5, "
         f"ε = 0): its rear end starts braking at T_1, before the contact in the lab, and comes to rest at "
         f"x = {born.rear_rest_x:.4g}; it {'is' if born.inside else 'is never'} entirely inside the barn, in any frame, "
-        f"and the door closes {born.door.value}. Dashed: the signal-limited stop (c_s = {scene.sound_speed:g}): every "
+        f"and {born.door.words()}. Dashed: the signal-limited stop (c_s = {scene.sound_speed:g}): every "
         f"point moves on until the stop front from the contact reaches it; the rear end stops at T_s, "
         f"x = {signal.rear_rest_x:.4g}; it {'is' if signal.inside else 'is never'} entirely inside, in any frame, and "
-        f"the door closes {signal.door.value}."
+        f"{signal.door.words()}."
     )
 
 
