@@ -66,7 +66,7 @@ Case = Callable[[], object]
 
 def load_baseline(revision: str, into: Path) -> ModuleType | None:
     """``rigidrel_core`` as of ``revision``, imported as :data:`BASELINE_NAME` (None without git)."""
-    root = Path(__file__).resolve().parents[2]
+    root = Path(__file__).resolve().parents[1]  # the checkout: benchmarks/ is top-level
     try:
         archive = subprocess.run(
             ["git", "-C", str(root), "archive", revision, "rigidrel_core"], capture_output=True, check=True
@@ -229,7 +229,7 @@ def main() -> None:
         print(f"{'median us per call':44s} {'before':>9s} {'after':>9s} {'ratio':>7s}")
         for name, t in after.items():
             b = before.get(name)
-            was, ratio = (f"{b:9.2f}", f"{b / t:6.1f}x") if b is not None else ("-", "")
+            was, ratio = (f"{b:9.2f}", f"{b / t:6.2f}x") if b is not None else ("-", "")
             print(f"{name:44s} {was:>9s} {t:9.2f} {ratio:>7s}")
     if args.profile:
         print(profile_collision(), file=sys.stderr if args.json else sys.stdout)

@@ -1,17 +1,31 @@
 """Load benchmark: many lightweight clients playing at once (not a test: machines are noisy).
 
-    python -m benchmarks.load --clients 30 --seconds 60 --fps 30
+    python -m benchmarks.load --clients 30 --seconds 60             # 30 tabs, each playing its own scene
+    python -m benchmarks.load --follow --clients 200 --seconds 20   # a hall following a lesson's leader
     python -m benchmarks.load --find-max --seconds 20 --fps 30      # the most clients held at 25 fps
+    python -m benchmarks.load --clients 30 --server-drawn           # tabs without a runtime (the server draws)
     python -m benchmarks.load --churn 10 --clients 30               # 10 rounds of 30 joining and leaving
     python -m benchmarks.load --flood --clients 20 --seconds 5      # one more sends 10,000 values a second
     python -m benchmarks.load --soak 20                             # a 20-minute lecture (30 clients)
 
 The server runs in this process with its animation loop at ``--fps``; the clients (viser's
 websocket protocol, tests/viser_client.py, no browsers) run in another process so they do
-not share the server's interpreter. Every client is a tab playing Fig. 3's collision. The
-final line reports: clients, the minimum (and median) delivered frames per second per client,
-errors (client disconnects plus server-side errors), and the growth of the server's resident
-memory between the start and the end of the measurement.
+not share the server's interpreter. Each client does what a browser's playback runtime does
+with the server's messages (:class:`tests.viser_client.RuntimeClient`): it says it is ready,
+keeps the timelines' blocks and plays them on its own clock. A frame is a new picture the tab
+shows, counted at the client: a timeline frame whose time has come and whose block has arrived
+(at most one per 60 Hz refresh), or a still frame the server sent. Every client is a tab playing
+Fig. 3's collision. The final line reports: clients, the minimum (and median) frames per second
+per client, errors (client disconnects plus server-side errors), the server's CPU share (of one
+core) and resident memory, and the received bytes per second per client.
+
+``--follow``: the app gives the built-in lesson with ``--follow``; the first tab leads, and the
+others follow its step (its first step autoplays). Over the window: every tab's frames per second,
+the server's CPU and memory; then the leader presses Next step, and the line reports the time
+until each follower shows the new step's first picture (p50, max), and how many did within 30 s.
+
+``--server-drawn``: the clients have no runtime (as before the browser played): the server draws
+and sends every tab its frames, and a frame is one that moved the rods.
 
 ``--churn``: ``--stay`` clients play throughout while each round ``--clients`` more join (they
 choose Fig. 3 and press Play themselves), play ``--round-seconds`` and leave: in turn with a
@@ -44,6 +58,7 @@ from tests.viser_client import (
     SWARM_WARMUP,
     churn_clients,
     client_swarm,
+    hall_clients,
     read_line,
     swarm_result,
     tell,
@@ -92,6 +107,61 @@ def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
         "kbytes_per_second_per_client": statistics.median(s["bytes"] for s in stats) / seconds / 1e3,
         "seconds": seconds,
     }
+
+
+def hall(clients: int, seconds: float, fps: float, follow: bool) -> dict[str, float]:
+    """``clients`` tabs with the playback runtime, each playing Fig. 3 or, with ``follow``, following
+    the built-in lesson's leader (module docstring)."""
+    from rigidrel_app.lessons import lesson_from
+
+    lesson = lesson_from("paper") if follow else None
+    with (
+        App(port=0, animation_hz=fps, lesson=lesson, follow=follow) as app,
+        hall_clients(app.url, clients, seconds, follow) as child,
+    ):
+        read_line(child, timeout=600.0)  # joined
+        wait_until(lambda: len(app.sessions) >= clients, timeout=120.0)
+        tell(child, "measure")
+        read_line(child, timeout=120.0)  # the window opens
+        mem0, cpu0, wall0 = rss_mb(), time.process_time(), time.perf_counter()
+        measured = read_line(child, timeout=seconds + 120.0)
+        mem1, cpu1, wall1 = rss_mb(), time.process_time(), time.perf_counter()
+        tell(child, "step")
+        stepped = read_line(child, timeout=120.0)
+        server_errors = app.errors
+        timelines = app.timelines.recorded
+    fps_each = measured["fps"]
+    latencies = [x for x in stepped["latencies"] if x is not None]
+    return {
+        "clients": float(clients),
+        "min_fps": min(fps_each),
+        "median_fps": statistics.median(fps_each),
+        "errors": float(len(measured["errors"]) + server_errors),
+        "server_cpu_percent": 100.0 * (cpu1 - cpu0) / (wall1 - wall0),
+        "rss_mb": max(mem0, mem1),
+        "kbytes_per_second_per_client": statistics.median(measured["bytes"]) / (wall1 - wall0) / 1e3,
+        "timelines_made": float(timelines),
+        "step_p50_s": statistics.median(latencies) if latencies else float("nan"),
+        "step_max_s": max(latencies) if latencies else float("nan"),
+        "step_reached": float(len(latencies)),
+        "followers": float(len(stepped["latencies"])),
+        "seconds": seconds,
+    }
+
+
+def hall_line(r: dict[str, float], follow: bool) -> str:
+    line = (
+        f"{'follow' if follow else 'independent'} clients={r['clients']:.0f} min_fps={r['min_fps']:.1f} "
+        f"median_fps={r['median_fps']:.1f} server_cpu_percent={r['server_cpu_percent']:.1f} rss_mb={r['rss_mb']:.0f} "
+        f"kbytes_per_s_per_client={r['kbytes_per_second_per_client']:.1f} timelines_made={r['timelines_made']:.0f} "
+        f"errors={r['errors']:.0f}"
+    )
+    if follow:
+        line += (
+            f" step_p50_s={r['step_p50_s']:.3f} step_max_s={r['step_max_s']:.3f} "
+            f"step_reached={r['step_reached']:.0f}/{r['followers']:.0f}"
+        )
+    return line
 
 
 def live_sessions() -> int:
@@ -255,6 +325,8 @@ def main() -> None:
         metavar="RATE",
         help="one more client sends RATE values per second (default 10,000; 0: sends none)",
     )
+    parser.add_argument("--follow", action="store_true", help="the tabs follow a lesson's leader")
+    parser.add_argument("--server-drawn", action="store_true", help="tabs without a runtime: the server draws")
     lecture = f"a long lecture: {SOAK_STAY + SOAK_RECONNECTING} clients, {SOAK_RECONNECTING} reconnecting every minute"
     parser.add_argument("--soak", type=int, metavar="MINUTES", help=lecture)
     args = parser.parse_args()
@@ -270,18 +342,28 @@ def main() -> None:
         rows = churn(args.churn, args.clients, args.stay, args.round_seconds, args.fps)
         print(churn_summary(rows), flush=True)
         return
+    if args.follow:
+        print(hall_line(hall(args.clients, args.seconds, args.fps, True), True), flush=True)
+        return
+
+    def measure(n: int) -> dict[str, float]:
+        return run(n, args.seconds, args.fps) if args.server_drawn else hall(n, args.seconds, args.fps, False)
+
+    def report(r: dict[str, float]) -> str:
+        return line(r) if args.server_drawn else hall_line(r, False)
+
     if not args.find_max:
-        print(line(run(args.clients, args.seconds, args.fps)), flush=True)
+        print(report(measure(args.clients)), flush=True)
         return
     best = 0
     n = 10
     while True:
-        r = run(n, args.seconds, args.fps)
-        print(line(r), file=sys.stderr, flush=True)
+        r = measure(n)
+        print(report(r), file=sys.stderr, flush=True)
         if r["min_fps"] < TARGET_FPS or r["errors"] > 0:
             break
         best = n
-        n += 5
+        n += 5 if args.server_drawn else 25
     print(f"max_clients_at_{TARGET_FPS:.0f}_fps={best} (fps={args.fps:g}, seconds={args.seconds:g})", flush=True)
 
 

@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
 import msgspec
+import numpy as np
 import viser
 import websockets
 import zstandard
@@ -494,3 +495,201 @@ def flood_main(url: str, n: int, seconds: float, rate: float) -> None:
         }
 
     print(json.dumps(asyncio.run(main())), flush=True)
+
+
+# ---------------------------------------------------------------------------- a tab's runtime, emulated
+#: A display's refresh rate: a runtime shows at most one new picture per refresh.
+DISPLAY_HZ = 60.0
+
+
+@dataclass
+class _Played:
+    """One stretch of a runtime's playing: from frame ``frame`` at ``start`` (monotonic s) at ``speed``."""
+
+    timeline: str
+    start: float
+    frame: float
+    speed: float
+    loop: bool
+    end: float = float("inf")
+
+
+class RuntimeClient(LightClient):
+    """A light client that does what a browser's playback runtime (``live/assets/runtime.js``) does
+    with the server's messages: it says it is ready, keeps each timeline's blocks as they arrive,
+    and plays, pauses and seeks as told; it draws nothing. :meth:`pictures_between` counts the new
+    pictures the runtime would show in a stretch of time: one per frame of the timeline whose time
+    has come (no more than one per refresh of a :data:`DISPLAY_HZ` display) and whose block has
+    arrived, and one per still frame the server sent."""
+
+    def __init__(self, url: str, read: bool = True) -> None:
+        super().__init__(url, read)
+        self.report_uuid: str | None = None
+        self.frame_rate = 40.0
+        self.blocks: dict[str, dict[int, float]] = {}
+        """Each timeline's blocks: first frame -> when it arrived."""
+        self.totals: dict[str, int] = {}
+        self.played: list[_Played] = []
+        self.still_frames: list[float] = []
+        """When each still frame (a ``frame`` action: a state's first picture) arrived."""
+        self._speed, self._loop = 1.0, True
+
+    def _consume(self, data: bytes) -> None:
+        now = time.monotonic()
+        for m in decode_frame(data):
+            kind = m.get("type")
+            if kind == "RunJavascriptMessage" and "__rigidrelPlayback" in m.get("source", ""):
+                source, mark = m["source"], "const CONFIG = "
+                start = source.index(mark) + len(mark)
+                config = json.loads(source[start : source.index(";\n", start)])
+                self.report_uuid, self.frame_rate = config["report"], float(config["frameRate"])
+                self._report({"event": "ready"})
+            elif kind == "PlaybackMessage":
+                self._act(m["action"], m["timeline"], float(m["value"]), now)
+        super()._consume(data)
+
+    def _report(self, what: dict[str, Any]) -> None:
+        if self.report_uuid is not None:
+            self._answer({"type": "GuiUpdateMessage", "uuid": self.report_uuid, "updates": {"value": json.dumps(what)}})
+
+    def _stop_playing(self, now: float) -> float | None:
+        if self.played and self.played[-1].end == float("inf"):
+            p = self.played[-1]
+            p.end = now
+            return self._frame_at(p, now)
+        return None
+
+    def _frame_at(self, p: _Played, t: float) -> float:
+        f = p.frame + (t - p.start) * self.frame_rate * p.speed
+        last = self.totals.get(p.timeline, 1) - 1
+        return f % last if p.loop and last > 0 else min(f, float(last))
+
+    def _act(self, action: str, timeline: str, value: float, now: float) -> None:
+        from rigidrel_app.live.timeline import TIMELINE_FRAMES
+
+        if action == "block":
+            self.blocks.setdefault(timeline, {})[int(value)] = now
+            self.totals[timeline] = TIMELINE_FRAMES
+        elif action == "frame":
+            self._stop_playing(now)
+            self.still_frames.append(now)
+        elif action == "speed":
+            self._speed = value
+        elif action == "loop":
+            self._loop = value != 0.0
+        elif action == "play":
+            self._stop_playing(now)
+            self.played.append(_Played(timeline, now, value, self._speed, self._loop))
+        elif action in ("pause", "seek", "stop"):
+            frame = self._stop_playing(now)
+            if action == "pause" and frame is not None:
+                self._report({"event": "paused", "timeline": timeline, "frame": round(frame)})
+
+    def pictures_between(self, t0: float, t1: float) -> int:
+        """New pictures shown in ``[t0, t1)`` (class docstring)."""
+        from rigidrel_app.live.timeline import FRAMES_PER_BLOCK
+
+        shown = sum(1 for t in self.still_frames if t0 <= t < t1)
+        for p in self.played:
+            a, b = max(t0, p.start), min(t1, p.end)
+            blocks = self.blocks.get(p.timeline, {})
+            last = None
+            for t in np.arange(a, b, 1.0 / DISPLAY_HZ):
+                k = int(self._frame_at(p, float(t)))
+                arrived = blocks.get(k - k % FRAMES_PER_BLOCK)
+                if arrived is not None and arrived <= t and k != last:
+                    shown += 1
+                    last = k
+        return shown
+
+
+async def _ready_runtime(client: RuntimeClient, timeout: float = 120.0) -> None:
+    """Wait until the tab's runtime has said it is ready and its first picture has come."""
+    t0 = time.monotonic()
+    while client.report_uuid is None or not client.still_frames:
+        if time.monotonic() - t0 > timeout:
+            raise TimeoutError("no runtime script or first picture")
+        await asyncio.sleep(0.05)
+
+
+async def _hall(url: str, n: int, seconds: float, follow: bool) -> None:
+    """The hall (see :func:`hall_main`)."""
+    clients = [RuntimeClient(url) for _ in range(n)]
+    readers = []
+    # the first to connect leads (--follow); the others join together
+    await clients[0].connect()
+    readers.append(asyncio.ensure_future(clients[0].run(3600)))
+    await _ready_runtime(clients[0])
+    for batch in range(1, n, 25):  # as a hall comes in: a few dozen at a time
+        part = clients[batch : batch + 25]
+        await asyncio.gather(*(c.connect() for c in part))
+        readers += [asyncio.ensure_future(c.run(3600)) for c in part]
+    await asyncio.gather(*(_ready_runtime(c) for c in clients))
+    if not follow:  # each tab chooses Fig. 3 and plays it
+        for c in clients:
+            while "Play" not in c.gui_uuid or "Paper figure" not in c.gui_uuid:
+                await asyncio.sleep(0.02)
+            await c.set_value("Paper figure", CHURN_FIGURE)
+            await c.set_value("Play", True)
+    print(json.dumps({"phase": "joined", "clients": n}), flush=True)
+    loop = asyncio.get_running_loop()
+    await loop.run_in_executor(None, sys.stdin.readline)  # "measure"
+    await asyncio.sleep(SWARM_WARMUP)
+    t0 = time.monotonic()
+    print(json.dumps({"phase": "window"}), flush=True)
+    await asyncio.sleep(seconds)
+    t1 = time.monotonic()
+    fps = [c.pictures_between(t0, t1) / (t1 - t0) for c in clients]
+    errors = [e for c in clients for e in c.stats.errors]
+    print(
+        json.dumps({"phase": "measured", "fps": fps, "errors": errors, "bytes": [c.stats.bytes for c in clients]}),
+        flush=True,
+    )
+    latencies: list[float | None] = []
+    if follow:
+        await loop.run_in_executor(None, sys.stdin.readline)  # "step"
+        followers = clients[1:]
+        before = [len(c.still_frames) for c in followers]
+        t_step = time.monotonic()
+        await clients[0].set_value("Next step", True)
+        deadline = t_step + 30.0
+        while time.monotonic() < deadline and any(
+            len(c.still_frames) == b for c, b in zip(followers, before, strict=True)
+        ):
+            await asyncio.sleep(0.01)
+        latencies = [
+            (c.still_frames[b] - t_step) if len(c.still_frames) > b else None
+            for c, b in zip(followers, before, strict=True)
+        ]
+    print(json.dumps({"phase": "stepped", "latencies": latencies}), flush=True)
+    for c in clients:
+        c.stop()
+    await asyncio.gather(*(c.close() for c in clients), return_exceptions=True)
+    for r in readers:
+        r.cancel()
+
+
+def hall_main(url: str, n: int, seconds: float, follow: bool) -> None:
+    """In a child process: ``n`` tabs with the playback runtime (:class:`RuntimeClient`) join; with
+    ``follow`` they follow the first (a lesson's leader), else each plays Fig. 3. Prints JSON lines:
+    ``joined``; after a ``measure`` line on stdin and :data:`SWARM_WARMUP` s, ``window`` at the
+    start of the measured window and ``measured`` after ``seconds`` (each tab's new pictures per
+    second, errors, bytes); with ``follow``, after a ``step`` line the leader presses Next step and
+    ``stepped`` says when each follower's first picture of the new step came (s after the press, or
+    null if not within 30 s)."""
+    asyncio.run(_hall(url, n, seconds, follow))
+
+
+@contextlib.contextmanager
+def hall_clients(url: str, n: int, seconds: float, follow: bool) -> Iterator[subprocess.Popen[str]]:
+    """Start ``hall_main`` in another interpreter; killed on the way out whatever happened."""
+    code = f"from tests.viser_client import hall_main; hall_main({url!r}, {n}, {seconds}, {follow})"
+    child = subprocess.Popen(
+        [sys.executable, "-c", code], cwd=ROOT, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True
+    )
+    try:
+        yield child
+    finally:
+        if child.poll() is None:
+            child.kill()
+        child.communicate(timeout=30)

@@ -5,10 +5,14 @@ slider-to-redraw time. A script, not a test (numbers vary with the machine's loa
 
 * bytes: websocket payload the page receives from connecting until the server has sent its first
   complete drawing and 1 s has passed quietly.
-* fps: ``requestAnimationFrame`` ticks in which the page's JavaScript handled at least one new
-  websocket message (a new picture to show; viser's websocket worker hands them over), per
-  second, over ``--seconds`` of playback of the paper's Fig. 3 after ``--warm`` seconds of it, at
-  the given viewport (the diagrams visible). Also the page's animation frames per second and messages per second.
+* fps: new pictures the tab shows per second, over ``--seconds`` of playback of the paper's Fig. 3
+  after ``--warm`` seconds of it, at the given viewport (the diagrams visible): the frames the
+  page's playback runtime applies (each a new picture, drawn in the next animation frame); for a
+  page without the runtime, ``requestAnimationFrame`` ticks in which the page handled at least one
+  new websocket message. Also the page's animation frames per second and messages per second.
+* ``--pairs N``: N runs of the app, each right after a run of a bare viser page in the same browser
+  (one moving box and 16 moving labels sent at the app's 40 frames a second, counted the same way:
+  :func:`benchmarks.browser.measure_floor.measure`), and the medians and their ratio.
 * slider-to-redraw: from the Enter that submits V = 0.85 in its box to the last websocket message
   of the redraw the page handles (messages closer than 60 ms counted as one burst); median of 5
   (with the panel shown, after a presenter-mode run).
@@ -25,44 +29,20 @@ import statistics
 import time
 from typing import Any
 
+from benchmarks.browser.measure_floor import COUNT_FRAMES
+from benchmarks.browser.measure_floor import measure as measure_bare
 from rigidrel_app.live.server import App
 from rigidrel_app.view.state import presets
 from rigidrel_app.view.vocabulary import Shade
 from tests.browser.conftest import launch_chromium
 from tests.viser_client import wait_until
 
-COUNT_FRAMES = """
-window.__msgs = 0; window.__frames = 0; window.__ticks = 0; window.__times = [];
-(() => {
-  const Orig = window.WebSocket;
-  function Counted(...args) {
-    const ws = new Orig(...args);
-    ws.addEventListener('message', (e) => {
-      window.__msgs++; window.__times.push(performance.now());
-    });
-    return ws;
-  }
-  Counted.prototype = Orig.prototype;
-  Object.assign(Counted, {CONNECTING: 0, OPEN: 1, CLOSING: 2, CLOSED: 3});
-  window.WebSocket = Counted;
-  // viser reads its websocket in a worker: count what the worker hands the page
-  const OrigWorker = window.Worker;
-  function CountedWorker(...args) {
-    const w = new OrigWorker(...args);
-    w.addEventListener('message', () => { window.__msgs++; window.__times.push(performance.now()); });
-    return w;
-  }
-  CountedWorker.prototype = OrigWorker.prototype;
-  window.Worker = CountedWorker;
-  let last = 0;
-  function loop() {
-    window.__ticks++;
-    if (window.__msgs !== last) { window.__frames++; last = window.__msgs; }
-    requestAnimationFrame(loop);
-  }
-  requestAnimationFrame(loop);
-})();
-"""
+#: The pictures shown so far (the runtime's applied frames, else the frames with a new message),
+#: animation frames and messages.
+COUNTS = """() => [
+  window.__rigidrelPlayback && window.__rigidrelPlayback.stats.frames ? window.__rigidrelPlayback.stats.frames
+    : window.__frames,
+  window.__ticks, window.__msgs]"""
 
 
 def _width(session: Any) -> float:
@@ -109,9 +89,9 @@ def measure(
                 smallest = min([t.px for t in session.renderer.still.texts] + [layout.theme.text_px])
                 session.toggle_play()
             time.sleep(warm)  # warm (viser's adaptive resolution steps every 2.5 s at most)
-            f0, k0, m0 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")
+            f0, k0, m0 = page.evaluate(COUNTS)
             time.sleep(seconds)
-            f1, k1, m1 = page.evaluate("() => [window.__frames, window.__ticks, window.__msgs]")
+            f1, k1, m1 = page.evaluate(COUNTS)
             with session.lock:
                 session.toggle_play()
             if presenter:
@@ -156,9 +136,21 @@ def main() -> None:
     parser.add_argument("--theme", choices=("light", "dark"), default="light", help="the tab's theme")
     parser.add_argument("--presenter", action="store_true", help="play in presenter mode (key F)")
     parser.add_argument("--warm", type=float, default=2.0, help="seconds of playback before counting")
+    parser.add_argument("--pairs", type=int, default=0, help="alternate with a bare viser page N times")
     args = parser.parse_args()
-    r = measure(args.width, args.height, args.seconds, args.theme, args.presenter, args.warm)
-    print(" ".join(f"{k}={v:.1f}" for k, v in r.items()), flush=True)
+    if not args.pairs:
+        r = measure(args.width, args.height, args.seconds, args.theme, args.presenter, args.warm)
+        print(" ".join(f"{k}={v:.1f}" for k, v in r.items()), flush=True)
+        return
+    app_fps, bare_fps = [], []
+    for k in range(args.pairs):
+        bare = measure_bare(16, args.width, args.height, args.seconds, moving=True)
+        app = measure(args.width, args.height, args.seconds, args.theme, args.presenter, args.warm)
+        bare_fps.append(bare["fps"])
+        app_fps.append(app["fps"])
+        print(f"pair {k + 1}: bare_fps={bare['fps']:.1f} app_fps={app['fps']:.1f}", flush=True)
+    b, a = statistics.median(bare_fps), statistics.median(app_fps)
+    print(f"{args.width}x{args.height} median bare_fps={b:.1f} app_fps={a:.1f} ratio={a / b:.2f}", flush=True)
 
 
 if __name__ == "__main__":

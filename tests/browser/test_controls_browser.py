@@ -82,7 +82,7 @@ def test_space_plays_and_pauses_and_the_clock_readout_follows(tab: AppPage, shot
     wait_until(lambda: tab.session.playback.playing)
     wait_until(lambda: clock.input_value() != start)  # the time readout runs
     press(tab, " ")
-    wait_until(lambda: not tab.session.playback.playing)
+    wait_until(lambda: tab.session.playback_settled)  # paused where the browser's frame was
     stopped = tab.session.playback.now
     # paused: the readout shows the clock the rods stopped at, and stays there
     wait_until(lambda: float(clock.input_value()) == pytest.approx(stopped, abs=1e-6))

@@ -31,14 +31,13 @@ from typing import Literal
 
 import numpy as np
 import viser
-from viser import _messages  # pyright: ignore[reportPrivateUsage]
-from viser._image_encoding import cv2_imencode_with_fallback  # pyright: ignore[reportPrivateUsage]
 
 from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
 from ..view.lanes import Box, LanePicture, LaneState, ruler_text, segments_array
 from ..view.layout import CanvasLayout, lane_title_text
 from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, lightness_flipped, plain_text, rgb
+from ._viser import encode_png, make_image, set_image_png, write_label
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
 _CUBE_FACES = np.array(
@@ -315,28 +314,6 @@ def label_scale(px: float) -> float:
     return px / LABEL_EM_PX
 
 
-def _write_label(
-    scene: viser.SceneApi,
-    handle: viser.LabelHandle,
-    changes: dict[str, object],
-    position: tuple[float, float, float] | None,
-) -> None:
-    """Assign a label's changed props (``changes``: text, font_screen_scale, anchor) in one
-    update message, and its new ``position`` (or ``None``) in another. The handle's own setters
-    send one message per prop, each cast and compared first (about 20 us each, against 10 us
-    per message here); this is their write path (the handle's state, then the message), minus
-    those checks: the caller sends only what changed, in the types viser keeps."""
-    impl = handle._impl  # pyright: ignore[reportPrivateUsage]
-    queue = scene._queue_scene_message  # pyright: ignore[reportPrivateUsage]
-    if changes:
-        for name, value in changes.items():
-            setattr(impl.props, name, value)
-        queue(_messages.SceneNodeUpdateMessage(impl.name, changes))
-    if position is not None:
-        impl.position[:] = position
-        queue(_messages.SetPositionMessage(impl.name, position))
-
-
 class _Texts:
     """Label nodes under one name prefix, grown when needed and never re-added (changing a label
     costs ~60 us, creating one ~500 us); only what changed is assigned; unused ones are hidden."""
@@ -383,10 +360,14 @@ class _Texts:
             changes["font_screen_scale"] = scale
         if old is None or old[3] != anchor:
             changes["anchor"] = anchor
-        _write_label(self._scene, h, changes, position if old is None or old[1] != position else None)
+        write_label(self._scene, h, changes, position if old is None or old[1] != position else None)
         if old is None:
             h.visible = True
         self._shown[k] = state
+
+    @property
+    def handles(self) -> tuple[viser.LabelHandle, ...]:
+        return tuple(self._handles)
 
     def hide(self, k: int) -> None:
         if k < len(self._handles) and self._shown[k] is not None:
@@ -445,6 +426,10 @@ class _LineNodes:
         self.points = np.zeros((0, 2, 3), dtype=np.float32)
         """Every segment shown, ``(n, 2, 3)`` world (page) coordinates, as last sent."""
 
+    @property
+    def handles(self) -> tuple[viser.LineSegmentsHandle, ...]:
+        return tuple(self._nodes.values())
+
     def show(self, lines: Sequence[PageLines]) -> None:
         groups: dict[tuple[float, int], list[PageLines]] = {}
         for ln in lines:
@@ -491,6 +476,10 @@ class _DotNodes:
         self.shade: Shade = "light"
         """The page's ground; colours are sent for it (:func:`sent_for_shade`)."""
 
+    @property
+    def handles(self) -> tuple[viser.PointCloudHandle, ...]:
+        return tuple(self._nodes.values())
+
     def show(self, dots: Sequence[PageDots]) -> None:
         groups: dict[tuple[str, float, int], list[PageDots]] = {}
         for d in dots:
@@ -530,6 +519,10 @@ class _Ruler:
         self._texts = _Texts(scene, f"{prefix}/n")
         self._origin: float | None = None
         self._slots: dict[int, int] = {}
+
+    @property
+    def handles(self) -> tuple[viser.SceneNodeHandle, ...]:
+        return (*self._texts.handles, self._node)
 
     def show(self, lane: LanePicture, x0: float, x1: float, z: float, px: float) -> None:
         if self._origin != lane.origin_px:
@@ -578,7 +571,7 @@ def flat_still(image: np.ndarray, scale: float, shade: Shade, version: int) -> F
         return None
     r0, r1, c0, c1 = int(rows[0]), int(rows[-1]) + 1, int(cols[0]), int(cols[-1]) + 1
     cut = sent_for_shade(image[r0:r1, c0:c1], shade)
-    png = cv2_imencode_with_fallback("png", np.ascontiguousarray(cut), None, "rgb")
+    png = encode_png(cut)
     rows_all = image.shape[0]
     box = (c0 / scale, (rows_all - r1) / scale, c1 / scale, (rows_all - r0) / scale)
     return FlatStill(png, box, version, scale)
@@ -586,10 +579,16 @@ def flat_still(image: np.ndarray, scale: float, shade: Shade, version: int) -> F
 
 class PageRenderer:
     """Draws a :class:`~rigidrel_app.view.layout.CanvasLayout` page into one client's scene: the
-    diagrams' static pictures once per scene, the lanes and the moving parts every frame."""
+    diagrams' static pictures once per scene, the lanes and the moving parts every frame.
 
-    def __init__(self, scene: viser.SceneApi) -> None:
+    The moving parts (the lanes' boxes, lines, clocks, titles and rulers, the diagrams' now-lines
+    and markers) go into ``moving`` if given: a scene of their own, which a tab's playback runtime
+    draws from (recorded, :class:`~rigidrel_app.backends._viser.RecordingScene`), not the client's."""
+
+    def __init__(self, scene: viser.SceneApi, moving: viser.SceneApi | None = None) -> None:
         self._scene = scene
+        moving = scene if moving is None else moving
+        self._moving_scene = moving
         scene.configure_environment_map(None)
         scene.configure_default_lights(enabled=False)
         scene.add_light_ambient("/page/ambient", intensity=AMBIENT)
@@ -614,19 +613,46 @@ class PageRenderer:
         self._static_dots = _DotNodes(scene, "/page/static_dots")
         self.static_texts = _Texts(scene, "/page/text")
         self.axis_names = _Texts(scene, "/page/axis_name")
-        self._moving_lines = _LineNodes(scene, "/page/moving")
-        self._moving_dots = _DotNodes(scene, "/page/moving_dots")
+        self.layout: CanvasLayout | None = None
+        self._make_moving(moving)
+
+    def _make_moving(self, moving: viser.SceneApi) -> None:
+        self._moving_scene = moving
+        self._moving_lines = _LineNodes(moving, "/page/moving")
+        self._moving_dots = _DotNodes(moving, "/page/moving_dots")
         # in front of the rods' boxes (which reach to y = -_PAGE_ROD_DEPTH / 2): the ticks, clock
         # hands and light pulses are never inside a box, where the depth test may hide them
-        self._lane_lines = _LineNodes(scene, "/page/lanes", _LANE_LINES_Y)
-        self.titles = _Texts(scene, "/page/title")
-        self._rulers = (_Ruler(scene, "/page/ruler0"), _Ruler(scene, "/page/ruler1"))
+        self._lane_lines = _LineNodes(moving, "/page/lanes", _LANE_LINES_Y)
+        self.titles = _Texts(moving, "/page/title")
+        self._rulers = (_Ruler(moving, "/page/ruler0"), _Ruler(moving, "/page/ruler1"))
         self._boxes: viser.BatchedMeshHandle | None = None
         self._box_capacity = 0
         self._box_state: tuple[bytes, bytes, tuple[str, ...], Shade] | None = None
         self._dials: viser.BatchedMeshHandle | None = None
-        self._dial_key: tuple[int, float, Shade] | None = None
-        self.layout: CanvasLayout | None = None
+        self._dial_capacity = 0
+        self._dial_key: tuple[float, Shade] | None = None
+        if self.layout is not None:
+            for nodes in (self._moving_lines, self._moving_dots, self._lane_lines):
+                nodes.shade = self.layout.theme.shade
+
+    def draw_moving_into(self, moving: viser.SceneApi) -> None:
+        """Draw the moving parts into ``moving`` from now on (a tab's runtime takes them over: the
+        nodes drawn so far into the client's scene are removed, and made again where they go)."""
+        for handle in self._moving_handles():
+            handle.remove()
+        self._make_moving(moving)
+
+    def _moving_handles(self) -> list[viser.SceneNodeHandle]:
+        handles: list[viser.SceneNodeHandle] = [
+            *self._moving_lines.handles,
+            *self._moving_dots.handles,
+            *self._lane_lines.handles,
+            *self.titles.handles,
+        ]
+        for ruler in self._rulers:
+            handles += [*ruler.handles]
+        handles += [h for h in (self._boxes, self._dials) if h is not None]
+        return handles
 
     def moving_points(self) -> np.ndarray:
         """The diagrams' moving segments (now-lines) as last sent, ``(n, 2, 3)`` page coordinates."""
@@ -682,16 +708,9 @@ class PageRenderer:
         # the image's plane faces the camera (on -y), its first row at the top (+z)
         wxyz = (np.sqrt(0.5), -np.sqrt(0.5), 0.0, 0.0)
         if self._flat is None:
-            message = _messages.ImageMessage(
-                name="/page/flat",
-                props=_messages.ImageProps(
-                    _format="png", _data=flat.png, render_width=w, render_height=h,
-                    cast_shadow=False, receive_shadow=False, scale=1.0,
-                ),
-            )  # fmt: skip
-            self._flat = viser.ImageHandle._make(self._scene, message, "/page/flat", wxyz, position, True)  # pyright: ignore[reportPrivateUsage]
+            self._flat = make_image(self._scene, "/page/flat", flat.png, (w, h), wxyz, position)
         else:
-            self._flat._data = flat.png  # pyright: ignore[reportPrivateUsage]
+            set_image_png(self._flat, flat.png)
             if (self._flat.render_width, self._flat.render_height) != (w, h):
                 self._flat.render_width, self._flat.render_height = w, h
             if tuple(self._flat.position) != position:
@@ -736,12 +755,23 @@ class PageRenderer:
         self._moving_lines.show(moving.lines)
         self._moving_dots.show(moving.dots)
 
-    def _update_boxes(self, boxes: Sequence[Box], shade: Shade) -> None:
-        if len(boxes) > self._box_capacity:
-            self._box_capacity = max(len(boxes), 4)
+    def reserve(self, boxes: int, dials: int) -> None:
+        """Room for this many boxes and clock dials, made before any frame needs it (a recording
+        reserves what its frames will show, so that no frame makes or removes a node)."""
+        if boxes > self._box_capacity:
+            self._box_capacity = boxes
             if self._boxes is not None:
                 self._boxes.remove()
                 self._boxes = None
+        if dials > self._dial_capacity:
+            self._dial_capacity = dials
+            if self._dials is not None:
+                self._dials.remove()
+                self._dials = None
+
+    def _update_boxes(self, boxes: Sequence[Box], shade: Shade) -> None:
+        if len(boxes) > self._box_capacity:
+            self.reserve(max(len(boxes), 4), self._dial_capacity)
         n = self._box_capacity
         positions = np.tile(np.array((0.0, 1e5, 0.0), dtype=np.float32), (n, 1))
         scales = np.full((n, 3), 1e-6, dtype=np.float32)
@@ -751,7 +781,7 @@ class PageRenderer:
         names = tuple(b.color for b in boxes) + ("#ffffff",) * (n - len(boxes))
         colors = _instance_colors(names, shade)
         if self._boxes is None:
-            self._boxes = self._scene.add_batched_meshes_simple(
+            self._boxes = self._moving_scene.add_batched_meshes_simple(
                 "/page/boxes", _CUBE_VERTICES, _CUBE_FACES,
                 batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (n, 1)),
                 batched_positions=positions, batched_scales=scales, batched_colors=colors,
@@ -770,16 +800,18 @@ class PageRenderer:
 
     def _update_dials(self, centres: np.ndarray, radius: float, shade: Shade) -> None:
         n = len(centres)
-        positions = np.zeros((max(n, 1), 3), dtype=np.float32)
-        positions[:, 1] = 1e5  # none: one instance out of sight
+        if n > self._dial_capacity:
+            self.reserve(self._box_capacity, max(n, 4))
+        positions = np.zeros((max(self._dial_capacity, 1), 3), dtype=np.float32)
+        positions[:, 1] = 1e5  # the unused instances out of sight
         if n:
-            positions[:, 0], positions[:, 1], positions[:, 2] = centres[:, 0], _LANE_LINES_Y + 0.5, centres[:, 1]
-        key = (len(positions), radius, shade)
+            positions[:n, 0], positions[:n, 1], positions[:n, 2] = centres[:, 0], _LANE_LINES_Y + 0.5, centres[:, 1]
+        key = (radius, shade)
         if self._dials is None or key != self._dial_key:
             if self._dials is not None:
                 self._dials.remove()
             vertices, faces = _ring(radius, width=0.2)
-            self._dials = self._scene.add_batched_meshes_simple(
+            self._dials = self._moving_scene.add_batched_meshes_simple(
                 "/page/dials", vertices, faces,
                 batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32), (len(positions), 1)),
                 batched_positions=positions, batched_colors=np.array(linear_rgb(INK, shade), dtype=np.uint8),

@@ -20,6 +20,8 @@ from dataclasses import dataclass
 
 import viser
 
+from ..backends._viser import handle_uuid
+
 #: ``(width * SIZE_BASE + height) * RATIO_BASE + ratio``: one number carries the two sides (each
 #: below ``SIZE_BASE`` px) and the pixel ratio in thousandths (below ``RATIO_BASE``), under 2**53.
 SIZE_BASE = 65536
@@ -89,6 +91,6 @@ def add_canvas_report(gui: viser.GuiApi) -> viser.GuiNumberHandle[float]:
     panel = gui.add_panel()
     with panel.add_tab(LABEL):
         box = gui.add_number(LABEL, 0.0, step=1.0)
-        gui.add_html(script(box._impl.uuid))  # viser has no public id of a handle
+        gui.add_html(script(handle_uuid(box)))
     panel.float(x=-1, y=-1, width=1, height=1)
     return box

@@ -24,6 +24,7 @@ import viser
 
 import rigidrel_core as rr
 
+from ..backends._viser import handle_uuid
 from ..backends.viser import DARK_CANVAS_CSS
 from ..lessons import Lesson
 from ..lessons.tour import LAYER_LABELS, step_labels
@@ -252,7 +253,7 @@ def hidden_box_css(controls: Sequence[NumberControl]) -> str:
     ``log10`` of the number; the control's own box shows the number) and keep the row tall enough
     for the slider's marks. viser draws a slider's box as the next sibling of the slider element,
     whose id is the handle's id."""
-    ids = [c.slider._impl.uuid for c in controls if c.box is not None]  # viser has no public id
+    ids = [handle_uuid(c.slider) for c in controls if c.box is not None]
     if not ids:
         return ""
     boxes = ", ".join(f'[id="{i}"] + .mantine-NumberInput-root' for i in ids)
@@ -265,7 +266,7 @@ def locked_box_css(controls: Sequence[NumberControl]) -> str:
     """Style rules that grey out and take the pointer from the browser's own number box beside each
     slider of ``controls`` (viser disables a slider but not its box; the server refuses a value
     typed there anyway). A log slider's own text box is a handle, disabled as such."""
-    ids = [c.slider._impl.uuid for c in controls]  # viser has no public id
+    ids = [handle_uuid(c.slider) for c in controls]
     if not ids:
         return ""
     boxes = ", ".join(f'[id="{i}"] + .mantine-NumberInput-root' for i in ids)

@@ -16,9 +16,8 @@ from importlib import metadata
 from typing import Any
 
 import viser
-from viser import _messages as viser_messages
-from viser.infra import WebsockClientConnection
 
+from ..backends._viser import CONTROL_MESSAGE_TYPES, WebsockClientConnection, live_websocket, on_connection
 from ..lessons import Lesson
 from ..view.scenario import Scenario
 from ..view.state import Settings
@@ -27,6 +26,7 @@ from .controls import configure_panel
 from .greeting import greet
 from .playback import FRAME_RATE
 from .session import Session
+from .timeline import TimelineCache
 
 #: 3-D lanes are redrawn at this rate per client while playing (>= 30 fps delivered, with margin).
 ANIMATION_HZ = FRAME_RATE
@@ -79,14 +79,7 @@ class MessageBudget:
 
 #: Messages that ask the session to act (each may redraw the scene), as their type names appear
 #: in the msgpack a client sends (the budget is spent before a message is decoded).
-_CONTROL_TYPE_NAMES = tuple(
-    cls.__name__.encode()
-    for cls in (
-        viser_messages.GuiUpdateMessage,
-        viser_messages.CommandTriggerMessage,
-        viser_messages.GuiButtonHoldMessage,
-    )
-)
+_CONTROL_TYPE_NAMES = CONTROL_MESSAGE_TYPES
 
 
 class _Bucket:
@@ -185,6 +178,8 @@ class App:
         configure_panel(self.server.gui, shade)
         loop = self.server.get_event_loop()
         loop.call_soon_threadsafe(loop.set_exception_handler, self._loop_exception)
+        self.timelines = TimelineCache()
+        """The playback timelines the tabs' browsers play, made once per state and canvas, shared."""
         self.sessions: dict[int, Session] = {}
         self._departed: set[int] = set()
         """Clients that left while their session was being built."""
@@ -194,7 +189,7 @@ class App:
         self.server.on_client_disconnect(self._disconnect)
         # every message a client sends passes its budget as it is read off the socket, before viser
         # decodes it (a connection that never became a tab, sending no camera message, included)
-        self.server._websock_server.on_client_connect(self._guard)
+        on_connection(self.server, self._guard)
         self._loop = threading.Thread(target=self._animate, name="rigidrel-animation", daemon=True)
         self._loop.start()
 
@@ -216,7 +211,7 @@ class App:
         """Give a new connection a :class:`MessageBudget`: its websocket's ``recv`` (viser's reading
         loop calls it for every message) spends the tokens, and drops the client once they are spent."""
         client_id = connection.client_id
-        websocket = self.server._websock_server._live_connections.get(client_id)
+        websocket = live_websocket(self.server, client_id)
         if websocket is None:  # gone already
             return
         budget = self.budget
@@ -251,7 +246,9 @@ class App:
             with self._lock:
                 first = self.leader_step if self.follow else 0
             start = self.start or Scenario(Settings())
-            session = Session(client, start.settings, self.lesson, self.follow, self, first, self.shade, start.t)
+            session = Session(
+                client, start.settings, self.lesson, self.follow, self, first, self.shade, start.t, self.timelines
+            )
         finally:
             with self._lock:
                 gone = client.client_id in self._departed
@@ -344,6 +341,7 @@ class App:
     def stop(self) -> None:
         self._stop.set()
         self._loop.join(timeout=2.0)
+        self.timelines.stop()
         with contextlib.redirect_stdout(sys.stderr):  # viser says "Server stopped"; keep stdout for our output
             self.server.stop()
 

@@ -19,6 +19,7 @@ import viser
 
 import rigidrel_core as rr
 
+from ..backends._viser import PlaybackMessage, handle_uuid, queue_to_client, run_javascript, scene_owner
 from ..backends.raster import page_image
 from ..backends.viser import FlatStill, PageRenderer, flat_still
 from ..lessons import Lesson
@@ -63,6 +64,9 @@ from .controls import (
 )
 from .keys import Action
 from .playback import Playback
+from .runtime import Report, RuntimeConfig, add_playback_report, clock_controls, parse_report, runtime_script
+from .timeline import FRAMES_PER_BLOCK, Mirror, Timeline, TimelineCache, TimelineKey
+from .timeline import timeline_id as timeline_id_of
 
 #: A notice is dark red (and starts with ⚠ and is bold, for those who do not see the red).
 NOTICE_COLOR = "#B00020"
@@ -90,6 +94,9 @@ def scenario_problem(exc: ScenarioError) -> str:
     return text if exc.parameter == "scene" or text.startswith(flag) else f"{flag}: {text}"
 
 
+#: Timelines a tab's runtime keeps (the oldest is forgotten past these).
+RUNTIME_TIMELINES = 4
+
 #: While it plays, a tab sends its still picture (the diagrams, the legend) as one image once the
 #: picture has not changed for this long (s): a software renderer then draws one textured
 #: rectangle instead of its hundreds of lines, thousands of fill dots and fifty labels.
@@ -111,11 +118,13 @@ class Session:
         first_step: int = 0,
         shade: Shade = "light",
         start_time: float | None = None,
+        timelines: TimelineCache | None = None,
     ) -> None:
         """``lesson``: the tab gives it, opening on ``first_step`` (from 0); ``follow``: ``--follow``
         (the Lesson folder says who leads); ``hooks``: where step changes and key L are reported;
         ``shade``: the theme the tab opens in (key T changes it); ``start_time``: the time the tab
-        opens at, in the settings' frame (a scenario line's ``--t``; not with a lesson)."""
+        opens at, in the settings' frame (a scenario line's ``--t``; not with a lesson); ``timelines``:
+        where the tab's browser gets its playback from (None: the server draws every frame)."""
         self.client = client
         self.shade: Shade = shade
         """The tab's theme: light, or the dark projector theme (key T)."""
@@ -165,6 +174,22 @@ class Session:
         self._flat_asked = (-1, 0.0)
         """The still-picture version and scale whose image was last asked for."""
         self._flat_sent_at = 0.0
+        self.timelines = timelines
+        self.runtime_ready = False
+        """The tab's playback runtime said it is ready: it draws the moving parts (:mod:`.timeline`)."""
+        self.mirror: Mirror | None = None
+        """What the runtime shows of the server's own frames (once it is ready)."""
+        self._runtime_nodeset: str | None = None
+        """The node set the runtime draws on, as far as the server told it."""
+        self.timeline: Timeline | None = None
+        """The timeline of the state on screen, once made and sent."""
+        self._timeline_wanted: TimelineKey | None = None
+        self._timelines_sent: list[str] = []
+        """Timelines the runtime holds (the newest last)."""
+        self.runtime_playing = False
+        """The runtime plays :attr:`timeline` (the server's clock only follows it)."""
+        self._pausing = False
+        """A pause was sent to the runtime and its frame has not come back yet."""
         self.slow_canvas = False
         """The browser has lowered its canvas' resolution (viser does while frames come slower
         than 38 a second, as in a software renderer): from then on, while it plays, the still
@@ -181,6 +206,13 @@ class Session:
             self.renderer = PageRenderer(client.scene)
             self.playback = Playback.start((-1.0, 1.0))
             self._wire()
+            if timelines is not None:
+                self.playback_report = add_playback_report(client.gui)
+                self.playback_report.on_update(lambda _: self._runtime_said(self.playback_report.value))
+                config = RuntimeConfig(
+                    scene_owner(client), handle_uuid(self.playback_report), clock_controls(self.controls.time.handles)
+                )
+                run_javascript(client, runtime_script(config))
             if lesson is not None:
                 self._arrive(clamp_step(lesson, first_step))
             else:
@@ -472,11 +504,24 @@ class Session:
         self.client.flush()
 
     def set_playback(self, playback: Playback) -> None:
-        was = self.playback.playing
+        was = self.playback
         self.playback = playback
-        if playback.playing != was:
+        if playback.playing != was.playing:
             self.controls.play.label = "Pause" if playback.playing else "Play"
             self.controls.play.icon = viser.Icon.PLAYER_PAUSE if playback.playing else viser.Icon.PLAYER_PLAY
+        if not self.runtime_ready:
+            return
+        if self.runtime_playing and (playback.speed, playback.loop) != (was.speed, was.loop):
+            self._to_runtime("speed", value=playback.speed)
+            self._to_runtime("loop", value=float(playback.loop))
+        if playback.playing and not was.playing:
+            self._play_in_browser()
+        elif was.playing and not playback.playing and self.runtime_playing:
+            # stopped by a key or a button, or the clock's estimate reached the end: either way the
+            # browser's frame where it stops (it ends by itself) comes back and sets the clock
+            self.runtime_playing, self._pausing = False, True
+            if playback.now != was.window[1] or playback.loop:
+                self._to_runtime("pause", self.timeline.id if self.timeline is not None else "")
 
     def refuse(self, text: str, place: Place = "scene") -> None:
         with self.lock:
@@ -547,10 +592,17 @@ class Session:
             self.drawn = d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
         self.chart_frames, picture = still_picture(d.charts, layout.charts, legend, layout.legend, layout.theme)
         self.renderer.set_static(layout, picture, RULER_NAMES)
+        self.timeline, self.runtime_playing, self._pausing = (
+            None,
+            False,
+            False,
+        )  # the runtime's frames were another state's
         if refit:
             self.fit_camera()
         c.readout.content = readout(resolved)
         self.draw_now(force_plots=True)
+        if self.playback.playing:
+            self._play_in_browser()
         if self.lesson is not None and self.caption_off_step != (
             resolved.scene.kind != self.lesson.steps[self.step_index].scenario.settings.scene
         ):
@@ -593,13 +645,20 @@ class Session:
             return
         now = self.playback.now
         wall = time.monotonic()
+        if self.runtime_ready and self._pausing:
+            return  # the runtime's frame where it paused is coming: it is the picture
         instant = d.ride_instant(now)  # the riding lane's instant (None unless it rides a point)
         lanes = d.lane_pictures(now, layout, instant)
-        ends = [lane.ends for lane in lanes]
-        moving = moving_picture(self.chart_frames, d.moving_items(now, ends, instant), layout.theme)
         self.renderer_lanes = lanes
         with self.client.atomic():
-            self.renderer.update(lanes, moving)
+            if not self._runtime_frame(now):
+                ends = [lane.ends for lane in lanes]
+                moving = moving_picture(self.chart_frames, d.moving_items(now, ends, instant), layout.theme)
+                self.renderer.update(lanes, moving)
+                if self.mirror is not None:  # the runtime draws the moving parts: they go to it
+                    prologue = self._runtime_nodeset != self.mirror.nodeset
+                    self._to_runtime("frame", payload=self.mirror.frame(now, prologue))
+                    self._runtime_nodeset = self.mirror.nodeset
             if force_plots or not self.playback.playing or wall - self._last_plot >= 1.0 / PLOT_HZ:
                 self._last_plot = wall
                 self.controls.time.show(round(now, 6))
@@ -608,10 +667,126 @@ class Session:
                     self._scenario_of = (self.shown_settings, t)
                     self.controls.show_scenario(format_scenario(self.shown_settings, t))
 
+    # ------------------------------------------------------------------ playback in the browser
+    def _runtime_said(self, text: str) -> None:
+        """A report of the tab's runtime (:class:`~rigidrel_app.live.runtime.Report`), answered at once."""
+        report = parse_report(text)
+        with self.lock:
+            if report is None or self.closed:
+                return
+            with self.client.atomic():
+                if report.event == "ready":
+                    self._runtime_ready()
+                else:
+                    self._runtime_stopped(report)
+        self.client.flush()
+
+    @property
+    def playback_settled(self) -> bool:
+        """Paused with the picture and the clock agreeing: not playing, and no pause on its way back
+        from the browser (whose frame where it paused sets the clock)."""
+        return not self.playback.playing and not self._pausing
+
+    def _runtime_ready(self) -> None:
+        """The runtime takes the moving parts over: drawn from now on into the mirror, sent as frames."""
+        if self.runtime_ready:
+            return
+        self.runtime_ready = True
+        self.mirror = Mirror(f"tab{self.client.client_id}")
+        self.renderer.draw_moving_into(self.mirror.scene)
+        self.draw_now(force_plots=True)
+        if self.playback.playing:
+            self._play_in_browser()
+
+    def _runtime_stopped(self, report: Report) -> None:
+        """The runtime paused or ended on a frame of the timeline on screen: the server's clock is there."""
+        timeline = self.timeline
+        if timeline is None or report.timeline != timeline.id or report.frame is None:
+            return
+        self._pausing = False
+        if report.frame >= len(timeline.times):
+            return
+        now = float(timeline.times[report.frame])
+        self.runtime_playing = False
+        self.set_playback(replace(self.playback, now=now, playing=False))
+        self.draw_now(force_plots=True)  # its frame is on screen: only the time controls follow
+
+    def _to_runtime(
+        self, action: str, timeline: str = "", value: float = 0.0, payload: np.ndarray | None = None
+    ) -> None:
+        message = PlaybackMessage(action, timeline, float(value))
+        if payload is not None:
+            message.payload = payload
+        queue_to_client(self.client, message)
+
+    def _timeline_key(self) -> TimelineKey | None:
+        if self.shown_settings is None or self.layout is None:
+            return None
+        return TimelineKey(self.shown_settings, self.layout, self.playback.window)
+
+    def _play_in_browser(self) -> None:
+        """Playing: the runtime plays the state's timeline from the clock's frame, once it has it
+        (asked for now; meanwhile the picture holds, and so does the clock)."""
+        key = self._timeline_key()
+        if not self.runtime_ready or self.timelines is None or key is None or self.drawn is None:
+            return
+        timeline = self.timeline
+        if timeline is None or self._timeline_wanted is not None:
+            self._timeline_wanted = key
+            timeline = self.timelines.request(key, self.drawn.resolved, self._timeline_made)
+            if timeline is None:
+                return
+        self._start_timeline(timeline)
+
+    def _timeline_made(self, timeline: Timeline) -> None:
+        """On the timelines' thread: a timeline this tab asked for is made."""
+        with self.lock:
+            if self.closed or self._timeline_wanted is None or timeline.id != timeline_id_of(self._timeline_wanted):
+                return
+            with self.client.atomic():
+                self._start_timeline(timeline)
+        self.client.flush()
+
+    def _start_timeline(self, timeline: Timeline) -> None:
+        self.timeline, self._timeline_wanted = timeline, None
+        if timeline.id not in self._timelines_sent:
+            for k, block in enumerate(timeline.blocks):  # the value: the block's first frame
+                self._to_runtime("block", timeline.id, k * FRAMES_PER_BLOCK, payload=block)
+            self._timelines_sent.append(timeline.id)
+            if len(self._timelines_sent) > RUNTIME_TIMELINES:
+                self._to_runtime("forget", self._timelines_sent.pop(0))
+        if not self.playback.playing:
+            return
+        self._to_runtime("speed", value=self.playback.speed)
+        self._to_runtime("loop", value=float(self.playback.loop))
+        t0, t1 = self.playback.window
+        frame = (self.playback.now - t0) / (t1 - t0) * (len(timeline.times) - 1) if t1 > t0 else 0.0
+        self._to_runtime("play", timeline.id, frame)
+        self.runtime_playing, self._pausing = True, False
+        self._runtime_nodeset = timeline.id
+
+    def _runtime_frame(self, now: float) -> bool:
+        """Show ``now`` from the timeline the runtime holds, if it is one of its frames (a step, a
+        seek onto a frame): True if so, and nothing else needs drawing."""
+        timeline = self.timeline
+        if not self.runtime_ready or timeline is None or timeline.id not in self._timelines_sent:
+            return False
+        frame = timeline.frame_of(now)
+        if frame is None:
+            return False
+        self._to_runtime("seek", timeline.id, frame)
+        self._runtime_nodeset = timeline.id
+        return True
+
     def tick(self, dt: float) -> None:
         """Advance playback by ``dt`` wall seconds and redraw (called by the animation loop)."""
         with self.lock:
             if self.closed or not self.playback.playing:
+                return
+            if self.runtime_ready:  # the browser plays: the server's clock follows it, nothing is drawn
+                if self.runtime_playing:
+                    self.set_playback(self.playback.advance(dt))
+                self._flatten()
                 return
             self.set_playback(self.playback.advance(dt))
             self.draw_now(force_plots=not self.playback.playing)  # stopped at the end: the box shows the end

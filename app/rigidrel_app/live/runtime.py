@@ -1,0 +1,81 @@
+"""A tab's playback runtime, seen from the server: the script it runs, and what it reports.
+
+The runtime (``assets/runtime.js``) is sent to each tab when its session starts. It says it is
+ready, and later where it paused or ended, by setting a hidden text control of the tab's (the
+viser way a page tells the server anything): a :class:`Report` in JSON. Until it is ready, the
+server draws the tab's frames itself, as for a client without a browser.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from importlib import resources
+from typing import Literal
+
+import viser
+
+from ..backends._viser import handle_uuid
+from .playback import FRAME_RATE
+
+#: The hidden control's label (it is never shown).
+REPORT_LABEL = "rigidrel playback"
+
+Event = Literal["ready", "paused", "ended"]
+EVENTS: tuple[Event, ...] = ("ready", "paused", "ended")
+
+
+@dataclass(frozen=True)
+class Report:
+    """What a runtime says: it is ``ready``, or it ``paused`` or ``ended`` at ``frame`` of ``timeline``."""
+
+    event: Event
+    timeline: str | None = None
+    frame: int | None = None
+
+
+def parse_report(text: str) -> Report | None:
+    """A report as the runtime writes it, or None for anything else (a client may send anything)."""
+    try:
+        raw = json.loads(text)
+    except (ValueError, TypeError):
+        return None
+    if not isinstance(raw, dict):
+        return None
+    event, timeline, frame = raw.get("event"), raw.get("timeline"), raw.get("frame")
+    if event not in EVENTS:
+        return None
+    if event == "ready":
+        return Report("ready")
+    if not isinstance(timeline, str) or not isinstance(frame, int) or isinstance(frame, bool) or frame < 0:
+        return None
+    return Report(event, timeline, frame)
+
+
+def add_playback_report(gui: viser.GuiApi) -> viser.GuiTextHandle:
+    """The hidden text control the runtime reports through."""
+    return gui.add_text(REPORT_LABEL, "", visible=False)
+
+
+@dataclass(frozen=True)
+class RuntimeConfig:
+    """What the runtime is told when it is sent: the owner id its scene messages carry, the report
+    control, and the time controls it keeps up to date while it plays (each a number or a text)."""
+
+    owner: str
+    report: str
+    clock: tuple[tuple[str, Literal["number", "text"]], ...]
+
+
+def runtime_script(config: RuntimeConfig) -> str:
+    """The runtime's source with its configuration filled in."""
+    source = resources.files("rigidrel_app.live").joinpath("assets", "runtime.js").read_text(encoding="utf-8")
+    values = {"owner": config.owner, "report": config.report, "clock": config.clock, "frameRate": FRAME_RATE}
+    return source.replace("__CONFIG__", json.dumps(values))
+
+
+def clock_controls(
+    handles: tuple[viser.GuiInputHandle[float] | viser.GuiTextHandle, ...],
+) -> tuple[tuple[str, Literal["number", "text"]], ...]:
+    """The time controls as the runtime writes them: a text box gets the time as text."""
+    return tuple((handle_uuid(h), "text" if isinstance(h, viser.GuiTextHandle) else "number") for h in handles)
