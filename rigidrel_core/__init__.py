@@ -60,6 +60,7 @@ from .scenes.collision import rod_collision as rod_collision
 from .scenes.collision import solve_collision as solve_collision
 from .scenes.impulse import impulsive_start as impulsive_start
 from .scenes.pole_barn import DoorOrder as DoorOrder
+from .scenes.pole_barn import DoorOutcome as DoorOutcome
 from .scenes.pole_barn import PoleBarnScene as PoleBarnScene
 from .scenes.pole_barn import PoleVerdict as PoleVerdict
 from .scenes.pole_barn import pole_barn as pole_barn
@@ -73,6 +74,7 @@ __all__ = [
     "ChangeVerdict",
     "CollisionSolution",
     "DoorOrder",
+    "DoorOutcome",
     "EventDescription",
     "EventSpec",
     "ExactVelocity",

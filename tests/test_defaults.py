@@ -168,6 +168,9 @@ def test_every_summary_holds_for_its_scene_at_every_speed(v: float) -> None:
     assert isinstance(pole, rr.PoleBarnScene)
     text = summaries["pole-barn"]
     assert "by default L0/γ, so that in the barn's frame the moving pole just fits" in text
-    assert "the Born-rigid pole (Sec. 5) never fits; a pole stopped by a signal does" in text
+    assert "door closes, by default, when the unstopped pole's rear end would pass it" in text
+    assert "it closes on the Born-rigid pole (Sec. 5), in every frame, and behind a pole stopped by a signal" in text
     assert pole.barn_length == pole.moving_length  # just fits, unstopped, in the barn's frame
+    assert pole.door_time == pole.paradox_door_time
+    assert [pole.door_outcome(i) for i in (0, 1)] == [rr.DoorOutcome.ON_POLE, rr.DoorOutcome.CAUGHT]
     assert [pole.inside(i) for i in (0, 1)] == [False, True]

@@ -243,8 +243,10 @@ def test_pole_barn_events_command_prints_the_verdicts(capsys: pytest.CaptureFixt
     assert notes[0].endswith("in the barn's frame the moving pole just fits")
     assert notes[1].startswith("the door closes at lab t_d = 0, the instant the paradox names")
     assert notes[1].endswith(": at (lab t, x) = (0, 0.6)")
-    assert notes[2].startswith("the Born-rigid pole is never entirely inside the barn, in any frame")
-    assert notes[3].startswith("the signal-limited pole (c_s = 1) is entirely inside the barn at some instant")
+    assert notes[2].startswith("the door closes on the Born-rigid pole, in every frame: at lab t = 0 the pole")
+    assert "its rear end at lab x = 1, outside the door at lab x = 0.6" in notes[2]
+    assert notes[3].startswith("the signal-limited pole (its stop front at c_s = 1, light speed, in the barn's")
+    assert "is caught: its rear end passes the door as the door closes (the same event)" in notes[3]
 
 
 @pytest.mark.parametrize("kind", ["pole-barn", "bell-spaceships"])
@@ -286,8 +288,10 @@ def test_pole_barn_checks_at_eight_tenths() -> None:
     born, signal = scene.verdicts()
     assert not born.inside
     assert born.door is rr.DoorOrder.NEVER_PASSES
+    assert born.outcome is rr.DoorOutcome.ON_POLE  # the door, at lab (0, 0.6), closes on the pole
     assert signal.inside
     assert signal.door is rr.DoorOrder.SAME_EVENT  # the default door time: as the rear passes
+    assert signal.outcome is rr.DoorOutcome.CAUGHT
     c_s = 0.5
     slow = rr.pole_barn(0.8, 1.0, 0.6, model="signal", sound_speed=c_s)
     assert slow.rods[0].motion.length_final == pytest.approx(c_s / ((5 / 3) * (c_s + 0.8)), rel=TOL)
@@ -319,6 +323,54 @@ def test_pole_barn_verdicts_are_the_same_in_every_frame(scene: rr.PoleBarnScene,
                 assert (t_door > t_pass) is (verdict.door is rr.DoorOrder.AFTER)
 
 
+@SETTINGS
+@given(scene=pole_scenes(), frame=frames)
+def test_the_door_outcome_is_what_every_frame_sees_as_the_door_closes(scene: rr.PoleBarnScene, frame: rr.Frame) -> None:
+    """Each verdict's outcome is what ``frame`` sees at its own time of the door's closing: caught, the
+    rear end at or inside the door; on the pole, the front end inside and the rear end outside; in front
+    of it, the front end not yet in (wherever the margin exceeds rounding). One criterion decides it,
+    the order of three events on the door's worldline, and the words say it."""
+    t_door, x_door = scene.door_closing_in(frame=frame)
+    ends = scene.positions(np.array([t_door]), frame=frame)[:, :, 0]
+    margin = 1e-9 * max(1.0, abs(t_door), abs(x_door))
+    for verdict in scene.verdicts():
+        front, rear = ends[verdict.rod] - x_door
+        outcome = verdict.outcome
+        assert outcome is scene.door_outcome(verdict.rod)
+        assert (outcome is rr.DoorOutcome.CAUGHT) is (verdict.door in (rr.DoorOrder.AFTER, rr.DoorOrder.SAME_EVENT))
+        if outcome is rr.DoorOutcome.CAUGHT:
+            assert rear <= margin
+            assert " is caught: " in verdict.text and "closes on" not in verdict.text
+        elif outcome is rr.DoorOutcome.ON_POLE:
+            assert front <= margin and rear >= -margin
+            assert verdict.text.startswith("the door closes on ") and "spans the doorway" in verdict.text
+        else:
+            assert front >= -margin
+            assert verdict.text.startswith("the door closes in front of ")
+        if outcome is not rr.DoorOutcome.CAUGHT:  # "inside" only with the door left open, and said so
+            assert "is caught" not in verdict.text
+            assert ("entirely inside" in verdict.text) is verdict.inside
+            assert verdict.inside is ("door left open" in verdict.text) or outcome is rr.DoorOutcome.SHUT_OUT
+
+
+def test_a_roomy_barn_closes_its_door_on_the_born_rigid_pole() -> None:
+    """D = 1.1 between L0 and gamma L0 (V = 0.6), the door at the paradox's instant t_d = (L0/gamma - D)/V
+    = -0.5: the Born-rigid rear end, braking since T_1 = -0.75, is then at sqrt(1 + 0.25) = 1.118 on
+    x = sqrt(1 + t^2), outside the door; it passes the door only at -sqrt(1.1^2 - 1) = -0.4583. The
+    door closes on the pole, though once at rest (x = 1) it would lie inside."""
+    scene = rr.pole_barn(0.6, 1.0, 1.1, "both")
+    assert scene.door_time == pytest.approx(-0.5, rel=TOL)
+    born, signal = scene.verdicts()
+    assert born.inside and born.door is rr.DoorOrder.BEFORE and born.outcome is rr.DoorOutcome.ON_POLE
+    assert scene.rear_at_door_time(0) == pytest.approx(math.sqrt(1.25), rel=TOL)
+    passes = scene.rear_passes_door(0)
+    assert passes is not None and passes[0] == pytest.approx(-math.sqrt(0.21), rel=TOL)
+    assert "rear end at lab x = 1.118, outside the door at lab x = 1.1" in born.text
+    assert "passes the door only at lab t = -0.4583" in born.text
+    assert "only with the door left open does the pole end entirely inside" in born.text
+    assert signal.outcome is rr.DoorOutcome.CAUGHT  # its rear end passes as the door closes
+
+
 @pytest.mark.parametrize("v", [1e-300, 1e-12, 1e-9, 1.5e-6, 1e-6, 1e-3])
 @pytest.mark.parametrize("model", ["born", "signal"])
 def test_pole_verdicts_agree_with_each_other_at_small_speeds(v: float, model: str) -> None:
@@ -334,8 +386,9 @@ def test_pole_verdicts_agree_with_each_other_at_small_speeds(v: float, model: st
     assert (verdict.door is rr.DoorOrder.NEVER_PASSES) is (not verdict.inside)
     if verdict.inside:
         assert verdict.door is rr.DoorOrder.SAME_EVENT  # the default door: the paradox's instant
+    assert (verdict.outcome is rr.DoorOutcome.CAUGHT) is verdict.inside
     text = verdict.text
-    assert ("is entirely inside" in text) is verdict.inside and ("never passes" in text) is (not verdict.inside)
+    assert (" is caught: " in text) is verdict.inside and ("never passes" in text) is (not verdict.inside)
 
 
 @SETTINGS
@@ -428,6 +481,6 @@ def test_paradox_figures_state_the_verdicts() -> None:
 
     bell, pole = paradox_figures()
     assert "γs = 1.25 apart" in bell.caption and "from rest length 0.9 to 1.15" in bell.caption
-    assert "comes to rest at x = 1; it is never entirely inside" in pole.caption
-    assert "x = 0.3333; it is entirely inside" in pole.caption
+    assert "comes to rest at x = 1; the door closes on it, in every frame" in pole.caption
+    assert "x = 0.3333; the door closes behind it: it is caught inside" in pole.caption
     assert bell.chart.items and pole.chart.items

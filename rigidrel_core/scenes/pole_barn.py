@@ -23,13 +23,21 @@ door at ``(L0/gamma - D)/V`` if ``D >= L1``, never otherwise. The kinetic energy
 the pole, whose rest mass grows to ``gamma M``: in the barn's frame the wall takes the momentum
 ``gamma M V`` and gives no energy.
 
-**Verdicts.** In any frame, the rear end's velocity only grows (it is braked toward rest in the
-barn) while the door's is constant, so ``x'_rear - x'_door`` at equal frame time never increases
+**Verdicts.** What the door does is decided by three events on the door's worldline ``x = D``:
+the door closes (``t_d``), the front end passes the door (``-D/V``: the front coasts until the
+contact) and the rear end passes it (above; never if ``D < X``). Events on one timelike worldline
+have the same order in every frame, so each verdict holds in every frame: the pole is **caught**
+(entirely inside when the door closes, in every frame's time too: the rear end's passing is in the
+door event's causal past) iff the rear end passes the door at or before ``t_d``; the door closes
+**on the pole** (the pole spans the doorway, front in, rear out) iff the front end has passed and
+the rear end has not; else it closes **in front of the pole**, which would hit it. The scene does
+not model the door's effect on the pole: it is a marker.
+
+Apart from the door: in any frame, the rear end's velocity only grows (it is braked toward rest in
+the barn) while the door's is constant, so ``x'_rear - x'_door`` at equal frame time never increases
 and is constant once the rear end rests in the barn: its least value is ``(X - D)/gamma'``, ``X``
-the rear end's resting place; the front end never crosses the wall. So the pole is entirely inside
-at some instant of a frame iff ``X <= D``: the same in every frame (each frame's samplers find it).
-The door's closing and the rear end's passing the door are both at ``x = D`` in the barn: their
-separation is timelike (or zero) and their order the same in every frame.
+the rear end's resting place; the front end never crosses the wall. So the pole, the door left
+open, ends entirely inside iff ``X <= D``: the same in every frame.
 """
 
 from __future__ import annotations
@@ -138,6 +146,18 @@ class DoorOrder(StrEnum):
         return f"the door closes, {self.value}" if self is DoorOrder.NEVER_PASSES else f"the door closes {self.value}"
 
 
+class DoorOutcome(StrEnum):
+    """What the door's closing does to a pole, in every frame (module docstring, **Verdicts**)."""
+
+    CAUGHT = "the door closes with the pole entirely inside"
+    """The rear end passes the door at or before the door closes."""
+    ON_POLE = "the door closes on the pole, which spans the doorway"
+    """The front end has passed the door, the rear end has not (or never does): a real door would strike
+    the pole."""
+    SHUT_OUT = "the door closes in front of the pole"
+    """The front end has not passed the door (or reaches it as it closes): the pole would hit the closed door."""
+
+
 @dataclass(frozen=True)
 class PoleVerdict:
     """What one pole does in the barn (module docstring, **Verdicts**): each question answered by one
@@ -148,9 +168,12 @@ class PoleVerdict:
     rear_rest_x: float
     """Lab x where the rear end comes to rest (``L0`` Born-rigid, ``L1`` signal-limited)."""
     inside: bool
-    """Entirely inside the barn at some instant, in every frame: ``X <= D``."""
+    """With the door left open, the pole ends at rest entirely inside the barn: ``X <= D``."""
     door: DoorOrder
     """The door's closing against the rear end's passing the door, in every frame."""
+    outcome: DoorOutcome
+    """What the door's closing does to the pole, in every frame: decided by :attr:`door` and the front
+    end's passing the door alone."""
     text: str
 
 
@@ -218,11 +241,23 @@ class PoleBarnScene(Scene):
             return (-math.sqrt((d - length) * (d + length)), d)  # on x = sqrt(L0^2 + t^2), Eq. (23)
         return (self.paradox_door_time, d)
 
+    @property
+    def front_passes_door(self) -> tuple[float, float]:
+        """Lab event where the poles' front end passes the door: ``(-D/V, D)`` (it coasts until the
+        contact at the origin, in either model)."""
+        v = -self.rods[0].motion.velocity_initial.value
+        return (-self.barn_length / v, self.barn_length)
+
+    def rear_at_door_time(self, rod: int) -> float:
+        """Lab x of pole ``rod``'s rear end when the door closes (lab time ``t_d``)."""
+        return float(self.positions(np.array([self.door_time]))[rod, 1, 0])
+
     def inside(self, rod: int) -> bool:
-        """Whether pole ``rod`` is entirely inside the barn at some instant: ``X <= D``, ``X`` its rear
-        end's resting place, exactly. The same in every frame (module docstring, **Verdicts**: in any
-        frame ``x'_rear - x'_door`` at equal time never increases and ends at ``(X - D)/gamma'``), and
-        the same criterion as the rear end's passing the door (:meth:`rear_passes_door`)."""
+        """Whether pole ``rod``, the door left open, ends at rest entirely inside the barn: ``X <= D``,
+        ``X`` its rear end's resting place, exactly. The same in every frame (module docstring,
+        **Verdicts**: in any frame ``x'_rear - x'_door`` at equal time never increases and ends at
+        ``(X - D)/gamma'``), and the same criterion as the rear end's passing the door
+        (:meth:`rear_passes_door`). Whether the door catches it is :meth:`door_outcome`."""
         return self.rear_rest_x(rod) <= self.barn_length
 
     def inside_in(self, rod: int, *, frame: Frame) -> bool:
@@ -245,6 +280,17 @@ class PoleBarnScene(Scene):
         """:meth:`door_order`, asked in ``frame``: the same in every frame."""
         check_frame(frame)
         return self.door_order(rod)
+
+    def door_outcome(self, rod: int) -> DoorOutcome:
+        """What the door's closing does to pole ``rod`` (module docstring, **Verdicts**): caught iff its
+        rear end passes the door at or before the door closes (:meth:`door_order`); else on the pole iff
+        the front end passed the door before it closes; else in front of it. Each comparison is of two
+        events on the door's worldline: the same in every frame."""
+        if self.door_order(rod) in (DoorOrder.AFTER, DoorOrder.SAME_EVENT):
+            return DoorOutcome.CAUGHT
+        if self.door_time > self.front_passes_door[0]:
+            return DoorOutcome.ON_POLE
+        return DoorOutcome.SHUT_OUT
 
     def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
         """The barn against the moving pole, the door's closing (as an event of ``frame``, labelled)
@@ -279,34 +325,72 @@ class PoleBarnScene(Scene):
         door = f"the door closes at lab t_d = {self.door_time:.4g}, {when}: at {seen}"
         return (barn, door, *(v.text for v in self.verdicts()))
 
+    def pole_name(self, rod: int) -> str:
+        """``"the Born-rigid pole"``; ``"the signal-limited pole (its stop front at c_s = 1, light speed,
+        in the barn's frame)"``."""
+        if self.models[rod] == "born":
+            return "the Born-rigid pole"
+        light = ", light speed," if self.sound_speed == 1.0 else ""
+        return f"the signal-limited pole (its stop front at c_s = {self.sound_speed:g}{light} in the barn's frame)"
+
     def verdicts(self) -> tuple[PoleVerdict, ...]:
-        """One :class:`PoleVerdict` per pole, in words for the readout and the command line."""
+        """One :class:`PoleVerdict` per pole, in words for the readout and the command line: what the
+        door's closing does to it (:meth:`door_outcome`), with the events that decide it (lab times, all
+        at the door), and where it comes to rest."""
         out: list[PoleVerdict] = []
-        d = self.barn_length
+        d, t_d = self.barn_length, self.door_time
+        same_x = f"both events are at the door, lab x = {d:.4g}, so no frame reverses them"
         for i, model in enumerate(self.models):
-            inside, door, x_rest = self.inside(i), self.door_order(i), self.rear_rest_x(i)
-            name = "the Born-rigid pole" if model == "born" else f"the signal-limited pole (c_s = {self.sound_speed:g})"
-            if inside:
-                spot = "at the door" if x_rest == d else "inside the door"
-                where = (
-                    f"{name} is entirely inside the barn at some instant, in every frame: its rear end comes to "
-                    f"rest at lab x = {x_rest:.4g}, {spot} at lab x = {d:.4g}"
+            inside, door, outcome, x_rest = (
+                self.inside(i),
+                self.door_order(i),
+                self.door_outcome(i),
+                self.rear_rest_x(i),
+            )
+            name = self.pole_name(i)
+            passes = self.rear_passes_door(i)
+            rest = (
+                f"it comes to rest with its rear end at lab x = {x_rest:.4g}"
+                if model == "born"
+                else f"it comes to rest compressed to rest length {x_rest:.4g}, its rear end at lab x = {x_rest:.4g}"
+            )
+            spot = "at" if x_rest == d else "inside"
+            if outcome is DoorOutcome.CAUGHT:
+                assert passes is not None
+                when = (
+                    "as the door closes (the same event)"
+                    if door is DoorOrder.SAME_EVENT
+                    else f"at lab t = {passes[0]:.4g}, before the door closes at lab t = {t_d:.4g} ({same_x})"
                 )
-            else:
-                where = (
-                    f"{name} is never entirely inside the barn, in any frame: its rear end comes to rest at "
-                    f"lab x = {x_rest:.4g}, beyond the door at lab x = {d:.4g}"
-                )
-            if door is DoorOrder.NEVER_PASSES:
-                text = f"{where}; {door.words()}."
-            elif door is DoorOrder.SAME_EVENT:
-                text = f"{where}; {door.words()}, in every frame."
-            else:  # both events at the barn's x = D: a timelike (or null) separation
                 text = (
-                    f"{where}; {door.words()}, in every frame: both events happen at lab "
-                    f"x = {d:.4g}, so no frame reverses them."
+                    f"{name} is caught: its rear end passes the door {when}, so the whole pole is inside the "
+                    f"barn when the door closes, in every frame; {rest}."
                 )
-            out.append(PoleVerdict(i, model, x_rest, inside, door, text))
+            elif outcome is DoorOutcome.ON_POLE:
+                head = (
+                    f"the door closes on {name}, in every frame: at lab t = {t_d:.4g} the pole spans the doorway, "
+                    f"its rear end at lab x = {self.rear_at_door_time(i):.4g}, outside the door at lab x = {d:.4g}"
+                )
+                if passes is None:
+                    tail = f"its rear end never passes the door: {rest}, beyond the door"
+                else:
+                    tail = (
+                        f"its rear end passes the door only at lab t = {passes[0]:.4g}, after the door closes "
+                        f"({same_x}); only with the door left open does the pole end entirely inside ({rest}, "
+                        f"{spot} the door)"
+                    )
+                text = f"{head}; {tail}."
+            else:
+                if inside:
+                    tail = f"only with the door left open does the pole end entirely inside ({rest}, {spot} the door)"
+                else:
+                    tail = f"even with the door left open it would stick out of the barn: {rest}, beyond the door"
+                text = (
+                    f"the door closes in front of {name}, in every frame: at lab t = {t_d:.4g}, before its front end "
+                    f"reaches the door at lab t = {self.front_passes_door[0]:.4g} ({same_x}); the pole would hit "
+                    f"the closed door; {tail}."
+                )
+            out.append(PoleVerdict(i, model, x_rest, inside, door, outcome, text))
         return tuple(out)
 
 
@@ -423,15 +507,18 @@ def _figure_caption(scene: Scene) -> str:
     d, t_d = scene.barn_length, scene.door_time
     fits = " L0/γ =" if math.isclose(d, scene.moving_length, rel_tol=1e-12) else ""
     born, signal = scene.verdicts()
+    fate = {
+        DoorOutcome.CAUGHT: "the door closes behind it: it is caught inside, in every frame",
+        DoorOutcome.ON_POLE: "the door closes on it, in every frame, while it spans the doorway",
+        DoorOutcome.SHUT_OUT: "the door closes in front of it, in every frame",
+    }
     return (
         f"The pole in the barn, V = {v:g}, L0 = {length:g}, barn D ={fits} {d:g}; lab coordinates (the barn's frame): "
         f"back wall at x = 0, door dashed at x = {d:g}, closing at t = {t_d:g}. Solid: the Born-rigid stop (Sec. 5, "
         f"ε = 0): its rear end starts braking at T_1, before the contact in the lab, and comes to rest at "
-        f"x = {born.rear_rest_x:.4g}; it {'is' if born.inside else 'is never'} entirely inside the barn, in any frame, "
-        f"and {born.door.words()}. Dashed: the signal-limited stop (c_s = {scene.sound_speed:g}): every "
-        f"point moves on until the stop front from the contact reaches it; the rear end stops at T_s, "
-        f"x = {signal.rear_rest_x:.4g}; it {'is' if signal.inside else 'is never'} entirely inside, in any frame, and "
-        f"{signal.door.words()}."
+        f"x = {born.rear_rest_x:.4g}; {fate[born.outcome]}. Dashed: the signal-limited stop (a stop front from the "
+        f"contact at c_s = {scene.sound_speed:g} in the barn's frame): every point moves on until the stop front "
+        f"reaches it; the rear end stops at T_s, x = {signal.rear_rest_x:.4g}; {fate[signal.outcome]}."
     )
 
 
@@ -449,8 +536,9 @@ POLE_BARN = SceneDescription(
     title="Pole in the barn",
     summary=(
         "A pole moving at −V crashes into the back wall of a barn of length D (by default L0/γ, so that in the "
-        "barn's frame the moving pole just fits): there the Born-rigid pole (Sec. 5) never fits; a pole stopped "
-        "by a signal does."
+        "barn's frame the moving pole just fits), whose door closes, by default, when the unstopped pole's rear "
+        "end would pass it: it closes on the Born-rigid pole (Sec. 5), in every frame, and behind a pole stopped "
+        "by a signal from the contact."
     ),
     source="Sec. 5",
     constructor=_both,
