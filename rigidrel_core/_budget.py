@@ -35,6 +35,33 @@ class PhysicalSystem:
     """Invariant rest energy the process creates in this system (epsilon < 1, a plastic stop)."""
 
 
+def _the(name: str) -> str:
+    """``"the rod"``, ``"rod 1"``: a rod's name with its article."""
+    return name if name.startswith("rod ") else f"the {name}"
+
+
+def heat_where(system: PhysicalSystem, names: tuple[str, ...], mass_before: FloatArray, mass_after: FloatArray) -> str:
+    """Which body the heat of ``system`` is in, in words (c = 1, energy in mass units): the wall, when
+    the rods keep their rest masses (a Born-rigid stop: an infinitely heavy wall takes the momentum and
+    the rest energy); else the rods, whose rest masses grow by it (shared in proportion to rest mass
+    when they grow by one factor, as in a collision with ε < 1); ``""`` when there is no heat."""
+    rods = list(system.rods)
+    m0, m1 = mass_before[rods], mass_after[rods]
+    if system.heat == 0.0:
+        return ""
+    if np.array_equal(m0, m1):
+        keeps = "keeps its rest mass" if len(rods) == 1 else "keep their rest masses"
+        where = "in the wall" if system.external_source == "wall" else "outside the rods"
+        return f"all {where} ({' and '.join(_the(names[i]) for i in rods)} {keeps})"
+    if len(rods) == 1:
+        return f"in {_the(names[rods[0]])} (its rest mass grows from {m0[0]:.6g} to {m1[0]:.6g})"
+    factors = m1 / m0
+    if np.allclose(factors, factors[0], rtol=1e-12, atol=0.0):
+        return f"in the rods, shared in proportion to rest mass (each rest mass × {factors[0]:.6g})"
+    grows = ", ".join(f"{_the(names[i])} {a:.6g} → {b:.6g}" for i, a, b in zip(rods, m0, m1, strict=True))
+    return f"in the rods (their rest masses grow: {grows})"
+
+
 @dataclass(frozen=True)
 class SystemBudget:
     """One physical system's totals in one frame (:class:`FourMomentumBudget`)."""
@@ -45,6 +72,9 @@ class SystemBudget:
     total_after: FloatArray
     external: FloatArray
     """``(E, p)`` delivered from outside: ``total_after - total_before`` (zero for a closed system)."""
+    heat_where: str = ""
+    """Which body the heat is in, in words (:func:`heat_where`): ``"all in the wall (the rod keeps its
+    rest mass)"``, ``"in the signal-limited pole (its rest mass grows from 1 to 1.25)"``; ``""``: no heat."""
 
     @property
     def name(self) -> str:
@@ -67,6 +97,7 @@ class SystemBudget:
             "external": self.external.tolist(),
             "external_source": self.system.external_source,
             "heat": self.system.heat,
+            "heat_where": self.heat_where,
         }
 
 

@@ -19,7 +19,7 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
-from ._budget import ExternalSource, FourMomentumBudget, PhysicalSystem, SystemBudget
+from ._budget import ExternalSource, FourMomentumBudget, PhysicalSystem, SystemBudget, heat_where
 from ._exact import relative_rapidity
 from ._frame import LAB, Frame, check_frame
 from ._kinds import OriginEvent
@@ -314,7 +314,9 @@ class Scene:
             rods = list(system.rods)
             total_before, total_after = before[rods].sum(axis=0), after[rods].sum(axis=0)
             external = np.zeros(2) if system.external_source == "none" else total_after - total_before
-            systems.append(SystemBudget(system, total_before, total_after, external))
+            names = tuple(r.name for r in self.rods)
+            where = heat_where(system, names, m0, m1)
+            systems.append(SystemBudget(system, total_before, total_after, external, where))
         return FourMomentumBudget(
             frame_velocity=frame.beta,
             bodies=tuple(r.name for r in self.rods),

@@ -196,6 +196,7 @@ LOOSE_WORDS = {
     r"happens before the contact": "the back end's change starts before the contact and ends at its lab time",
     r"two meanings of rigid": "the signal-limited pole is compressed: not rigid in any sense",
     r"\(the same in every frame\)": "coordinates differ between frames; only the verdicts' kinds do not",
+    r"c²": "c = 1 everywhere: energies are in mass units",
 }
 
 
@@ -235,3 +236,58 @@ def test_v_says_whether_it_is_a_final_or_an_approach_speed(kind: str) -> None:
         assert v in after and help_text.startswith("final speed V"), help_text
     else:
         assert before == {-v} and help_text.startswith("approach speed V") and "−V" in help_text, help_text
+
+
+@pytest.mark.parametrize(
+    ("kind", "values"),
+    [
+        ("wall-collision", {"eps": 0.0}),
+        ("wall-collision", {"eps": 0.5}),
+        ("pole-barn", {}),
+        ("rod-collision", {"eps": 0.5}),
+        ("rod-collision", {"eps": 0.0, "mass2": 0.5}),
+        ("bell-spaceships", {}),
+    ],
+)
+def test_the_heat_names_the_body_it_is_in(
+    kind: str, values: dict[str, float], capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Each system's heat says where it is, and that is where the 4-momenta put it: in the wall when the
+    rods keep their rest masses (in the lab the wall, at rest, takes exactly that energy), in the rods
+    when their rest masses grow by it (in proportion to rest mass when by one factor). The command line
+    prints it beside the number."""
+    scene = rr.build_scene(kind, **values)
+    budget = scene.budget()
+    for system in budget.systems:
+        rods = list(system.system.rods)
+        grown = budget.rest_mass_after[rods] - budget.rest_mass_before[rods]
+        if system.heat == 0.0:
+            assert system.heat_where == "" and not grown.any()
+        elif not grown.any():
+            assert system.heat_where.startswith("all in the wall (") and system.external_source == "wall"
+            assert system.external[0] == pytest.approx(-system.heat, rel=1e-12)  # into the wall, in the lab
+        else:
+            assert grown.sum() == pytest.approx(system.heat, rel=1e-12)
+            assert system.heat_where.startswith("in ") and "wall" not in system.heat_where
+            if len(rods) > 1:
+                factor = budget.rest_mass_after[rods] / budget.rest_mass_before[rods]
+                assert factor == pytest.approx(factor[0], rel=1e-12)
+                assert f"each rest mass × {factor[0]:.6g}" in system.heat_where
+    flags = [f"--{k.replace('_', '-')}={v}" for k, v in values.items()]
+    assert main(["events", kind, *flags]) == 0
+    out = capsys.readouterr().out
+    heat_lines = [line.strip() for line in out.splitlines() if line.strip().startswith("heat (rest energy created)")]
+    assert len(heat_lines) == len(budget.systems)
+    for line, system in zip(heat_lines, budget.systems, strict=True):
+        assert line.endswith(f", {system.heat_where}" if system.heat_where else ": 0"), line
+
+
+def test_the_lessons_heat_is_in_the_wall_and_in_mass_units() -> None:
+    """The partly elastic bounce's heat: the Born-rigid rod keeps its rest mass M, so the kinetic energy
+    it loses, (γ − γ′) M = 0.182 M at V = 0.6 and ε = 0.5, is the wall's."""
+    (step,) = [s for s in lesson_from("paper").steps if s.title == "A partly elastic bounce makes heat"]
+    text = " ".join(step.caption.split())
+    assert "0.182 M (c = 1: energy in mass units)" in text
+    assert "all in the wall (the rod keeps its rest mass)" in text
+    rod = step.resolved.scene.rods[0]
+    assert rod.mass_after == rod.mass_before

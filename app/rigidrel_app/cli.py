@@ -208,10 +208,11 @@ def budget_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
         for label, (e, p) in (("total before", system.total_before), ("total after", system.total_after)):
             lines.append(f"{indent}{label:<{44 - len(indent)}}{'':>12}{_g(e):>16}{_g(p):>16}")
         if system.external_source != "none":
-            src = {"drive": "from the drive", "wall": "from the wall"}[system.external_source]
+            src = {"drive": "from the drive", "wall": "from the wall (negative: into the wall)"}[system.external_source]
             e, p = system.external
             lines.append(f"{indent}{src:<{44 - len(indent)}}{'':>12}{_g(e):>16}{_g(p):>16}")
-        lines.append(f"{indent}heat (rest energy created): {_g(system.heat)}")
+        where = f", {system.heat_where}" if system.heat_where else ""
+        lines.append(f"{indent}heat (rest energy created): {_g(system.heat)}{where}")
     return lines
 
 

@@ -14,6 +14,8 @@ scene in the step's frame (c = 1):
 ``{frame.beta}``            the step's frame velocity (``frame.name``)
 ``{heat}``                  rest energy created (the budget's heat; of the scene's first
                             physical system where its rods are alternatives)
+``{heat_where}``            which body that heat is in, in words (``"all in the wall (the rod
+                            keeps its rest mass)"``)
 ``{verdict[1]}``            the core's first causal verdict in words, its events in the step's
                             frame, each labelled (``(lab t, x) = ...`` in the lab)
 ``{note[1]}``               the scene's first note in words (the string's strain, the barn's
@@ -117,6 +119,7 @@ def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
         "param": _Table("param", {k: v for k, v in scene.parameters.items()}, rr.describe(scene).renamed),
         "frame": FrameValues(frame.beta, frame.label()),
         "heat": scene.budget(frame=frame).systems[0].heat,
+        "heat_where": scene.budget(frame=frame).systems[0].heat_where,
         "verdict": _Table("verdict", {str(k + 1): v for k, v in enumerate(verdicts)}),
         "note": _Table("note", {str(k + 1): n[:1].upper() + n[1:] for k, n in enumerate(scene.notes(frame=frame))}),
     }
