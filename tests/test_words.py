@@ -291,3 +291,30 @@ def test_the_lessons_heat_is_in_the_wall_and_in_mass_units() -> None:
     assert "all in the wall (the rod keeps its rest mass)" in text
     rod = step.resolved.scene.rods[0]
     assert rod.mass_after == rod.mass_before
+
+
+#: Words that describe a velocity change as one frame sees it: in another the same change may speed
+#: the end up, or reverse it. An event's meaning is printed under every frame's table, so it says
+#: "changing velocity", or names the frame its word holds in.
+FRAME_BOUND = re.compile(r"decelerat|brak|slows|speeds up|comes to rest|trailing|leading", re.IGNORECASE)
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_event_meanings_hold_in_every_frame(kind: str) -> None:
+    for event in rr.describe(kind).events:
+        found = FRAME_BOUND.search(event.meaning)
+        assert found is None or re.search(r"in the (?:lab|barn)\b", event.meaning), (event.name, event.meaning)
+
+
+def test_the_order_of_two_spacelike_starts_names_its_frame() -> None:
+    """The deceleration's two starts are spacelike apart: "first" is said of the lab, and the caption
+    says that in the rod's frame before they are simultaneous (the core's numbers)."""
+    (step,) = [s for s in lesson_from("paper").steps if s.resolved.scene.kind == "deceleration"]
+    text = " ".join(step.caption.split())
+    scene = step.resolved.scene
+    trailing, leading = scene.events["-T_F"], scene.events["-T_B"]
+    assert rr.causal_relation(trailing, leading).kind == "spacelike"
+    assert "In the lab its trailing (right) end starts braking first" in text
+    before = scene.events_in(frame=scene.frame("rod before"))
+    assert before["-T_F"][0] == pytest.approx(before["-T_B"][0], rel=1e-12)
+    assert f"In the rod's frame before, both ends start together, at t′ = {before['-T_F'][0]:.4g}" in text

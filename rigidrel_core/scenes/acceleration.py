@@ -179,8 +179,12 @@ DECELERATION = SceneDescription(
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod before",
     events=(
-        EventDescription("-T_F", "the right (trailing) end starts braking", "Sec. 3, Eq. (9) with t → −t"),
-        EventDescription("-T_B", "the left (leading) end starts braking", "Sec. 3, Eq. (9) with t → −t"),
+        EventDescription(
+            "-T_F", "the right end (trailing, in the lab) starts changing velocity", "Sec. 3, Eq. (9) with t → −t"
+        ),
+        EventDescription(
+            "-T_B", "the left end (leading, in the lab) starts changing velocity", "Sec. 3, Eq. (9) with t → −t"
+        ),
     ),
     meanings=MappingProxyType({"v": "approach speed V (c = 1): the rod moves at −V until it brakes to rest"}),
     order=20,

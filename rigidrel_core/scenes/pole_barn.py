@@ -546,8 +546,10 @@ POLE_BARN = SceneDescription(
     frames=("lab", "pole before"),
     default_frame="pole before",
     events=(
-        EventDescription("T_1", "the Born-rigid pole's rear end starts to decelerate", "Sec. 5, Eq. (22)"),
-        EventDescription("T_1'", "the Born-rigid pole's rear end comes to rest", "Sec. 5, Eq. (24)"),
+        EventDescription("T_1", "the Born-rigid pole's rear (right) end starts changing velocity", "Sec. 5, Eq. (22)"),
+        EventDescription(
+            "T_1'", "the Born-rigid pole's rear end has its final velocity (at rest in the barn)", "Sec. 5, Eq. (24)"
+        ),
         EventDescription("T_s", "the stop front reaches the signal-limited pole's rear end", "Sec. 5"),
     ),
     objects=(ObjectKind.WALL, ObjectKind.BARN_DOOR),

@@ -87,7 +87,7 @@ WALL_COLLISION = SceneDescription(
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod before",
     events=(
-        EventDescription("T_1", "the far end starts to decelerate", "Sec. 5, Eq. (22)"),
+        EventDescription("T_1", "the far (right) end starts changing velocity", "Sec. 5, Eq. (22)"),
         EventDescription("T_1'", "the far end has its final velocity", "Sec. 5, Eq. (24)"),
     ),
     objects=(ObjectKind.WALL,),

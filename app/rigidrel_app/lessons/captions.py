@@ -6,6 +6,7 @@ scene in the step's frame (c = 1):
 ==========================  ===========================================================
 ``{event[T_1].t}``          a named event's time in the step's frame (``.x`` its place)
 ``{lab[T_1].t}``            the same event in the lab
+``{preset[rod before][T_1].t}``  the same event in one of the scene's frame presets
 ``{signal[S].t}``           where the light from the key event arrives (``S``, ``R``, ``S_1``...)
 ``{rod[1].v_after}``        rod 1's lab velocity after (``v_before``, ``gamma_before``,
                             ``gamma_after``, ``rest_length``, ``mass_before``, ``mass_after``,
@@ -114,6 +115,13 @@ def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
     return {
         "event": _Table("event", {k: EventValue(*v) for k, v in scene.events_in(frame=frame).items()}),
         "lab": _Table("lab", {k: EventValue(*v) for k, v in scene.events.items()}),
+        "preset": _Table(
+            "preset",
+            {
+                name: _Table(f"preset[{name}]", {k: EventValue(*v) for k, v in scene.events_in(frame=f).items()})
+                for name, f in scene.frames.items()
+            },
+        ),
         "signal": _Table("signal", {leg.name: EventValue(*leg.arrival) for leg in signals.legs}),
         "rod": _Table("rod", rods),
         "param": _Table("param", {k: v for k, v in scene.parameters.items()}, rr.describe(scene).renamed),
