@@ -35,6 +35,10 @@ class PhysicalSystem:
     """Invariant rest energy the process creates in this system (epsilon < 1, a plastic stop)."""
 
 
+#: Who takes the heat when the rods keep their rest masses, by what acts on them from outside.
+_TAKEN_BY: dict[ExternalSource, str] = {"wall": "in the wall"}
+
+
 def _the(name: str) -> str:
     """``"the rod"``, ``"rod 1"``: a rod's name with its article."""
     return name if name.startswith("rod ") else f"the {name}"
@@ -51,7 +55,7 @@ def heat_where(system: PhysicalSystem, names: tuple[str, ...], mass_before: Floa
         return ""
     if np.array_equal(m0, m1):
         keeps = "keeps its rest mass" if len(rods) == 1 else "keep their rest masses"
-        where = "in the wall" if system.external_source == "wall" else "outside the rods"
+        where = _TAKEN_BY.get(system.external_source, "outside the rods")
         return f"all {where} ({' and '.join(_the(names[i]) for i in rods)} {keeps})"
     if len(rods) == 1:
         return f"in {_the(names[rods[0]])} (its rest mass grows from {m0[0]:.6g} to {m1[0]:.6g})"
