@@ -114,6 +114,9 @@ class ObjectField:
     """What reaching it means, in a colour key's words: ``"breaks"``, ``"its final"``."""
     percent: bool = False
     """Shown in per cent (a strain)."""
+    measured_in: str = ""
+    """The convention the value depends on, as a title says it: ``"in the rear ship's comoving frame"``
+    (``""``: none)."""
 
 
 @dataclass(frozen=True)

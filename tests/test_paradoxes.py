@@ -231,8 +231,8 @@ def test_bell_events_command_prints_the_string(capsys: pytest.CaptureFixture[str
 
     assert main(["events", "bell-spaceships", "--v", "0.6", "--separation", "1", "--a-back", "0.5"]) == 0
     out = capsys.readouterr().out
-    assert "gamma s = 1.25 apart" in out
-    assert "gamma s - l = 1.15" in out
+    assert "γs = 1.25 apart" in out
+    assert "γs − l = 1.15" in out
 
 
 def test_pole_barn_events_command_prints_the_verdicts(capsys: pytest.CaptureFixture[str]) -> None:

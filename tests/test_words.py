@@ -197,6 +197,9 @@ LOOSE_WORDS = {
     r"two meanings of rigid": "the signal-limited pole is compressed: not rigid in any sense",
     r"\(the same in every frame\)": "coordinates differ between frames; only the verdicts' kinds do not",
     r"c²": "c = 1 everywhere: energies are in mass units",
+    r"(?:on|spanning) the same (?:two )?rear ends": "the rod starts between them; its front falls behind",
+    r"gamma s\b|\bs - l\b": "γs and s − l, as everywhere else",
+    r"breaks where its strain": "the strain reaches the breaking strain at an event on the string's rear end",
 }
 
 
@@ -318,3 +321,26 @@ def test_the_order_of_two_spacelike_starts_names_its_frame() -> None:
     before = scene.events_in(frame=scene.frame("rod before"))
     assert before["-T_F"][0] == pytest.approx(before["-T_B"][0], rel=1e-12)
     assert f"In the rod's frame before, both ends start together, at t′ = {before['-T_F'][0]:.4g}" in text
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_every_light_signal_row_says_what_it_is(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    """The light-signal table names each arrival (which end of which rod), and says what the key event
+    is ("the start" of Bell's ships is where the rear ship's rear end starts, at the origin)."""
+    scene = rr.describe(kind).build()
+    signals = signals_in(scene, rr.LAB)
+    assert signals.key_definition.startswith(f"{signals.key_phrase}: ")
+    for leg in signals.legs:
+        if leg.name.startswith("S"):
+            assert leg.meaning.startswith(f"light from {signals.key_phrase} reaches the ")
+        else:
+            assert leg.meaning.startswith("its echo is back at the ")
+        if scene.n_rods > 1:
+            rod = scene.rods[int(leg.name.split("_")[1]) - 1].name
+            assert leg.meaning.endswith(rod), leg.meaning
+    out = " ".join(events_output(kind, "lab", capsys).split())
+    assert f"({signals.key_definition})" in out
+    for leg in signals.legs:
+        assert leg.meaning in out
+    if kind == "bell-spaceships":
+        assert "the start: the event at the origin of every frame, where the rear ship's left end starts" in out

@@ -144,6 +144,7 @@ def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
                 "arrival": leg.name,
                 "t": leg.arrival[0],
                 "x": leg.arrival[1],
+                "meaning": leg.meaning,
                 "from": {"t": leg.source[0], "x": leg.source[1]},
             }
             for leg in signals_in(scene, frame).legs
@@ -233,9 +234,10 @@ def signal_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
     table in ``frame``, every coordinate pair in the words labelled with its frame."""
     signals = signals_in(scene, frame)
     lines = ["", f"light from {signals.key_phrase}: S reaches a far end, R is the echo back at its near end"]
-    lines.append(f"{'arrival':<12}{'t':>20}{'x':>20}")
+    lines += textwrap.wrap(f"({signals.key_definition})", 100, subsequent_indent=" ")
+    lines.append(f"{'arrival':<12}{'t':>20}{'x':>20}   meaning")
     for leg in signals.legs:
-        lines.append(f"{leg.name:<12}{_g(leg.arrival[0]):>20}{_g(leg.arrival[1]):>20}")
+        lines.append(f"{leg.name:<12}{_g(leg.arrival[0]):>20}{_g(leg.arrival[1]):>20}   {leg.meaning}")
     rows = change_rows(scene, frame)
     lines += [
         "",

@@ -56,8 +56,9 @@ or, where the front ship's rear already coasts, ``cosh delta - 1 = ((gamma - 1) 
 break event is the string's rear end there, ``C_1 + R (sinh theta, cosh theta)``, i.e. lab
 ``(R sinh theta, l + 2 R sinh^2(theta/2))`` (Sec. 3, Eq. (4) about ``C_1``, ``R = 1/a + l``).
 
-**The comparison rod** spans the same two rear ends, rest length ``s``, with the same rear
-acceleration ``a``: Born-rigid, its front end accelerates less, ``a / (1 + a s)`` (Eq. (15)),
+**The comparison rod** starts between the same two rear ends (lab ``x = 0`` and ``x = s`` at
+``t = 0``), rest length ``s``, its rear end moving with the rear ship's (the same rear
+acceleration ``a``): Born-rigid, its front end accelerates less, ``a / (1 + a s)`` (Eq. (15)),
 and reaches ``V`` later, at ``gamma V (1/a + s)``; it keeps its rest length ``s``, so its front end
 falls behind the front ship's rear.
 """
@@ -303,11 +304,12 @@ class BellString:
             "breaking strain" if breaks else "final strain",
             "breaks" if breaks else "its final",
             percent=True,
+            measured_in="in the rear ship's comoving frame",
         )
         lab = self.break_event
         meaning = (
-            "the string breaks: its strain, measured in the rear ship's comoving frame, reaches the breaking "
-            "strain (the event of its rear end)"
+            "the string's strain, measured in the rear ship's comoving frame, reaches the breaking strain: the "
+            "event on the string's rear end (where along it it snaps is not modelled)"
         )
         event = None if lab is None else ObjectEvent("break", lab, parts=True, state="broken", meaning=meaning)
         return SceneObject("string", ObjectKind.STRING, (self.rear_end, front_end), field=field, event=event)
@@ -396,12 +398,14 @@ class BellScene(Scene):
     @property
     def systems(self) -> tuple[PhysicalSystem, ...]:
         """Two physical systems, never summed: the two ships (and the massless string between them),
-        and the Born-rigid rod on the same two rear ends, which stands in their place (a comparison:
+        and the Born-rigid rod that starts between the same two rear ends, which stands in their place (a comparison:
         it occupies the ships' places, so it is an alternative to them, not a third body)."""
         return (
-            PhysicalSystem("the two ships (and the string between them)", (REAR_SHIP, FRONT_SHIP), "drive", 0.0),
             PhysicalSystem(
-                "the Born-rigid rod on the same rear ends (instead of the ships, never beside them)",
+                "the two ships (the string between them taken as massless)", (REAR_SHIP, FRONT_SHIP), "drive", 0.0
+            ),
+            PhysicalSystem(
+                "the Born-rigid rod that starts between the same rear ends (instead of the ships, never beside them)",
                 (COMPARISON_ROD,),
                 "drive",
                 0.0,
@@ -416,10 +420,11 @@ class BellScene(Scene):
         g = self.rods[0].motion.velocity_final.lorentz_factor()
         breaks = self.breaking_strain is not None and self.breaking_strain <= self.final_strain
         lines = [
-            f"the rear ends stay {self.separation:.6g} apart in the lab; in the ships' frame after they are "
-            f"gamma s = {g * self.separation:.6g} apart",
+            f"each ship is a Born-rigid rod of rest length l = {self.ship_length:.6g}, its front end accelerating "
+            f"less than its rear, a/(1 + a l); the rear ends stay {self.separation:.6g} apart in the lab; in the "
+            f"ships' frame after they are γs = {g * self.separation:.6g} apart",
             "the string's strain is its rest length, measured in the rear ship's momentarily comoving frame, "
-            f"over s - l, minus 1: that rest length grows from s - l = {self.string_unstretched:.6g} to gamma s - l "
+            f"over s − l, minus 1: that rest length grows from s − l = {self.string_unstretched:.6g} to γs − l "
             f"= {self.string_final:.6g} (strain {self.final_strain:.4g}){' if the string holds' if breaks else ''}; "
             f"the Born-rigid rod, an alternative to the ships, keeps its rest length {self.separation:.6g}",
         ]
@@ -433,9 +438,11 @@ class BellScene(Scene):
             )
         else:
             lines.append(
-                f"the string breaks where its strain, measured in the rear ship's comoving frame, reaches "
-                f"{self.breaking_strain:.4g}: at its rear end, {event_in_words(event, frame, 6)} (measured in the "
-                "front ship's frame, the same strain is reached at another event)"
+                f"the string's strain, measured in the rear ship's comoving frame (along its line of simultaneity "
+                f"through the string's rear end), reaches the breaking strain {self.breaking_strain:.4g} at the "
+                f"event {event_in_words(event, frame, 6)} on the string's rear end: the string breaks then, where "
+                "along it the model does not say (measured in the front ship's frame, the same strain is reached "
+                "at another event)"
             )
         return tuple(lines)
 
@@ -547,9 +554,10 @@ def _figure_caption(scene: Scene) -> str:
         f"rear ends stay {s:g} apart in the lab and end γs = {v.lorentz_factor() * s:.4g} apart in the ships' frame. "
         f"The string from the rear ship's front to the front ship's rear {'would stretch' if broken else 'stretches'} "
         f"from rest length {scene.string_unstretched:.4g} to {scene.string_final:.4g} (strain "
-        f"{scene.final_strain:.3g}){' if it held' if broken else ''}: {fate}. The Born-rigid rod on the same rear "
-        f"ends (dashed, drawn instead of the ships) keeps its rest length {s:g}: its front accelerates less, "
-        "a/(1 + a s) (Eq. (15)), and reaches V only at T_Frod."
+        f"{scene.final_strain:.3g}){' if it held' if broken else ''}: {fate}. The Born-rigid rod that starts between "
+        f"the same rear ends, its rear end with the rear ship's (dashed, drawn instead of the ships), keeps its rest "
+        f"length {s:g}: its front accelerates less, a/(1 + a s) (Eq. (15)), falls behind the front ship and reaches "
+        "V only at T_Frod."
     )
 
 
@@ -568,8 +576,9 @@ BELL_SPACESHIPS = SceneDescription(
     summary=(
         "Two ships whose rear ends have the same proper acceleration stay a lab distance s apart; the string "
         "between them, its length measured in the rear ship's comoving frame, stretches towards γs − l (and "
-        "breaks first if its breaking strain is lower). A Born-rigid rod on the same rear ends, instead of "
-        "the ships, keeps its rest length."
+        "breaks first if its breaking strain is lower). A Born-rigid rod that starts between the same rear ends, "
+        "instead of the ships, its rear end moving with the rear ship's, keeps its rest length: its front "
+        "accelerates less and falls behind the front ship."
     ),
     source="Sec. 1; Sec. 3",
     constructor=bell_spaceships,

@@ -44,7 +44,7 @@ from .lanes import (
 from .layers import Layer
 from .layout import CanvasLayout
 from .sampling import ADAPTIVE, Sampler
-from .signals import Signals, event_cone_items, signals_in, verdict_lines
+from .signals import Signals, event_cone_items, key_definition, signals_in, verdict_lines
 from .state import Resolved, format_value
 from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style, signed
 
@@ -440,7 +440,9 @@ def signals_readout(resolved: Resolved) -> str:
     readout's) as readout Markdown, or ``""`` while the :attr:`~.layers.Layer.SIGNALS` layer is hidden."""
     if Layer.SIGNALS not in resolved.layers:
         return ""
-    return "".join(f"  \n**Light** {line}" for line in verdict_lines(resolved.scene))
+    definition = key_definition(resolved.scene)
+    lines = (definition[:1].upper() + definition[1:] + ".", *verdict_lines(resolved.scene))
+    return "".join(f"  \n**Light** {line}" for line in lines)
 
 
 def readout_markdown(resolved: Resolved) -> str:
