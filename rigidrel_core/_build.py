@@ -46,10 +46,11 @@ A_FRONT = Parameter(
     "a_front",
     "a′_F",
     "a′_F L0",
-    "1/L0",
+    "1/length unit",
     ACCELERATION,
     0.5,
-    "front-end proper acceleration a′_F; the back end has a′_B = a′_F/(1 − a′_F L0) (Sec. 3, Eq. (15))",
+    "front-end proper acceleration a′_F (the paper's prime: measured in the end's momentary rest frame); the "
+    "back end has a′_B = a′_F/(1 − a′_F L0) (Sec. 3, Eq. (15))",
     Slider(0.01, 0.99, 0.01),
     constraint="a_front * length in (0, 1)",
 )

@@ -101,7 +101,7 @@ class Parameter:
     label: str
     """The app's control label (rod 1 sets the units there: ``"M2/M1"``, ``"a′_F L0"``)."""
     unit: str
-    """``"c"`` for velocities, ``"L0"``-style for lengths, ``"1/L0"`` for accelerations, ``""``."""
+    """``"c"`` for velocities, ``"length unit"`` for lengths, ``"1/length unit"`` for accelerations, ``""``."""
     domain: Interval
     default: float | None
     help: str

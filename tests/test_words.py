@@ -23,6 +23,7 @@ import rigidrel_core as rr
 from rigidrel_app.cli import main
 from rigidrel_app.lessons import lesson_from
 from rigidrel_app.view.layers import Layer
+from rigidrel_app.view.scenario import flag
 from rigidrel_app.view.scene_view import readout_markdown
 from rigidrel_app.view.signals import signals_in
 from rigidrel_app.view.state import Settings, build
@@ -344,3 +345,36 @@ def test_every_light_signal_row_says_what_it_is(kind: str, capsys: pytest.Captur
         assert leg.meaning in out
     if kind == "bell-spaceships":
         assert "the start: the event at the origin of every frame, where the rear ship's left end starts" in out
+
+
+def test_the_scene_listing_reads_by_column_and_says_which_frame_each_command_shows(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """Every option stands apart from its symbol (``--breaking-strain`` once ran into ``e_b``); each scene
+    says which frame ``events`` shows (the lab) and which ``serve`` and ``export`` open in (its default);
+    the barycentric frame says what it is."""
+    assert main(["scenes"]) == 0
+    out = capsys.readouterr().out
+    symbols = {flag(p): p.symbol for d in rr.scene_descriptions().values() for p in d.parameters}
+    rows = re.findall(r"^  (--\S+) {2,}(\S+) ", out, re.MULTILINE)
+    assert len(rows) == sum(len(d.parameters) for d in rr.scene_descriptions().values())
+    for option, symbol in rows:
+        assert symbols[option] == symbol, (option, symbol)
+    for kind, d in rr.scene_descriptions().items():
+        block = out.split(f"\n{kind}  (", 1)[-1] if not out.startswith(kind) else out
+        block = block.split("\n\n", 1)[0]
+        assert f"`serve` and `export` open in {d.default_frame}; `events` shows the lab unless --frame" in block
+    assert "barycentric (zero total momentum)" in out
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_options_help_names_only_the_scenes_own_frames_and_units(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit):
+        main(["events", kind, "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    own = set(rr.describe(kind).frames)
+    for other in {f for d in rr.scene_descriptions().values() for f in d.frames} - own:
+        assert f"'{other}'" not in text and f" {other}," not in text and not text.endswith(f" {other}"), other
+    assert "[1/L0]" not in text  # a proper acceleration is in 1/(length unit), whatever L0 is
+    if "--a-front" in text:
+        assert "[1/length unit]" in text

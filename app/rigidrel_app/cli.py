@@ -21,6 +21,7 @@ import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
 from .view.scenario import (
+    FRAME_GLOSSES,
     FRAME_HELP,
     Scenario,
     ScenarioError,
@@ -175,7 +176,7 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
     for name, ((t, x), meaning) in object_events(scene, frame).items():
         lines.append(f"{name:<12}{_g(t):>20}{_g(x):>20}   {meaning}")
     width = max(len(r.name) for r in scene.rods) + 2
-    lines += ["", f"{'rod':<{width}}{'V before (lab)':>20}{'V after (lab)':>20}"]
+    lines += ["", f"{'body':<{width}}{'V before (lab)':>20}{'V after (lab)':>20}"]
     for rod, v0, v1 in zip(scene.rods, scene.initial_velocities, scene.final_velocities, strict=True):
         lines.append(f"{rod.name:<{width}}{_g(v0):>20}{_g(v1):>20}")
     presets = "  ".join(f"{k}: {_g(f.beta)}" for k, f in scene.frames.items())
@@ -266,11 +267,15 @@ def cmd_events(args: argparse.Namespace) -> int:
 def cmd_scenes(args: argparse.Namespace) -> int:
     """Every registered scene, its parameters with their ranges, its frames and events."""
     del args
+    descriptions = rr.scene_descriptions().values()
+    width = max(len(flag(p)) for d in descriptions for p in d.parameters) + 2  # a flag never runs into its symbol
     for kind, d in rr.scene_descriptions().items():
         print(f"{kind}  ({d.title}; {d.source})\n  {d.summary}")
         for p in d.parameters:
-            print(f"  {flag(p):<14}{p.symbol:<6}{p.allowed():<52} default {format_value(p.default)}")
-        print(f"  frames: {', '.join(d.frames)} (default {d.default_frame})")
+            print(f"  {flag(p):<{width}}{p.symbol:<6}{p.allowed():<52} default {format_value(p.default)}")
+        frames = ", ".join(f"{f} ({FRAME_GLOSSES[f]})" if f in FRAME_GLOSSES else f for f in d.frames)
+        print(f"  frames: {frames}")
+        print(f"  default frame: `serve` and `export` open in {d.default_frame}; `events` shows the lab unless --frame")
         print(f"  events: {', '.join(f'{e.name} ({e.meaning})' for e in d.events)}\n")
     return 0
 

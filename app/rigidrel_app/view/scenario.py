@@ -25,8 +25,9 @@ from __future__ import annotations
 import argparse
 import math
 import shlex
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from types import MappingProxyType
 from typing import Any, NoReturn
 
 import rigidrel_core as rr
@@ -181,7 +182,9 @@ class _Renamed(argparse.Action):
         raise argparse.ArgumentError(self, f"{old} is now {self.new} (the parameter was renamed)")
 
 
-FRAME_HELP = "frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'"
+FRAME_HELP = "frame velocity beta in (-1, 1), or a preset's name (quoted if it has spaces)"
+#: Frame presets whose name a student may not know, with what they are.
+FRAME_GLOSSES: Mapping[str, str] = MappingProxyType({"barycentric": "zero total momentum"})
 
 
 def add_scene_options(parser: argparse.ArgumentParser, description: rr.SceneDescription, frame_help: str) -> None:
@@ -200,7 +203,8 @@ def add_scene_options(parser: argparse.ArgumentParser, description: rr.SceneDesc
         )
     for old, new in description.renamed.items():  # a line written before a parameter was renamed
         parser.add_argument("--" + old.replace("_", "-"), action=_Renamed, new=new, help=argparse.SUPPRESS)
-    parser.add_argument("--frame", default=None, help=frame_help + f"; presets: {', '.join(description.frames)}")
+    presets = ", ".join(f"{f} ({FRAME_GLOSSES[f]})" if f in FRAME_GLOSSES else f for f in description.frames)
+    parser.add_argument("--frame", default=None, help=f"{frame_help}; presets: {presets}")
 
 
 def add_scenario_options(parser: argparse.ArgumentParser) -> None:
