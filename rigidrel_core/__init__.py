@@ -50,6 +50,8 @@ from ._signals import CausalRelation as CausalRelation
 from ._signals import ChangeVerdict as ChangeVerdict
 from ._signals import causal_relation as causal_relation
 from ._validate import ParameterError as ParameterError
+from ._words import event_shown as event_shown
+from ._words import shown as shown
 from .scenes.acceleration import constant_acceleration as constant_acceleration
 from .scenes.acceleration import deceleration as deceleration
 from .scenes.acceleration import velocity_change as velocity_change
@@ -111,11 +113,13 @@ __all__ = [
     "deceleration",
     "default_frame",
     "describe",
+    "event_shown",
     "impulsive_start",
     "pole_barn",
     "register_scene",
     "rod_collision",
     "scene_descriptions",
+    "shown",
     "solve_collision",
     "unregister_scene",
     "velocity_change",

@@ -378,3 +378,45 @@ def test_options_help_names_only_the_scenes_own_frames_and_units(kind: str, caps
     assert "[1/L0]" not in text  # a proper acceleration is in 1/(length unit), whatever L0 is
     if "--a-front" in text:
         assert "[1/length unit]" in text
+
+
+def row_numbers(out: str, first: str) -> list[str]:
+    """The numbers of the last row of ``out`` that starts with ``first`` (after its indent)."""
+    row = [line for line in out.splitlines() if line.strip().startswith(first)][-1]
+    return row.strip().removeprefix(first).split()
+
+
+@pytest.mark.parametrize(
+    ("args", "first", "column"),
+    [
+        # T_1 = (-gamma V L0, gamma L0) in the lab: t' = gamma (t + V x) = 0 in the pole's frame
+        (["pole-barn", "--v=0.3", "--frame=pole before"], "T_1 ", 0),
+        # the signal-limited pole's wall gives no energy in the barn's frame: gamma M - gamma M
+        (["pole-barn", "--v=0.9"], "from the wall (negative: into the wall)", 0),
+        # the barycentric frame's momenta cancel
+        (["rod-collision", "--eps=0.5", "--frame=barycentric"], "total after", 1),
+    ],
+)
+def test_rounding_noise_is_not_printed_as_data(
+    args: list[str], first: str, column: int, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A value that is zero in exact arithmetic, formed from terms of order 1, prints as 0, not as
+    5.6e-17; and every row of the budget keeps its numbers apart."""
+    assert main(["events", *args]) == 0
+    out = capsys.readouterr().out
+    assert row_numbers(out, first)[column] == "0", row_numbers(out, first)
+    budget = out.split("4-momentum", 1)[1].split("\n\n", 1)[0]
+    for label in ("total before", "total after"):
+        assert len(row_numbers(budget, label)) == 2  # E and p, never run together
+
+
+def test_a_small_value_is_shown_and_noise_is_not() -> None:
+    """Noise is judged against the terms a value was formed from, never against other rows: in the lab
+    nothing changes; a tiny true coordinate (V = 1e-9) stays; the boost's noise goes."""
+    scene = rr.pole_barn(1e-9, 1.0)
+    before = scene.frame("pole before")
+    assert rr.event_shown(scene.events["T_1"], rr.LAB) == scene.events["T_1"]
+    t1, t1_end = scene.events_in(frame=before)["T_1"], scene.events_in(frame=before)["T_1'"]
+    assert rr.event_shown(t1, before)[0] == 0.0
+    assert rr.event_shown(t1_end, before)[0] == pytest.approx(1e-9, rel=1e-6)
+    assert rr.shown(1e-12, 1.0) == 0.0 and rr.shown(2e-12, 1.0) == 2e-12

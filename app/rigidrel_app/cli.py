@@ -17,6 +17,8 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
+import numpy as np
+
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
@@ -155,8 +157,18 @@ def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
     }
 
 
-def _g(x: float) -> str:
+def _g(x: float, scale: float | None = None) -> str:
+    """``x`` to 10 significant digits; with ``scale``, the size of the terms it was formed from, ``0``
+    where it is rounding noise of them (:func:`rigidrel_core.shown`)."""
+    if scale is not None:
+        x = rr.shown(x, scale)
     return f"{x:.10g}" if x != 0 else "0"
+
+
+def _cells(event: tuple[float, float], frame: rr.Frame) -> str:
+    """An event of ``frame`` as the t and x columns of a table, the boost's rounding noise shown as 0."""
+    t, x = rr.event_shown(event, frame)
+    return f"{_g(t):>20}{_g(x):>20}"
 
 
 def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
@@ -171,10 +183,10 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
         "",
         f"{'event':<12}{'t':>20}{'x':>20}   meaning",
     ]
-    for name, (t, x) in scene.events_in(frame=frame).items():
-        lines.append(f"{name:<12}{_g(t):>20}{_g(x):>20}   {d.event(name).meaning}")
-    for name, ((t, x), meaning) in object_events(scene, frame).items():
-        lines.append(f"{name:<12}{_g(t):>20}{_g(x):>20}   {meaning}")
+    for name, event in scene.events_in(frame=frame).items():
+        lines.append(f"{name:<12}{_cells(event, frame)}   {d.event(name).meaning}")
+    for name, (event, meaning) in object_events(scene, frame).items():
+        lines.append(f"{name:<12}{_cells(event, frame)}   {meaning}")
     width = max(len(r.name) for r in scene.rods) + 2
     lines += ["", f"{'body':<{width}}{'V before (lab)':>20}{'V after (lab)':>20}"]
     for rod, v0, v1 in zip(scene.rods, scene.initial_velocities, scene.final_velocities, strict=True):
@@ -206,13 +218,16 @@ def budget_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
         ):
             for i in system.system.rods:
                 name, m, (e, p) = budget.bodies[i], masses[i], em[i]
-                lines.append(f"{indent}{name + ' ' + phase:<{44 - len(indent)}}{_g(m):>12}{_g(e):>16}{_g(p):>16}")
-        for label, (e, p) in (("total before", system.total_before), ("total after", system.total_after)):
-            lines.append(f"{indent}{label:<{44 - len(indent)}}{'':>12}{_g(e):>16}{_g(p):>16}")
+                lines.append(f"{indent}{name + ' ' + phase:<{44 - len(indent)}}{_g(m):>12} {_g(e):>15} {_g(p):>15}")
+        # the totals, and what came from outside, are sums: noise of their terms' size is shown as 0
+        rods = list(system.system.rods)
+        size_before, size_after = np.abs(budget.before[rods]).sum(axis=0), np.abs(budget.after[rods]).sum(axis=0)
+        rows = [("total before", system.total_before, size_before), ("total after", system.total_after, size_after)]
         if system.external_source != "none":
             src = {"drive": "from the drive", "wall": "from the wall (negative: into the wall)"}[system.external_source]
-            e, p = system.external
-            lines.append(f"{indent}{src:<{44 - len(indent)}}{'':>12}{_g(e):>16}{_g(p):>16}")
+            rows.append((src, system.external, size_before + size_after))
+        for label, (e, p), (size_e, size_p) in rows:
+            lines.append(f"{indent}{label:<{44 - len(indent)}}{'':>12} {_g(e, size_e):>15} {_g(p, size_p):>15}")
         where = f", {system.heat_where}" if system.heat_where else ""
         lines.append(f"{indent}heat (rest energy created): {_g(system.heat)}{where}")
     return lines
@@ -238,7 +253,7 @@ def signal_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
     lines += textwrap.wrap(f"({signals.key_definition})", 100, subsequent_indent=" ")
     lines.append(f"{'arrival':<12}{'t':>20}{'x':>20}   meaning")
     for leg in signals.legs:
-        lines.append(f"{leg.name:<12}{_g(leg.arrival[0]):>20}{_g(leg.arrival[1]):>20}   {leg.meaning}")
+        lines.append(f"{leg.name:<12}{_cells(leg.arrival, frame)}   {leg.meaning}")
     rows = change_rows(scene, frame)
     lines += [
         "",
@@ -248,8 +263,8 @@ def signal_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
     if rows:
         width = max(len(what) for what, _ in rows) + 2
         lines.append(f"{'change':<{width}}{'t':>20}{'x':>20}")
-        for what, (t, x) in rows:
-            lines.append(f"{what:<{width}}{_g(t):>20}{_g(x):>20}")
+        for what, event in rows:
+            lines.append(f"{what:<{width}}{_cells(event, frame)}")
     for verdict in verdict_lines(scene, frame):
         lines += textwrap.wrap(verdict, 100, initial_indent="  ", subsequent_indent="    ")
     return lines
