@@ -142,6 +142,9 @@ def test_every_registered_scene_exports_its_pages(kind: str) -> None:
     sliders = figure["layout"]["sliders"]
     assert len(sliders) == 2 and all(len(s["steps"]) >= 2 for s in sliders)
     assert len(figure["frames"]) >= 4
+    x_title = figure["layout"]["xaxis"]["title"]["text"]
+    assert x_title.endswith("(in the scene's length unit, c = 1)") and "rod 1" not in x_title  # ships, poles too
+    assert figure["layout"]["xaxis2"]["title"]["text"] == "lab t, or t′ of the frame chosen"  # whose time
     settings = settings_for(scene, frame)
     for axis in slider_axes(settings):
         assert_evenly_spaced(axis.values, is_log(settings, axis))

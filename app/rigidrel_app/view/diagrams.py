@@ -50,6 +50,9 @@ ENDS_NOW_SYMBOL = "diamond-open"
 LENGTH_NOW_NAME = "lengths now"
 #: The length plot's top, per the largest length: room above the rest length for event labels.
 LENGTH_HEADROOM = 1.3
+#: The length panel's time axis: each curve is drawn against its own frame's time (its legend says
+#: which, "(t)" or "(t′)").
+LENGTH_TIME_TITLE = "lab t, or t′ of the frame chosen"
 
 
 @dataclass(frozen=True)
@@ -385,7 +388,7 @@ def length_static(
             items.append(Label(te, le, text, Style(INK), size=label_px, movable=True))
     chart = Chart(
         items=tuple(items),
-        x_title="time in its own frame (t or t′)",
+        x_title=LENGTH_TIME_TITLE,
         y_title="equal-time length",
         x_range=t_range,
         y_range=(0.0, top * LENGTH_HEADROOM if top > 0 else 1.0),

@@ -164,7 +164,7 @@ class Drawn:
     ) -> tuple[tuple[Item, ...], ...]:
         """The moving parts while the lower lane rides a point: on the lab diagram its now-line and the
         comoving frame's line of simultaneity through the point's event (sweeping as the point
-        accelerates, always through the horizon event); on the second diagram (the scene's default
+        accelerates, always through the pivot event); on the second diagram (the scene's default
         frame) the same comoving line and the riding lane's rod ends, boosted there by the core; on
         the length panel the lab's lengths and the comoving frame's (the ridden rod's: its rest length)."""
         assert instant is not None
@@ -292,7 +292,7 @@ def build_drawing(
 
     lab_view, frame_view = _views(frame)
     lab_sweep, frame_sweep = window_x_range(scene, (lab,), window), window_x_range(scene, (frame,), window)
-    if resolved.ride is not None:  # the riding lane's lines of simultaneity meet at the horizon event: show it
+    if resolved.ride is not None:  # the riding lane's lines of simultaneity meet at the pivot event: show it
         lab_sweep = _reaching(lab_sweep, scene.horizon_event(resolved.ride.rod)[1])
         frame_sweep = _reaching(frame_sweep, scene.horizon_event(resolved.ride.rod, frame=frame)[1])
     lab_x, lab_t = equal_scale_ranges(lab_sweep, window, plot_area)
@@ -350,7 +350,7 @@ def _with_cone(chart: Chart, scene: rr.Scene, event: str, frame: rr.Frame) -> Ch
     return replace(chart, items=(*cone, *chart.items))
 
 
-#: A diagram widens to show the horizon event if that at most triples its x range.
+#: A diagram widens to show the pivot event if that at most triples its x range.
 HORIZON_REACH = 1.0
 
 
@@ -363,7 +363,7 @@ def _reaching(x_range: tuple[float, float], x: float) -> tuple[float, float]:
 
 
 def _with_horizon(chart: Chart, event: tuple[float, float]) -> Chart:
-    """``chart`` with the ridden rod's horizon event (the centre of its change, where every comoving
+    """``chart`` with the ridden rod's pivot event (the centre of its change, where every comoving
     line of simultaneity meets) marked and named in the legend, if it lies on the chart."""
     t, x = event
     if not (chart.x_range[0] <= x <= chart.x_range[1] and chart.y_range[0] <= t <= chart.y_range[1]):
