@@ -420,3 +420,15 @@ def test_a_small_value_is_shown_and_noise_is_not() -> None:
     assert rr.event_shown(t1, before)[0] == 0.0
     assert rr.event_shown(t1_end, before)[0] == pytest.approx(1e-9, rel=1e-6)
     assert rr.shown(1e-12, 1.0) == 0.0 and rr.shown(2e-12, 1.0) == 2e-12
+
+
+def test_defaults_the_words_name_are_the_registrys() -> None:
+    """The lesson's pole step says what the command line defaults to (a student runs it beside the
+    lesson), and the wall's summary which bounce its default is."""
+    (step,) = [s for s in lesson_from("paper").steps if s.resolved.scene.kind == "pole-barn"]
+    text = " ".join(step.caption.split())
+    default = rr.describe("pole-barn").parameter("v").default
+    assert f"`rigidrel events pole-barn` defaults to V = {default:g}" in text
+    assert f"add `--v {step.resolved.scene.parameters['v']:g}` for these numbers" in text
+    wall = rr.describe("wall-collision")
+    assert f"by default it bounces, ε = {wall.parameter('eps').default:g}" in wall.summary

@@ -79,7 +79,7 @@ WALL_COLLISION = SceneDescription(
     title="Wall crash / bounce",
     summary=(
         "A rod moving at −V hits a wall at x = 0 and stops (ε = 0), bounces back elastically (ε = 1) or anything "
-        "between."
+        "between (by default it bounces, ε = 1)."
     ),
     source="Sec. 5",
     constructor=wall_collision,
