@@ -440,8 +440,8 @@ class BellScene(Scene):
             lines.append(
                 f"the string's strain, measured in the rear ship's comoving frame (along its line of simultaneity "
                 f"through the string's rear end), reaches the breaking strain {self.breaking_strain:.4g} at the "
-                f"event {event_in_words(event, frame, 6)} on the string's rear end: the string breaks then, where "
-                "along it the model does not say (measured in the front ship's frame, the same strain is reached "
+                f"event {event_in_words(event, frame, 6)} on the string's rear end: the string breaks then (where "
+                "along it, the model does not say; measured in the front ship's frame, the same strain is reached "
                 "at another event)"
             )
         return tuple(lines)
