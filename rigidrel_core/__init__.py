@@ -13,6 +13,8 @@ viser or plotly.
 """
 
 from ._budget import FourMomentumBudget as FourMomentumBudget
+from ._budget import PhysicalSystem as PhysicalSystem
+from ._budget import SystemBudget as SystemBudget
 from ._description import EventDescription as EventDescription
 from ._description import Interval as Interval
 from ._description import Overlay as Overlay
@@ -48,6 +50,8 @@ from ._signals import CausalRelation as CausalRelation
 from ._signals import ChangeVerdict as ChangeVerdict
 from ._signals import causal_relation as causal_relation
 from ._validate import ParameterError as ParameterError
+from ._words import event_shown as event_shown
+from ._words import shown as shown
 from .scenes.acceleration import constant_acceleration as constant_acceleration
 from .scenes.acceleration import deceleration as deceleration
 from .scenes.acceleration import velocity_change as velocity_change
@@ -58,6 +62,7 @@ from .scenes.collision import rod_collision as rod_collision
 from .scenes.collision import solve_collision as solve_collision
 from .scenes.impulse import impulsive_start as impulsive_start
 from .scenes.pole_barn import DoorOrder as DoorOrder
+from .scenes.pole_barn import DoorOutcome as DoorOutcome
 from .scenes.pole_barn import PoleBarnScene as PoleBarnScene
 from .scenes.pole_barn import PoleVerdict as PoleVerdict
 from .scenes.pole_barn import pole_barn as pole_barn
@@ -71,6 +76,7 @@ __all__ = [
     "ChangeVerdict",
     "CollisionSolution",
     "DoorOrder",
+    "DoorOutcome",
     "EventDescription",
     "EventSpec",
     "ExactVelocity",
@@ -87,6 +93,7 @@ __all__ = [
     "Overlay",
     "Parameter",
     "ParameterError",
+    "PhysicalSystem",
     "PlasticMotion",
     "PoleBarnScene",
     "PoleVerdict",
@@ -98,6 +105,7 @@ __all__ = [
     "SceneObject",
     "ScenePreset",
     "Slider",
+    "SystemBudget",
     "bell_spaceships",
     "build_scene",
     "causal_relation",
@@ -105,11 +113,13 @@ __all__ = [
     "deceleration",
     "default_frame",
     "describe",
+    "event_shown",
     "impulsive_start",
     "pole_barn",
     "register_scene",
     "rod_collision",
     "scene_descriptions",
+    "shown",
     "solve_collision",
     "unregister_scene",
     "velocity_change",

@@ -4,7 +4,7 @@ double-double), the frame presets, the shared parameters and the check that a sc
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from types import MappingProxyType
 from typing import Literal
 
@@ -14,15 +14,20 @@ from ._description import SPEED, UNIT_CLOSED, Interval, Parameter, Slider
 from ._exact import ExactVelocity
 from ._frame import LAB, Frame
 from ._motion import RigidMotion
-from ._scene import Scene
+from ._scene import Rod, Scene
 from ._validate import ParameterError
 
 # ---------------------------------------------------------------------- shared parameters
 #: Largest |coordinate| of a lab event or Rindler radius a scene may have; squares of
 #: anything a frame makes of it (times gamma <= 7e7) stay far inside float64.
 MAX_SCENE_COORDINATE = 1e120
-#: Lengths and masses: positive and at most 1e120 (so every product a frame forms stays finite).
-SIZE = Interval(0.0, MAX_SCENE_COORDINATE, hi_closed=True)
+#: Smallest length or mass a scene may have: a product or quotient of two sizes (a window's width,
+#: a drawing's scale, Bell's r/s) stays a normal float, never 0 (a subnormal rod once made a drawing
+#: of no width).
+MIN_SCENE_SIZE = 1.0 / MAX_SCENE_COORDINATE
+#: Lengths and masses: from 1e-120 to 1e120 (so every product a frame forms stays finite and none
+#: underflows).
+SIZE = Interval(MIN_SCENE_SIZE, MAX_SCENE_COORDINATE, lo_closed=True, hi_closed=True)
 #: Proper accelerations: a Rindler radius 1/a of at most 1e120.
 ACCELERATION = Interval(1.0 / MAX_SCENE_COORDINATE, math.inf)
 V = Parameter(
@@ -32,7 +37,8 @@ V = Parameter(
     "c",
     SPEED,
     0.6,
-    "speed V (c = 1), before or after the change as the scene's summary says",
+    "speed V (c = 1): the final speed of a rod that starts at rest, or the approach speed of one that moves "
+    "at −V toward its stop (each scene's help says which)",
     Slider(0.01, 0.99, 0.01),
 )
 LENGTH = Parameter("length", "L0", "L0", "length unit", SIZE, 1.0, "rest length L0", typical=(0.1, 10.0))
@@ -40,10 +46,11 @@ A_FRONT = Parameter(
     "a_front",
     "a′_F",
     "a′_F L0",
-    "1/L0",
+    "1/length unit",
     ACCELERATION,
     0.5,
-    "front-end proper acceleration a′_F; the back end has a′_B = a′_F/(1 − a′_F L0) (Sec. 3, Eq. (15))",
+    "front-end proper acceleration a′_F (the paper's prime: measured in the end's momentary rest frame); the "
+    "back end has a′_B = a′_F/(1 − a′_F L0) (Sec. 3, Eq. (15))",
     Slider(0.01, 0.99, 0.01),
     constraint="a_front * length in (0, 1)",
 )
@@ -158,21 +165,27 @@ def single_rod_frames(motion: RigidMotion) -> Mapping[str, Frame]:
 
 def checked_scene(scene: Scene) -> Scene:
     """Reject parameter combinations whose derived numbers leave the representable range."""
+    checked_rods(scene.rods, scene.parameters)
+    return scene
+
+
+def checked_rods(rods: Sequence[Rod], parameters: Mapping[str, float]) -> None:
+    """:func:`checked_scene` on a scene's rods before the scene is made (a constructor that derives
+    more from them, such as Bell's string, checks them first); ``parameters`` for the error."""
     bound = MAX_SCENE_COORDINATE
-    for r in scene.rods:
+    for r in rods:
         m = r.motion
         v_i, v_f = m.velocity_initial, m.velocity_final
         if not (v_i.gap > 0.0 and v_f.gap > 0.0):
             below_light = "such that every velocity stays below light speed"
-            raise ParameterError("parameters", below_light, dict(scene.parameters))
+            raise ParameterError("parameters", below_light, dict(parameters))
         # the lab events of the ends: the centre, the radii, the mass, radius times gamma v of the
         # faster velocity (the smaller gap); NaN fails too
         reach = max(m.radius_left, m.radius_right) * abs((v_i if v_i.gap < v_f.gap else v_f).proper_velocity())
         if not (abs(m.horizon_x) <= bound and m.radius_left <= bound and m.radius_right <= bound):
-            raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
+            raise ParameterError("parameters", _OUT_OF_RANGE, dict(parameters))
         if not (r.mass_after <= bound and reach <= bound):
-            raise ParameterError("parameters", _OUT_OF_RANGE, dict(scene.parameters))
-    return scene
+            raise ParameterError("parameters", _OUT_OF_RANGE, dict(parameters))
 
 
 _OUT_OF_RANGE = f"such that every lab event and Rindler radius lies within {MAX_SCENE_COORDINATE:g} of the origin"

@@ -58,6 +58,15 @@ VELOCITY = Interval(-1.0, 1.0)
 UNIT_CLOSED = Interval(0.0, 1.0, True, True)
 
 
+def given(values: Mapping[str, float | None], name: str) -> float:
+    """``values[name]`` for a rule of :attr:`Parameter.when_omitted`: a ``TypeError`` if it is not a
+    number (the rule then gives no value, and the constructor says what is wrong)."""
+    value = values.get(name)
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise TypeError(f"{name} is not a number")
+    return float(value)
+
+
 @dataclass(frozen=True)
 class Slider:
     """How the app shows a parameter: a slider from ``lo`` to ``hi``.
@@ -92,7 +101,7 @@ class Parameter:
     label: str
     """The app's control label (rod 1 sets the units there: ``"M2/M1"``, ``"a′_F L0"``)."""
     unit: str
-    """``"c"`` for velocities, ``"L0"``-style for lengths, ``"1/L0"`` for accelerations, ``""``."""
+    """``"c"`` for velocities, ``"length unit"`` for lengths, ``"1/length unit"`` for accelerations, ``""``."""
     domain: Interval
     default: float | None
     help: str
@@ -103,6 +112,11 @@ class Parameter:
     """``None`` is a value (e.g. no acceleration given: the impulsive limit)."""
     constraint: str = ""
     """A condition that involves other parameters, in words (checked by the constructor)."""
+    when_omitted: Callable[[Mapping[str, float | None]], float] | None = field(default=None, compare=False)
+    """For an optional parameter whose omission (``None``) stands for a value that follows the others
+    (the pole's barn: ``L0/gamma``, so that it just fits at every ``V``), that value, from the scene's
+    values by name (those before it in the description already resolved); the constructor computes it
+    with the same function. ``None``: omitting it means no value (no breaking strain)."""
 
     def allowed(self) -> str:
         text = f"a finite number {self.domain.text()}"
@@ -207,6 +221,10 @@ class SceneDescription:
     overlay: Overlay | None = None
     order: int = 100
     """Position in the app's menu (teaching order)."""
+    meanings: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}))
+    """What a parameter shared with other scenes means in this one, where its own help must cover them
+    all (``{"v": "approach speed V: the rod moves at −V toward the wall"}``): the command line's help
+    and the docs give it (:meth:`help_for`)."""
     renamed: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}))
     """Old parameter names and the names that replaced them (``{"m2": "mass2"}``): the constructor,
     the registry, scenario strings, lesson files and the command line refuse an old name and name
@@ -235,8 +253,27 @@ class SceneDescription:
             allowed = f"one of the parameters of {self.kind}: {', '.join(self.parameter_map)}"
             raise ParameterError(name, allowed, name) from None
 
+    def help_for(self, parameter: Parameter) -> str:
+        """What ``parameter`` means in this scene: :attr:`meanings`' entry, else its own help."""
+        return self.meanings.get(parameter.name, parameter.help)
+
     def defaults(self) -> dict[str, float | None]:
         return {p.name: p.default for p in self.parameters}
+
+    def resolved(self, values: Mapping[str, float | None]) -> dict[str, float | None]:
+        """Every parameter's value: ``values``, the defaults for the others, and for an omitted one
+        that stands for a value (:attr:`Parameter.when_omitted`) that value (``None`` left where the
+        other values give none: the constructor says what is wrong with them)."""
+        out = {**self._defaults, **values}
+        for p in self.parameters:
+            if out.get(p.name) is None and p.when_omitted is not None:
+                try:
+                    value = float(p.when_omitted(out))
+                except (ArithmeticError, TypeError, ValueError):
+                    continue
+                if math.isfinite(value):
+                    out[p.name] = value
+        return out
 
     def build(self, **values: float | None) -> Scene:
         """The scene with ``values``; missing parameters take their defaults (the paper's).

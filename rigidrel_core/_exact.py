@@ -79,6 +79,13 @@ class ExactVelocity:
         """``gamma v = sinh(theta)``."""
         return self.hi / math.sqrt(self.one_minus() * self.one_plus())
 
+    def lorentz_factor_minus_one(self) -> float:
+        """``gamma - 1 = (gamma v)^2 / (gamma + 1) = 2 sinh^2(theta/2)``: a product, good to a few ulp
+        of itself however small ``v`` is (``gamma - 1`` formed by subtraction keeps none of its
+        digits below ``v ~ 1e-8``)."""
+        u = self.proper_velocity()
+        return u * u / (math.sqrt(1.0 + u * u) + 1.0)
+
     def rapidity(self) -> float:
         """``theta = atanh(v) = sign(v)/2 * log1p(2|v| / (1 - |v|))``."""
         if self.hi >= 0.0:

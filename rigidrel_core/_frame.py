@@ -16,7 +16,6 @@ the frame moving with velocity ``beta_b`` relative to frame ``a`` (``(frame_b @ 
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import overload
 
@@ -94,9 +93,9 @@ class Frame:
         return self.velocity.proper_velocity()
 
     def lorentz_factor_minus_one(self) -> float:
-        """``gamma - 1 = (gamma beta)^2 / (gamma + 1)``, accurate for small ``beta``."""
-        u = self.velocity.proper_velocity()
-        return u * u / (math.sqrt(1.0 + u * u) + 1.0)
+        """``gamma - 1 = (gamma beta)^2 / (gamma + 1)``, accurate for small ``beta``
+        (:meth:`ExactVelocity.lorentz_factor_minus_one`)."""
+        return self.velocity.lorentz_factor_minus_one()
 
     def doppler_factors(self) -> tuple[float, float]:
         """``(exp(psi), exp(-psi)) = (gamma (1 + beta), gamma (1 - beta))``, each to a few ulp."""

@@ -4,7 +4,7 @@ Every scene of Franklin (2012) is built from one motion per rod (units c = 1):
 
 1. inertial at velocity ``v_i`` (rapidity ``theta_i``);
 2. a Born-rigid change: each material point moves on a hyperbola about one common
-   centre event ``C`` (the Rindler horizon), the point at rest-distance ``rho`` from it
+   centre event ``C`` (whose light cone is the Rindler horizon), the point at rest-distance ``rho`` from it
    with proper acceleration ``1/rho`` (paper Sec. 3, Eqs. (4), (15); ``rho = 0`` is the
    impulsive limit of Sec. 4);
 3. inertial at velocity ``v_f``.

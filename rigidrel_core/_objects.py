@@ -114,6 +114,9 @@ class ObjectField:
     """What reaching it means, in a colour key's words: ``"breaks"``, ``"its final"``."""
     percent: bool = False
     """Shown in per cent (a strain)."""
+    measured_in: str = ""
+    """The convention the value depends on, as a title says it: ``"in the rear ship's comoving frame"``
+    (``""``: none)."""
 
 
 @dataclass(frozen=True)
@@ -128,6 +131,8 @@ class ObjectEvent:
     """Whether the object is in two parts from this event on (a broken string's loose ends)."""
     state: str = ""
     """What the object is from then on, as a title says it: ``"broken"``."""
+    meaning: str = ""
+    """What the event is, in words, as an events table gives it: ``"the barn's door closes"``."""
 
     def in_frame(self, *, frame: Frame = LAB) -> tuple[float, float]:
         """The event as ``(t', x')`` of ``frame`` (one boost)."""

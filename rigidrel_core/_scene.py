@@ -19,7 +19,7 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
-from ._budget import ExternalSource, FourMomentumBudget
+from ._budget import ExternalSource, FourMomentumBudget, PhysicalSystem, SystemBudget, heat_where
 from ._exact import relative_rapidity
 from ._frame import LAB, Frame, check_frame
 from ._kinds import OriginEvent
@@ -84,7 +84,9 @@ class Scene:
     """Frame presets by name: the lab, each rod's rest frame before and after, the barycentric frame."""
     external_source: ExternalSource
     heat: float
-    """Invariant rest energy created (epsilon < 1), see :class:`FourMomentumBudget`."""
+    """Invariant rest energy created (epsilon < 1), see :class:`FourMomentumBudget`: in the scene's one
+    physical system; a scene of alternatives gives each system its own (:attr:`systems`), and this is
+    the first's."""
     origin_event: OriginEvent
     objects: tuple[SceneObject, ...] = ()
     """What the scene holds that is not a rod (a wall, a barn's door, Bell's string), each with its
@@ -285,9 +287,21 @@ class Scene:
         unless a scene says otherwise."""
         return (0,) * len(self.rods)
 
+    @property
+    def systems(self) -> tuple[PhysicalSystem, ...]:
+        """The physical systems of the scene: rods that exist together, with what acts on them (one per
+        rod group, :attr:`rod_groups`). One system of all the rods, with the scene's drive or wall and
+        :attr:`heat`, unless a scene of alternatives says otherwise."""
+        if any(self.rod_groups):
+            raise NotImplementedError(f"{type(self).__name__} has several rod groups: it must name its systems")
+        names = [r.name for r in self.rods]
+        name = f"the {names[0]}" if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+        return (PhysicalSystem(name, tuple(range(self.n_rods)), self.external_source, self.heat),)
+
     # ------------------------------------------------------------------- budget
     def budget(self, *, frame: Frame = LAB) -> FourMomentumBudget:
-        """Energy and momentum of every rod before and after, in ``frame`` (c = 1)."""
+        """Energy and momentum of every rod before and after, in ``frame`` (c = 1), and the totals of
+        each physical system (:attr:`systems`), never of rods that do not exist together."""
         frame = check_frame(frame)
         m0 = np.array([r.mass_before for r in self.rods])
         m1 = np.array([r.mass_after for r in self.rods])
@@ -295,10 +309,14 @@ class Scene:
         th1 = np.array([relative_rapidity(r.motion.velocity_final, frame.velocity) for r in self.rods])
         before = np.stack([m0 * np.cosh(th0), m0 * np.sinh(th0)], axis=-1)
         after = np.stack([m1 * np.cosh(th1), m1 * np.sinh(th1)], axis=-1)
-        if self.external_source == "none":
-            external = np.zeros(2)
-        else:
-            external = after.sum(axis=0) - before.sum(axis=0)
+        systems: list[SystemBudget] = []
+        for system in self.systems:
+            rods = list(system.rods)
+            total_before, total_after = before[rods].sum(axis=0), after[rods].sum(axis=0)
+            external = np.zeros(2) if system.external_source == "none" else total_after - total_before
+            names = tuple(r.name for r in self.rods)
+            where = heat_where(system, names, m0, m1)
+            systems.append(SystemBudget(system, total_before, total_after, external, where))
         return FourMomentumBudget(
             frame_velocity=frame.beta,
             bodies=tuple(r.name for r in self.rods),
@@ -308,9 +326,7 @@ class Scene:
             after=after,
             kinetic_before=2.0 * m0 * np.sinh(0.5 * th0) ** 2,
             kinetic_after=2.0 * m1 * np.sinh(0.5 * th1) ** 2,
-            external=external,
-            external_source=self.external_source,
-            heat=self.heat,
+            systems=tuple(systems),
         )
 
     # ------------------------------------------------------------------ signals
@@ -464,32 +480,41 @@ class Scene:
         t, x = frame @ np.array([0.0, motion.horizon_x])
         return float(t), float(x)
 
-    def causal_verdicts(self) -> tuple[ChangeVerdict, ...]:
+    def causal_verdicts(self, *, frame: Frame = LAB) -> tuple[ChangeVerdict, ...]:
         """For every rod end whose change does not begin or end at the origin event: where the change
-        lies relative to the origin event's light cone, and when its first light signal arrives (lab).
+        lies relative to the origin event's light cone, and where its first light signal arrives.
 
-        The kinds (timelike, lightlike, spacelike) are invariants, so the verdicts hold in every
-        frame. E.g. a wall crash: "the far end: its whole change, T_1 to T_1', lies outside the light
-        cone of the contact: no signal from the contact can have caused it, in any frame".
-        An origin where nothing happens (a general velocity change's vertex) has no verdicts.
+        The kinds (timelike, lightlike, spacelike) are invariants, found from the exact lab events,
+        so the verdicts hold in every frame; the events, and every coordinate pair in the words, are
+        those of ``frame`` (each pair labelled: ``"(lab t, x) = ..."`` in the lab, ``"(t, x) = ... in
+        the frame ..."`` elsewhere). E.g. a wall crash: "the right end: its whole change, T_1 to T_1',
+        lies outside the light cone of the contact: no signal from the contact can have caused it, in
+        any frame". An origin where nothing happens (a general velocity change's vertex) has no verdicts.
         """
+        frame = check_frame(frame)
         if self.origin_event is OriginEvent.VERTEX:
             return ()
         named = {(s.rod, s.end, s.phase): s.name for s in self.event_specs}
         out: list[ChangeVerdict] = []
         for i, rod in enumerate(self.rods):
             start, stop = self._plan(LAB, ENDS, i).switch_events()
+            seen_start, seen_stop = self._plan(frame, ENDS, i).switch_events()
             for end in (0, 1):
                 s_event = (float(start[end, 0]), float(start[end, 1]))
                 t_event = (float(stop[end, 0]), float(stop[end, 1]))
                 if (0.0, 0.0) in (s_event, t_event):
                     continue  # this end's change begins or ends at the origin event itself
                 side = "left" if end == 0 else "right"
-                label = f"the {side} end" + (f" of {rod.name}" if self.n_rods > 1 else "")
-                names = (
-                    named.get((i, end, "start"), f"(t, x) = ({s_event[0]:.4g}, {s_event[1]:.4g})"),
-                    named.get((i, end, "stop"), f"(t, x) = ({t_event[0]:.4g}, {t_event[1]:.4g})"),
+                article = "" if rod.name.startswith("rod ") else "the "
+                label = f"the {side} end" + (f" of {article}{rod.name}" if self.n_rods > 1 else "")
+                names = (named.get((i, end, "start"), ""), named.get((i, end, "stop"), ""))
+                arrival = self.signal_arrival(self.origin_event.value, i, float(end), frame=frame)
+                seen = (
+                    (float(seen_start[end, 0]), float(seen_start[end, 1])),
+                    (float(seen_stop[end, 0]), float(seen_stop[end, 1])),
+                    arrival,
                 )
-                arrival = self.signal_arrival(self.origin_event.value, i, float(end))
-                out.append(change_verdict(i, end, names, s_event, t_event, arrival, self.origin_event.phrase, label))
+                out.append(
+                    change_verdict(i, end, names, (s_event, t_event), seen, frame, self.origin_event.phrase, label)
+                )
         return tuple(out)

@@ -7,7 +7,8 @@ With ``u = t - x`` and ``w = t + x`` a light ray moving in ``+x`` keeps its ``u`
 * inertial at rapidity ``theta'`` (frame rapidity) through a switch event ``(u_s, w_s)``:
   ``w - w_s = e^(2 theta') (u - u_s)``;
 * on its hyperbola of radius ``rho`` about the centre ``(u_C, w_C)``:
-  ``(u - u_C)(w - w_C) = -rho^2`` (paper Sec. 3, Eq. (4), written about the Rindler horizon).
+  ``(u - u_C)(w - w_C) = -rho^2`` (paper Sec. 3, Eq. (4), written about the centre event ``C``,
+  whose light cone ``u = u_C``, ``w = w_C`` is the Rindler horizon).
 
 A ray meets each piece once at most, at ``w = w_s + e^(2 theta') (u_0 - u_s)`` or
 ``w = w_C - rho^2 / (u_0 - u_C)`` (and the mirror forms for a ray in ``-x``): no root finding,
@@ -26,12 +27,13 @@ import numpy as np
 import numpy.typing as npt
 
 from ._exact import relative_rapidity
-from ._frame import Frame
+from ._frame import LAB, Frame
 from ._motion import RigidMotion
 
 if TYPE_CHECKING:
     from ._plastic import PlasticMotion
 from ._validate import ParameterError, as_real
+from ._words import event_in_words
 
 CausalKind = Literal["timelike", "lightlike", "spacelike"]
 Event = tuple[float, float]
@@ -199,20 +201,29 @@ def signal_arrival_on(
 @dataclass(frozen=True)
 class ChangeVerdict:
     """Where one end's velocity change lies relative to the scene's origin event (the kick, the
-    contact, the start), in words and in numbers; frame-independent (computed from invariants)."""
+    contact, the start), in words and in numbers. The kinds (timelike, lightlike, spacelike) are
+    invariants, found from the exact lab events; the events and the words are those of :attr:`frame`."""
 
     rod: int
     end: Literal[0, 1]
     start: Event
-    """Lab event where the end starts changing velocity."""
+    """Event of :attr:`frame` where the end starts changing velocity."""
     stop: Event
-    """Lab event where it has its final velocity."""
+    """Event of :attr:`frame` where it has its final velocity."""
     relation_start: CausalRelation
-    """The start's relation to the origin event."""
+    """The start's relation to the origin event (the same in every frame)."""
     relation_stop: CausalRelation
     arrival: Event | None
-    """Lab event where the first light signal from the origin event reaches the end."""
+    """Event of :attr:`frame` where the first light signal from the origin event reaches the end."""
     text: str
+    """The verdict in words; every coordinate pair in it is of :attr:`frame`, labelled
+    (:func:`rigidrel_core._words.event_in_words`)."""
+    frame: Frame = LAB
+    """The frame of the events and of the words."""
+    names: tuple[str, str] = ("", "")
+    """The start's and the stop's names in the scene (``"T_1"``), ``""`` for one that has none."""
+    end_label: str = ""
+    """The end in words: ``"the right end of rear ship"``."""
 
     @property
     def caused_by_a_signal(self) -> bool:
@@ -233,20 +244,25 @@ def change_verdict(
     rod: int,
     end: Literal[0, 1],
     names: tuple[str, str],
-    start: Event,
-    stop: Event,
-    arrival: Event | None,
+    lab: tuple[Event, Event],
+    seen: tuple[Event, Event, Event | None],
+    frame: Frame,
     origin: str,
     end_label: str,
 ) -> ChangeVerdict:
-    """The verdict on one end's change ``start -> stop`` (lab events named ``names``) relative to the
-    origin event ``(0, 0)``, which the text calls ``origin`` ("the contact"); ``end_label`` names the end."""
-    r_start = causal_relation((0.0, 0.0), start)
-    r_stop = causal_relation((0.0, 0.0), stop)
-    s, t = names
+    """The verdict on one end's change relative to the origin event ``(0, 0)``, which the text calls
+    ``origin`` ("the contact"); ``end_label`` names the end. ``lab`` holds the change's start and stop
+    as exact lab events (their kinds relative to the origin are computed there: invariants);
+    ``seen`` the start, the stop and the first light's arrival as events of ``frame``, which the
+    words give. ``names`` are the start's and the stop's names (``""``: none; the words then give
+    the event's coordinates in ``frame``, labelled)."""
+    r_start = causal_relation((0.0, 0.0), lab[0])
+    r_stop = causal_relation((0.0, 0.0), lab[1])
+    start, stop, arrival = seen
+    s, t = (name or event_in_words(event, frame) for name, event in zip(names, (start, stop), strict=True))
     if r_start.kind == "spacelike" and r_stop.kind == "spacelike":
         text = (
-            f"{end_label}: its whole change, {s} to {t}, lies outside the light cone of {origin}: "
+            f"{end_label}: its whole change, from {s} to {t}, lies outside the light cone of {origin}: "
             f"no signal from {origin} can have caused it, in any frame."
         )
     elif r_start.kind == "spacelike":
@@ -265,5 +281,5 @@ def change_verdict(
             f"could have started it."
         )
     if arrival is not None:
-        text += f" The first light signal from {origin} reaches it at (t, x) = ({arrival[0]:.4g}, {arrival[1]:.4g})."
-    return ChangeVerdict(rod, end, start, stop, r_start, r_stop, arrival, text)
+        text += f" The first light signal from {origin} reaches it at {event_in_words(arrival, frame)}."
+    return ChangeVerdict(rod, end, start, stop, r_start, r_stop, arrival, text, frame, names, end_label)

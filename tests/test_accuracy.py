@@ -8,7 +8,9 @@ the point starts changing velocity); the core evaluates closed forms in the fram
 Cases: the paper's examples; V = 1 - 1e-12 and 1 - 1e-9; a'_F L0 = 1 - 1e-6 and 1e-6;
 weak accelerations a'_F L0 = 1e-3, 1e-5 and 1e-7 (constant acceleration, deceleration and
 velocity changes, V from 0.1 to 0.99 and 1 - 1e-9: radii of 1e3..1e7 rest lengths); mass
-ratios 1e-6..1e6; lengths 1e-6..1e6; 36 random scenes. Frames of every case: the lab, a
+ratios 1e-6..1e6; lengths 1e-6..1e6; 36 random scenes; Bell's spaceships and the pole in the barn,
+also at V = 1e-6 and 1e-3 with breaking strains down to 1e-12 (their strains and breaks are checked
+in tests/test_paradoxes.py). Frames of every case: the lab, a
 random one, beta = +-0.999999, +-(1 - 1e-7) and +-(1 - 1e-9), each rod's rest frame before
 and after (to float64), frames a rapidity of 1e-9 either side of those, and the barycentric
 frame. Times: every event, points between and beside them, and 1e6 lengths away. Checked in

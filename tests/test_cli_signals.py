@@ -12,7 +12,7 @@ from rigidrel_app.cli import main
 def test_wall_crash_prints_the_signal_and_the_verdict(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["events", "wall-collision", "--eps", "0"]) == 0
     out = capsys.readouterr().out
-    rows = {line.split()[0]: line.split()[1:] for line in out.splitlines() if line[:2] in ("S ", "R ")}
+    rows = {line.split()[0]: line.split()[1:3] for line in out.splitlines() if line[:2] in ("S ", "R ")}
     assert rows["S"] == ["1", "1"]  # the far end, at rest at x = 1 since t = 0, sees the contact's light at t = 1
     assert rows["R"] == ["2", "0"]
     assert "lies outside the light cone of the contact" in out

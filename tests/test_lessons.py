@@ -113,7 +113,7 @@ def test_the_built_in_paper_lesson() -> None:
     kinds = {s.resolved.scene.kind for s in lesson.steps}
     assert {"constant-acceleration", "impulsive-start", "wall-collision", "rod-collision"} <= kinds
     assert {"bell-spaceships", "pole-barn"} <= kinds
-    assert "gamma s = 1.25 apart" in text and "rear end comes to rest at barn x = 0.3333" in text
+    assert "γs = 1.25 apart" in text and "its rear end at lab x = 0.3333" in text
     assert any(s.ride is not None for s in lesson.steps)
     assert any(Layer.SIGNALS in s.layers for s in lesson.steps)
 

@@ -381,8 +381,29 @@ def test_four_momentum_is_a_four_vector(scene_frame: tuple[rr.Scene, rr.Frame]) 
         assert np.all(np.abs(ours - boosted) <= TOL_MOMENTUM * scale), name
     assert np.array_equal(here.rest_mass_before, lab.rest_mass_before)
     assert np.array_equal(here.rest_mass_after, lab.rest_mass_after)
-    assert here.heat == lab.heat
+    assert [s.heat for s in here.systems] == [s.heat for s in lab.systems]
     assert here.frame_velocity == frame.beta
+
+
+@SETTINGS
+@given(scene_frame=scene_and_frame(max_speed=0.999))
+def test_each_physical_system_is_one_rod_group_and_totals_its_own_rods(scene_frame: tuple[rr.Scene, rr.Frame]) -> None:
+    """A budget's systems split the rods by their groups (alternatives and comparisons apart), each
+    labelled; each system's totals are the sum of its own rods only, and a scene of several systems
+    has no single total to read."""
+    scene, frame = scene_frame
+    b = scene.budget(frame=frame)
+    assert sorted(i for s in b.systems for i in s.system.rods) == list(range(scene.n_rods))
+    for s in b.systems:
+        rods = list(s.system.rods)
+        assert s.name and len({scene.rod_groups[i] for i in rods}) == 1
+        assert np.array_equal(s.total_before, b.before[rods].sum(axis=0))
+        assert np.array_equal(s.total_after, b.after[rods].sum(axis=0))
+    assert len(b.systems) == len(set(scene.rod_groups))
+    if len(b.systems) > 1:
+        with pytest.raises(ValueError, match="physical systems"):
+            _ = b.total_before
+        assert "total_before" not in b.as_dict()
 
 
 @SETTINGS

@@ -19,7 +19,7 @@ import pytest
 import rigidrel_core as rr
 from rigidrel_app.lessons import lesson_from
 from rigidrel_app.lessons.tour import arrival, caption_html
-from rigidrel_app.view.comoving import HORIZON_NAME, RIDE_LINE_NAME, RidePoint
+from rigidrel_app.view.comoving import HORIZON_NAME, RIDE_LINE_NAME, RidePoint, ride_at, simultaneity_items
 from rigidrel_app.view.layout import canvas_layout
 from rigidrel_app.view.scenario import ScenarioError, format_scenario, parse_scenario
 from rigidrel_app.view.scene_view import RIDE_LENGTH_NAME, build_drawing, readout_markdown
@@ -33,7 +33,7 @@ from rigidrel_app.view.state import (
     frame_choices,
     resolve,
 )
-from rigidrel_app.view.vocabulary import Points, Polyline
+from rigidrel_app.view.vocabulary import Label, Points, Polyline
 
 KINDS = sorted(rr.scene_descriptions())
 LAYOUT = canvas_layout(940, 720)
@@ -141,6 +141,17 @@ def test_the_length_panel_and_the_diagrams_name_the_ride() -> None:
         assert any(isinstance(it, Points) and it.style.name == HORIZON_NAME for it in chart.items)
     text = readout_markdown(r)
     assert "rides: comoving with rod at f = 0" in text and "rod after" in text
+
+
+def test_the_pivot_event_is_named_an_event_not_a_horizon() -> None:
+    """Every comoving line of simultaneity passes one event, the centre of the point's hyperbola: the
+    horizon is that event's light cone, so the square's legend and label call it the pivot event."""
+    assert HORIZON_NAME == "pivot event (the horizon's vertex)"
+    r = riding("wall-collision", 0, 1.0)
+    instant = ride_at(r.scene, RidePoint(0, 1.0), -0.5)
+    assert instant.horizon_lab == pytest.approx((0.0, 0.0), abs=1e-15)  # the contact itself
+    labels = [it.text for it in simultaneity_items(instant, 1.0) if isinstance(it, Label)]
+    assert labels == ["pivot"]
 
 
 def test_the_frame_menu_and_the_settings() -> None:

@@ -186,11 +186,29 @@ def test_wall_crash_verdict_in_words() -> None:
     scene = rr.build_scene("wall-collision", v=0.6, length=1.0, eps=0.0)
     (verdict,) = scene.causal_verdicts()
     assert verdict.text.startswith(
-        "the right end: its whole change, T_1 to T_1', lies outside the light cone of the contact: "
+        "the right end: its whole change, from T_1 to T_1', lies outside the light cone of the contact: "
         "no signal from the contact can have caused it, in any frame."
     )
     assert not verdict.caused_by_a_signal
     assert verdict.start[0] < 0.0  # before the contact, in the lab
+    assert verdict.text.endswith("The first light signal from the contact reaches it at (lab t, x) = (1, 1).")
+
+
+def test_a_verdict_gives_its_events_in_the_frame_asked_for() -> None:
+    """The kinds are the lab's (invariants); the events and every coordinate pair in the words are the
+    frame's, labelled with it: the wall crash seen at beta = 0.3 (lab arrival (1, 1), boosted)."""
+    scene = rr.build_scene("wall-collision", v=0.6, length=1.0, eps=0.0)
+    frame = rr.Frame.from_velocity(0.3, "custom")
+    (lab,) = scene.causal_verdicts()
+    (seen,) = scene.causal_verdicts(frame=frame)
+    assert (seen.relation_start, seen.relation_stop) == (lab.relation_start, lab.relation_stop)
+    assert seen.frame is frame and lab.frame is rr.LAB
+    assert seen.arrival is not None
+    assert seen.arrival == pytest.approx(tuple(frame @ np.array([1.0, 1.0])), rel=1e-15)
+    assert seen.start == scene.events_in(frame=frame)["T_1"] and seen.stop == scene.events_in(frame=frame)["T_1'"]
+    t, x = seen.arrival
+    assert seen.text.endswith(f"reaches it at (t, x) = ({t:.4g}, {x:.4g}) in the frame 'custom' (β = 0.3).")
+    assert "(1, 1)" not in seen.text
 
 
 def test_fig1_front_stops_exactly_on_the_starts_light_cone() -> None:

@@ -17,10 +17,13 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
+import numpy as np
+
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
 from .view.scenario import (
+    FRAME_GLOSSES,
     FRAME_HELP,
     Scenario,
     ScenarioError,
@@ -99,14 +102,40 @@ def scene_from_args(prog: str, args: argparse.Namespace, default_frame: str | No
 
 
 # ---------------------------------------------------------------- events
+def object_events(scene: rr.Scene, frame: rr.Frame) -> dict[str, tuple[tuple[float, float], str]]:
+    """The events of the scene's objects (the door closes, the string breaks) as ``(t', x')`` of
+    ``frame``, each with its meaning."""
+    out: dict[str, tuple[tuple[float, float], str]] = {}
+    for obj in scene.objects:
+        event = obj.event_in(frame=frame)
+        if obj.event is not None and event is not None:
+            out[obj.event.name] = (event, obj.event.meaning or f"an event of the {obj.name}")
+    return out
+
+
+def change_rows(scene: rr.Scene, frame: rr.Frame) -> list[tuple[str, tuple[float, float]]]:
+    """Every event a causal verdict names, as rows ``(what, (t', x'))`` of ``frame``: each changing end's
+    start, stop and first light from the key event (the verdicts' words give the same numbers)."""
+    rows: list[tuple[str, tuple[float, float]]] = []
+    for v in scene.causal_verdicts(frame=frame):
+        end = v.end_label.removeprefix("the ")
+        start, stop = (f" ({name})" if name else "" for name in v.names)
+        rows += [(f"{end}: starts{start}", v.start), (f"{end}: ends{stop}", v.stop)]
+        if v.arrival is not None:
+            rows.append((f"{end}: first light", v.arrival))
+    return rows
+
+
 def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
-    """Everything ``rigidrel events`` prints, as plain data."""
+    """Everything ``rigidrel events`` prints, as plain data (every event in ``frame``, and the named
+    ones in the lab too)."""
     budget = scene.budget(frame=frame)
     return {
         "scene": scene.kind,
         "parameters": dict(scene.parameters),
         "frame": {"name": frame.label(), "velocity": frame.beta},
         "events": {k: {"t": t, "x": x} for k, (t, x) in scene.events_in(frame=frame).items()},
+        "object_events": {k: {"t": t, "x": x} for k, ((t, x), _) in object_events(scene, frame).items()},
         "events_lab": {k: {"t": t, "x": x} for k, (t, x) in scene.events.items()},
         "initial_velocities": list(scene.initial_velocities),
         "final_velocities": list(scene.final_velocities),
@@ -118,61 +147,125 @@ def events_report(scene: rr.Scene, frame: rr.Frame) -> dict[str, object]:
                 "arrival": leg.name,
                 "t": leg.arrival[0],
                 "x": leg.arrival[1],
+                "meaning": leg.meaning,
                 "from": {"t": leg.source[0], "x": leg.source[1]},
             }
             for leg in signals_in(scene, frame).legs
         ],
-        "verdicts": list(verdict_lines(scene)),
+        "changes": [{"event": what, "t": t, "x": x} for what, (t, x) in change_rows(scene, frame)],
+        "verdicts": list(verdict_lines(scene, frame)),
     }
 
 
-def _g(x: float) -> str:
+def _g(x: float, scale: float | None = None) -> str:
+    """``x`` to 10 significant digits; with ``scale``, the size of the terms it was formed from, ``0``
+    where it is rounding noise of them (:func:`rigidrel_core.shown`)."""
+    if scale is not None:
+        x = rr.shown(x, scale)
     return f"{x:.10g}" if x != 0 else "0"
 
 
+def _cells(event: tuple[float, float], frame: rr.Frame) -> str:
+    """An event of ``frame`` as the t and x columns of a table, the boost's rounding noise shown as 0."""
+    t, x = rr.event_shown(event, frame)
+    return f"{_g(t):>20}{_g(x):>20}"
+
+
 def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
+    """The text of ``rigidrel events``: every table in ``frame`` (the rods' velocities excepted, which
+    are the lab's and say so), every coordinate in words labelled with its frame."""
     d = rr.describe(scene)
-    budget = scene.budget(frame=frame)
     lines = [
         f"scene      {scene.kind}   ({d.title}, {d.source}; c = 1)",
         "parameters " + "  ".join(f"{k}={_g(v)}" for k, v in scene.parameters.items()),
-        f"frame      {frame.label()}  (beta = {_g(frame.beta)})",
+        f"frame      {frame.label()}  (beta = {_g(frame.beta)}): every table below is in this frame, "
+        "unless it says lab",
         "",
-        f"{'event':<8}{'t':>20}{'x':>20}   meaning",
+        f"{'event':<12}{'t':>20}{'x':>20}   meaning",
     ]
-    for name, (t, x) in scene.events_in(frame=frame).items():
-        lines.append(f"{name:<8}{_g(t):>20}{_g(x):>20}   {d.event(name).meaning}")
-    lines += ["", f"{'rod':<8}{'V before (lab)':>20}{'V after (lab)':>20}"]
-    for rod, v0, v1 in zip(scene.rods, scene.initial_velocities, scene.final_velocities):
-        lines.append(f"{rod.name:<8}{_g(v0):>20}{_g(v1):>20}")
+    for name, event in scene.events_in(frame=frame).items():
+        lines.append(f"{name:<12}{_cells(event, frame)}   {d.event(name).meaning}")
+    for name, (event, meaning) in object_events(scene, frame).items():
+        lines.append(f"{name:<12}{_cells(event, frame)}   {meaning}")
+    width = max(len(r.name) for r in scene.rods) + 2
+    lines += ["", f"{'body':<{width}}{'V before (lab)':>20}{'V after (lab)':>20}"]
+    for rod, v0, v1 in zip(scene.rods, scene.initial_velocities, scene.final_velocities, strict=True):
+        lines.append(f"{rod.name:<{width}}{_g(v0):>20}{_g(v1):>20}")
     presets = "  ".join(f"{k}: {_g(f.beta)}" for k, f in scene.frames.items())
-    lines += ["", f"frame presets  {presets}", "", f"4-momentum in this frame (E, p)  {'M':>12}{'E':>16}{'p':>16}"]
-    for phase, masses, em in (
-        ("before", budget.rest_mass_before, budget.before),
-        ("after", budget.rest_mass_after, budget.after),
-    ):
-        for name, m, (e, p) in zip(budget.bodies, masses, em):
-            lines.append(f"  {name + ' ' + phase:<31}{_g(m):>12}{_g(e):>16}{_g(p):>16}")
-    lines.append(f"  {'total before':<31}{'':>12}{_g(budget.total_before[0]):>16}{_g(budget.total_before[1]):>16}")
-    lines.append(f"  {'total after':<31}{'':>12}{_g(budget.total_after[0]):>16}{_g(budget.total_after[1]):>16}")
-    if budget.external_source != "none":
-        src = {"drive": "from the drive", "wall": "from the wall"}[budget.external_source]
-        lines.append(f"  {src:<31}{'':>12}{_g(budget.external[0]):>16}{_g(budget.external[1]):>16}")
-    lines.append(f"  heat (rest energy created): {_g(budget.heat)}")
-    lines += ["", *(f"note  {n}" for n in scene.notes(frame=frame))] if scene.notes(frame=frame) else []
-    return "\n".join(lines + signal_lines(scene, frame))
+    lines += ["", f"frame presets  {presets}", ""]
+    lines += budget_lines(scene, frame)
+    return "\n".join(lines + signal_lines(scene, frame) + note_lines(scene, frame))
+
+
+def budget_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
+    """The 4-momentum budget in ``frame``: each physical system (rods that exist together) on its own,
+    labelled, with its totals; the rods of different systems (alternatives, a comparison) never summed."""
+    budget = scene.budget(frame=frame)
+    several = len(budget.systems) > 1
+    head = "4-momentum in this frame (E, p)"
+    if several:  # the title on its own line, the columns' heads below it
+        lines = [f"{head}: one block per physical system (alternatives, never summed)"]
+        lines.append(f"{'':<44}{'M':>12}{'E':>16}{'p':>16}")
+    else:
+        lines = [f"{head:<44}{'M':>12}{'E':>16}{'p':>16}"]
+    for system in budget.systems:
+        indent = "    " if several else "  "
+        if several:
+            lines.append(f"  system: {system.name}")
+        for phase, masses, em in (
+            ("before", budget.rest_mass_before, budget.before),
+            ("after", budget.rest_mass_after, budget.after),
+        ):
+            for i in system.system.rods:
+                name, m, (e, p) = budget.bodies[i], masses[i], em[i]
+                lines.append(f"{indent}{name + ' ' + phase:<{44 - len(indent)}}{_g(m):>12} {_g(e):>15} {_g(p):>15}")
+        # the totals, and what came from outside, are sums: noise of their terms' size is shown as 0
+        rods = list(system.system.rods)
+        size_before, size_after = np.abs(budget.before[rods]).sum(axis=0), np.abs(budget.after[rods]).sum(axis=0)
+        rows = [("total before", system.total_before, size_before), ("total after", system.total_after, size_after)]
+        if system.external_source != "none":
+            src = {"drive": "from the drive", "wall": "from the wall (negative: into the wall)"}[system.external_source]
+            rows.append((src, system.external, size_before + size_after))
+        for label, (e, p), (size_e, size_p) in rows:
+            lines.append(f"{indent}{label:<{44 - len(indent)}}{'':>12} {_g(e, size_e):>15} {_g(p, size_p):>15}")
+        where = f", {system.heat_where}" if system.heat_where else ""
+        lines.append(f"{indent}heat (rest energy created): {_g(system.heat)}{where}")
+    return lines
+
+
+def note_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
+    """The scene's notes (a paradox's verdicts), last; each coordinate pair in them labelled with its frame."""
+    notes = scene.notes(frame=frame)
+    if not notes:
+        return []
+    out = [""]
+    for n in notes:
+        out += textwrap.wrap(n, 100, initial_indent="note  ", subsequent_indent="        ")
+    return out
 
 
 def signal_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
-    """The light-signal table (from the key event to each far end, S, and back to the near end, R)
-    and the core's causal verdicts, wrapped for a terminal."""
+    """The light-signal table (from the key event to each far end, S, and back to the near end, R),
+    the events the causal verdicts name and the verdicts themselves, wrapped for a terminal; every
+    table in ``frame``, every coordinate pair in the words labelled with its frame."""
     signals = signals_in(scene, frame)
     lines = ["", f"light from {signals.key_phrase}: S reaches a far end, R is the echo back at its near end"]
-    lines.append(f"{'arrival':<8}{'t':>20}{'x':>20}")
+    lines += textwrap.wrap(f"({signals.key_definition})", 100, subsequent_indent=" ")
+    lines.append(f"{'arrival':<12}{'t':>20}{'x':>20}   meaning")
     for leg in signals.legs:
-        lines.append(f"{leg.name:<8}{_g(leg.arrival[0]):>20}{_g(leg.arrival[1]):>20}")
-    lines += ["", "causality (the same in every frame)"]
-    for verdict in verdict_lines(scene):
+        lines.append(f"{leg.name:<12}{_cells(leg.arrival, frame)}   {leg.meaning}")
+    rows = change_rows(scene, frame)
+    lines += [
+        "",
+        "causality: whether a signal could have caused each change is the same in every frame; the events",
+        "are given in this frame",
+    ]
+    if rows:
+        width = max(len(what) for what, _ in rows) + 2
+        lines.append(f"{'change':<{width}}{'t':>20}{'x':>20}")
+        for what, event in rows:
+            lines.append(f"{what:<{width}}{_cells(event, frame)}")
+    for verdict in verdict_lines(scene, frame):
         lines += textwrap.wrap(verdict, 100, initial_indent="  ", subsequent_indent="    ")
     return lines
 
@@ -189,11 +282,15 @@ def cmd_events(args: argparse.Namespace) -> int:
 def cmd_scenes(args: argparse.Namespace) -> int:
     """Every registered scene, its parameters with their ranges, its frames and events."""
     del args
+    descriptions = rr.scene_descriptions().values()
+    width = max(len(flag(p)) for d in descriptions for p in d.parameters) + 2  # a flag never runs into its symbol
     for kind, d in rr.scene_descriptions().items():
         print(f"{kind}  ({d.title}; {d.source})\n  {d.summary}")
         for p in d.parameters:
-            print(f"  {flag(p):<14}{p.symbol:<6}{p.allowed():<52} default {format_value(p.default)}")
-        print(f"  frames: {', '.join(d.frames)} (default {d.default_frame})")
+            print(f"  {flag(p):<{width}}{p.symbol:<6}{p.allowed():<52} default {format_value(p.default)}")
+        frames = ", ".join(f"{f} ({FRAME_GLOSSES[f]})" if f in FRAME_GLOSSES else f for f in d.frames)
+        print(f"  frames: {frames}")
+        print(f"  default frame: `serve` and `export` open in {d.default_frame}; `events` shows the lab unless --frame")
         print(f"  events: {', '.join(f'{e.name} ({e.meaning})' for e in d.events)}\n")
     return 0
 

@@ -135,6 +135,7 @@ CONSTANT_ACCELERATION = SceneDescription(
         EventDescription("T_F", "the front end stops accelerating", "Sec. 3, Eq. (9)"),
     ),
     presets=(ScenePreset("Fig. 1: acceleration to V = 0.6", FIG1_CONSTANT_ACCELERATION, overlay=True),),
+    meanings=MappingProxyType({"v": "final speed V (c = 1): the rod starts at rest and ends moving at +V"}),
     overlay=Overlay("impulsive (Fig. 1 dashed)", _fig1_impulsive),
     order=10,
 )
@@ -178,9 +179,14 @@ DECELERATION = SceneDescription(
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod before",
     events=(
-        EventDescription("-T_F", "the right (trailing) end starts braking", "Sec. 3, Eq. (9) with t → −t"),
-        EventDescription("-T_B", "the left (leading) end starts braking", "Sec. 3, Eq. (9) with t → −t"),
+        EventDescription(
+            "-T_F", "the right end (trailing, in the lab) starts changing velocity", "Sec. 3, Eq. (9) with t → −t"
+        ),
+        EventDescription(
+            "-T_B", "the left end (leading, in the lab) starts changing velocity", "Sec. 3, Eq. (9) with t → −t"
+        ),
     ),
+    meanings=MappingProxyType({"v": "approach speed V (c = 1): the rod moves at −V until it brakes to rest"}),
     order=20,
 )
 
@@ -265,7 +271,10 @@ def velocity_change(
 VELOCITY_CHANGE = SceneDescription(
     kind="velocity-change",
     title="Any velocity change",
-    summary="A rod changes velocity from V_i to V_f Born-rigidly, at constant proper accelerations.",
+    summary=(
+        "A rod changes velocity from V_i to V_f Born-rigidly, each point at its own constant proper "
+        "acceleration (a′_F L0 = 1 or none: at once, an impulse)."
+    ),
     source="Secs. 3-4",
     constructor=velocity_change,
     parameters=(V_INITIAL, V_FINAL, LENGTH, A_FRONT_OR_IMPULSE, MASS),

@@ -27,13 +27,38 @@ end is met on its hyperbola where ``r sinh(phi - theta) = s sinh theta`` and
 
 is that rear end's distance from ``C_1``; the string is ``D(theta) - r - l`` long: ``s - l`` at
 rest, ``gamma s - l`` once both ships coast (``theta = theta_V``), and increasing in between.
-Its strain is ``(D - r - l)/(s - l) - 1``. Given a breaking strain ``e_b``, it breaks where
-``D = r + l + (1 + e_b)(s - l)``: ``cosh theta = (D^2 - r^2 + s^2)/(2 D s)`` (the first form
-squared) or ``theta = theta_V - acosh((r + s gamma)/D)`` (the second); the break event is the
-string's rear end there, ``C_1 + R (sinh theta, cosh theta)``.
 
-**The comparison rod** spans the same two rear ends, rest length ``s``, with the same rear
-acceleration ``a``: Born-rigid, its front end accelerates less, ``a / (1 + a s)`` (Eq. (15)),
+**Its strain** is ``(D - r - l)/(s - l) - 1 = E/(s - l)``, with ``E = D - r - s`` the string's
+stretch, formed from products so that nothing cancels at small speeds or small strains
+(``cosh x - 1 = 2 sinh^2(x/2)``):
+
+.. math::
+    E = 2 s \sinh^2\frac{\theta}{2} + \frac{q^2}{\sqrt{r^2 + q^2} + r}
+    \quad (q = s \sinh\theta,\ \text{first form}),
+
+    E = \frac{2}{\cosh\delta}\Bigl(s \sinh\bigl(\theta_V - \tfrac{\theta}{2}\bigr) \sinh\frac{\theta}{2}
+        - r \sinh^2\frac{\delta}{2}\Bigr) \quad (\delta = \theta_V - \theta,\ \text{second form}),
+
+and ``(gamma - 1) s`` once both coast (``gamma - 1`` from the product ``(gamma V)^2/(gamma + 1)``).
+The strain is measured in the **rear ship's momentarily comoving frame** (the string's rear end's):
+that is the convention every number of the string depends on. Measured in the front ship's frame
+the same strain is reached at another event (later: the front ship accelerates after the rear
+ship in that frame's time), so the break event names its frame.
+
+**The break**, given a breaking strain ``e_b``, is where ``E = e_b (s - l)``: on the first form
+(``D = r + s + E``, its square solved for ``cosh theta``)
+
+.. math::
+    \cosh\theta - 1 = \frac{E (2 r + E)}{2 D s}, \quad
+    \theta = 2 \operatorname{asinh}\sqrt{\frac{E (2 r + E)}{4 D s}},
+
+or, where the front ship's rear already coasts, ``cosh delta - 1 = ((gamma - 1) s - E)/D``; the
+break event is the string's rear end there, ``C_1 + R (sinh theta, cosh theta)``, i.e. lab
+``(R sinh theta, l + 2 R sinh^2(theta/2))`` (Sec. 3, Eq. (4) about ``C_1``, ``R = 1/a + l``).
+
+**The comparison rod** starts between the same two rear ends (lab ``x = 0`` and ``x = s`` at
+``t = 0``), rest length ``s``, its rear end moving with the rear ship's (the same rear
+acceleration ``a``): Born-rigid, its front end accelerates less, ``a / (1 + a s)`` (Eq. (15)),
 and reaches ``V`` later, at ``gamma V (1/a + s)``; it keeps its rest length ``s``, so its front end
 falls behind the front ship's rear.
 """
@@ -49,7 +74,8 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import _dd
-from .._build import ACCELERATION, SIZE, V, checked_scene, rigid_motion
+from .._budget import PhysicalSystem
+from .._build import ACCELERATION, SIZE, V, checked_rods, checked_scene, rigid_motion
 from .._description import (
     EventDescription,
     Interval,
@@ -60,12 +86,14 @@ from .._description import (
     SceneDescription,
     ScenePreset,
     Slider,
+    given,
 )
 from .._exact import REST, ExactVelocity
 from .._frame import LAB, Frame, check_frame
 from .._objects import MaterialWorldline, ObjectEvent, ObjectField, SceneObject
 from .._scene import EventSpec, Rod, Scene
 from .._validate import ParameterError, refuse_renamed
+from .._words import event_in_words
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -91,18 +119,26 @@ A_BACK = Parameter(
     Slider(0.05, 5.0, 0.05),
     typical=(0.05, 5.0),
 )
+
+
+def default_ship_length(separation: float) -> float:
+    """Each ship's rest length when none is given: a tenth of the separation, ``l = s/10``."""
+    return 0.1 * separation
+
+
 SHIP_LENGTH = Parameter(
     "ship_length",
     "l",
     "l (ship)",
     "length unit",
     SIZE,
-    0.1,
-    "rest length l of each ship (the constructor's default, none: a tenth of the separation)",
-    Slider(0.01, 0.9, 0.01),
-    typical=(0.01, 0.9),
+    None,
+    "rest length l of each ship (default none: a tenth of the separation, s/10)",
+    Slider(0.01, 1.0, 0.01),
+    typical=(0.01, 1.0),
     optional=True,
     constraint="ship_length < separation",
+    when_omitted=lambda p: default_ship_length(given(p, "separation")),
 )
 BREAKING_STRAIN = Parameter(
     "breaking_strain",
@@ -153,29 +189,54 @@ class BellString:
         return self.separation - self.ship_length
 
     @property
+    def final_stretch(self) -> float:
+        """How much longer the string ends than it starts, ``(gamma - 1) s`` (``gamma - 1`` a product:
+        exact at small ``V``)."""
+        return self.velocity.lorentz_factor_minus_one() * self.separation
+
+    @property
     def final(self) -> float:
-        """The string's rest length once both ships coast, ``gamma s - l``."""
-        return self.separation * self.velocity.lorentz_factor() - self.ship_length
+        """The string's rest length once both ships coast, ``gamma s - l = (s - l) + (gamma - 1) s``."""
+        return self.unstretched + self.final_stretch
 
     @property
     def final_strain(self) -> float:
-        """The strain once both ships coast: ``(gamma - 1) s / (s - l)``."""
-        return (self.velocity.lorentz_factor() - 1.0) * self.separation / self.unstretched
+        """The strain once both ships coast: ``(gamma - 1) s / (s - l)``, measured in the ships'
+        common rest frame after (the rear ship's comoving frame then)."""
+        return self.final_stretch / self.unstretched
 
-    def rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
-        """The string's rest length when the rear ship has lab rapidity ``theta`` (clipped to
-        ``[0, theta_V]``): ``D(theta) - r - l`` of the module docstring, each form without
-        cancellation (``sqrt(r^2 + q^2) - r = q^2 / (sqrt(r^2 + q^2) + r)``)."""
+    def stretch_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """The string's stretch ``E = L_string - (s - l)`` when the rear ship has lab rapidity ``theta``
+        (clipped to ``[0, theta_V]``), its rest length measured in the rear ship's comoving frame: each
+        form of the module docstring from products, without cancellation (``sinh^2`` for ``cosh - 1``,
+        ``sqrt(r^2 + q^2) - r = q^2 / (sqrt(r^2 + q^2) + r)``)."""
+        return self.separation * self._stretch_per_separation(rapidity)
+
+    def _stretch_per_separation(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """``E / s`` at the rear ship's lab rapidity (clipped to ``[0, theta_V]``): the module
+        docstring's forms with ``s = 1`` and ``r/s`` for ``r``, so that no product of two lengths
+        under- or overflows however small or large the scene."""
         theta_v = self.velocity.rapidity()
         theta = np.clip(np.asarray(rapidity, dtype=np.float64), 0.0, theta_v)
-        s, r, ship = self.separation, 1.0 / self.a_back, self.ship_length
-        q = s * np.sinh(theta)
-        root = np.hypot(r, q)
-        on_hyperbola = s * np.cosh(theta) + q * q / (root + r) - ship
-        half = np.sinh(0.5 * (theta_v - theta))
-        coasting = (s * math.cosh(theta_v) - 2.0 * r * half * half) / np.cosh(theta_v - theta) - ship
+        r = self._radius_per_separation
+        q = np.sinh(theta)
+        half = np.sinh(0.5 * theta)
+        on_hyperbola = 2.0 * half * half + q * q / (np.hypot(r, q) + r)
+        delta = theta_v - theta
+        half_delta = np.sinh(0.5 * delta)
+        coasting = 2.0 * (np.sinh(theta_v - 0.5 * theta) * half - r * half_delta * half_delta) / np.cosh(delta)
         phi = theta + np.arcsinh(q / r)
         return np.where(phi <= theta_v, on_hyperbola, coasting)
+
+    @property
+    def _radius_per_separation(self) -> float:
+        """``r / s = 1 / (a s)``: the rear ends' Rindler radius in separations."""
+        return (1.0 / self.a_back) / self.separation
+
+    def rest_length_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """The string's rest length (in the rear ship's comoving frame) when the rear ship has lab
+        rapidity ``theta`` (clipped to ``[0, theta_V]``): ``D(theta) - r - l = (s - l) + E``."""
+        return self.unstretched + self.stretch_at_rapidity(rapidity)
 
     def rapidities(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
         """The rear ship's lab rapidity when the string's rear end is at frame time ``t'``: that end's
@@ -190,25 +251,46 @@ class BellString:
         the rear ship's momentarily comoving frame. Shape of ``t``."""
         return self.rest_length_at_rapidity(self.rapidities(t, frame=frame))
 
+    def strain_at_rapidity(self, rapidity: npt.ArrayLike) -> FloatArray:
+        """``L_string / (s - l) - 1 = E / (s - l)`` when the rear ship has lab rapidity ``theta``
+        (clipped to ``[0, theta_V]``), the string's length measured in the rear ship's comoving frame:
+        from the stretch ``E`` (module docstring), exact however small the strain."""
+        return self._stretch_per_separation(rapidity) * (self.separation / self.unstretched)
+
     def strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
-        """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
-        return self.rest_lengths(t, frame=frame) / self.unstretched - 1.0
+        """:meth:`strain_at_rapidity` when the string's rear end is at frame time ``t'``."""
+        return self.strain_at_rapidity(self.rapidities(t, frame=frame))
 
     @property
-    def break_event(self) -> tuple[float, float] | None:
-        """Lab ``(t, x)`` of the string's rear end when the strain reaches the breaking strain, or
-        ``None`` (no breaking strain, or one the string never reaches)."""
+    def break_rapidity(self) -> float | None:
+        """The rear ship's lab rapidity where the strain (in its comoving frame) reaches the breaking
+        strain, or ``None`` (no breaking strain, or one the string never reaches): the module
+        docstring's closed forms, from products."""
         e_b = self.breaking_strain
         if e_b is None or e_b > self.final_strain:
             return None
-        s, r, ship = self.separation, 1.0 / self.a_back, self.ship_length
+        # in separations (s = 1, r/s for r): no product of two lengths to under- or overflow
+        r = self._radius_per_separation
         theta_v = self.velocity.rapidity()
-        d = r + ship + (1.0 + e_b) * self.unstretched
-        theta = math.acosh(max(1.0, (d * d - r * r + s * s) / (2.0 * d * s)))
-        if theta + math.asinh(s * math.sinh(theta) / r) > theta_v:  # the front ship's rear coasts there
-            theta = theta_v - math.acosh(max(1.0, (r + s * math.cosh(theta_v)) / d))
-        big_r = r + ship
-        return (big_r * math.sinh(theta), -r + big_r * math.cosh(theta))
+        stretch = e_b * (self.unstretched / self.separation)
+        d = r + 1.0 + stretch
+        theta = 2.0 * math.asinh(math.sqrt((stretch / d) * ((2.0 * r + stretch) / 4.0)))
+        if theta + math.asinh(math.sinh(theta) / r) > theta_v:  # the front ship's rear coasts there
+            rest = max(0.0, self.velocity.lorentz_factor_minus_one() - stretch)
+            theta = theta_v - 2.0 * math.asinh(math.sqrt(rest / (2.0 * d)))
+        return min(max(theta, 0.0), theta_v)
+
+    @property
+    def break_event(self) -> tuple[float, float] | None:
+        """Lab ``(t, x)`` of the string's rear end when the strain, measured in the rear ship's
+        comoving frame, reaches the breaking strain: ``(R sinh theta, l + 2 R sinh^2(theta/2))``
+        (Sec. 3, Eq. (4), ``R = 1/a + l``); ``None`` if it never does."""
+        theta = self.break_rapidity
+        if theta is None:
+            return None
+        big_r = 1.0 / self.a_back + self.ship_length
+        half = math.sinh(0.5 * theta)
+        return (big_r * math.sinh(theta), self.ship_length + 2.0 * big_r * half * half)
 
     def scene_object(self, front_end: MaterialWorldline) -> SceneObject:
         """The string as a scene object from its rear end to ``front_end`` (the front ship's rear end),
@@ -222,9 +304,14 @@ class BellString:
             "breaking strain" if breaks else "final strain",
             "breaks" if breaks else "its final",
             percent=True,
+            measured_in="in the rear ship's comoving frame",
         )
         lab = self.break_event
-        event = None if lab is None else ObjectEvent("break", lab, parts=True, state="broken")
+        meaning = (
+            "the string's strain, measured in the rear ship's comoving frame, reaches the breaking strain: the "
+            "event on the string's rear end (where along it it snaps is not modelled)"
+        )
+        event = None if lab is None else ObjectEvent("break", lab, parts=True, state="broken", meaning=meaning)
         return SceneObject("string", ObjectKind.STRING, (self.rear_end, front_end), field=field, event=event)
 
 
@@ -236,6 +323,7 @@ class BellScene(Scene):
 
     separation: float = 1.0
     ship_length: float = 0.1
+    """Each ship's rest length ``l`` (the constructor's default: ``separation / 10``)."""
     a_back: float = 0.5
     """The proper acceleration ``a`` of each ship's rear (back) end, the paper's ``a'_B``."""
     breaking_strain: float | None = None
@@ -272,7 +360,8 @@ class BellScene(Scene):
         return self.string.rest_lengths(t, frame=frame)
 
     def string_strains(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> FloatArray:
-        """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``."""
+        """``L_string / (s - l) - 1`` when the string's rear end is at frame time ``t'``, ``L_string``
+        measured in the rear ship's momentarily comoving frame (:meth:`BellString.strains`)."""
         return self.string.strains(t, frame=frame)
 
     @property
@@ -306,25 +395,54 @@ class BellScene(Scene):
         the same as ``strain(t') >= e_b``); all ``False`` if it never breaks. Shape of ``t``."""
         return self.objects[0].parted(t, frame=frame)
 
+    @property
+    def systems(self) -> tuple[PhysicalSystem, ...]:
+        """Two physical systems, never summed: the two ships (and the massless string between them),
+        and the Born-rigid rod that starts between the same two rear ends, which stands in their place (a comparison:
+        it occupies the ships' places, so it is an alternative to them, not a third body)."""
+        return (
+            PhysicalSystem(
+                "the two ships (the string between them taken as massless)", (REAR_SHIP, FRONT_SHIP), "drive", 0.0
+            ),
+            PhysicalSystem(
+                "the Born-rigid rod that starts between the same rear ends (instead of the ships, never beside them)",
+                (COMPARISON_ROD,),
+                "drive",
+                0.0,
+            ),
+        )
+
     def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
-        """The string's story and the rear ends' distance in the ships' frame after, in words."""
+        """The rear ends' distance in the lab and in the ships' frame after, the string's strain and the
+        frame it is measured in (the rear ship's comoving frame), and its fate, the break event given
+        in ``frame`` (labelled)."""
         frame = check_frame(frame)
         g = self.rods[0].motion.velocity_final.lorentz_factor()
+        breaks = self.breaking_strain is not None and self.breaking_strain <= self.final_strain
         lines = [
-            f"the rear ends stay {self.separation:.6g} apart in the lab; in the ships' frame after they are "
-            f"gamma s = {g * self.separation:.6g} apart",
-            f"the string's rest length grows from s - l = {self.string_unstretched:.6g} to gamma s - l = "
-            f"{self.string_final:.6g} (strain {self.final_strain:.4g}); the Born-rigid rod keeps {self.separation:.6g}",
+            f"each ship is a Born-rigid rod of rest length l = {self.ship_length:.6g}, its front end accelerating "
+            f"less than its rear, a/(1 + a l); the rear ends stay {self.separation:.6g} apart in the lab; in the "
+            f"ships' frame after they are γs = {g * self.separation:.6g} apart",
+            "the string's strain is its rest length, measured in the rear ship's momentarily comoving frame, "
+            f"over s − l, minus 1: that rest length grows from s − l = {self.string_unstretched:.6g} to γs − l "
+            f"= {self.string_final:.6g} (strain {self.final_strain:.4g}){' if the string holds' if breaks else ''}; "
+            f"the Born-rigid rod, an alternative to the ships, keeps its rest length {self.separation:.6g}",
         ]
         event = self.string_break_in(frame=frame)
         if self.breaking_strain is None:
             lines.append("no breaking strain given: the string stretches and holds")
         elif event is None:
-            lines.append(f"the string holds: its strain never reaches the breaking strain {self.breaking_strain:.4g}")
+            lines.append(
+                f"the string holds: its strain (in the rear ship's comoving frame) never reaches the breaking "
+                f"strain {self.breaking_strain:.4g}"
+            )
         else:
             lines.append(
-                f"the string breaks at strain {self.breaking_strain:.4g}: at its rear end, (t, x) = "
-                f"({event[0]:.6g}, {event[1]:.6g}) in this frame"
+                f"the string's strain, measured in the rear ship's comoving frame (along its line of simultaneity "
+                f"through the string's rear end), reaches the breaking strain {self.breaking_strain:.4g} at the "
+                f"event {event_in_words(event, frame, 6)} on the string's rear end: the string breaks then (where "
+                "along it, the model does not say; measured in the front ship's frame, the same strain is reached "
+                "at another event)"
             )
         return tuple(lines)
 
@@ -353,7 +471,8 @@ def bell_spaceships(
 ) -> BellScene:
     """Bell's spaceships (module docstring): rear ends at 0 and ``separation``, each with proper
     acceleration ``a_back`` from lab ``t = 0`` until it reaches ``v`` at ``T_B = gamma v / a``
-    (Sec. 3, Eq. (9)); ships of rest length ``ship_length`` (default ``0.1 separation``), Born-rigid
+    (Sec. 3, Eq. (9)); ships of rest length ``ship_length`` (default :func:`default_ship_length`,
+    ``separation / 10``: the registry, the command line and the app default to it too), Born-rigid
     (front ends at ``a / (1 + a l)``, Eq. (15)); a string from the rear ship's front to the front
     ship's rear, breaking at ``breaking_strain`` if given; and the Born-rigid comparison rod on
     ``[0, separation]`` with the same rear acceleration (its front end at ``a / (1 + a s)``).
@@ -365,10 +484,16 @@ def bell_spaceships(
     v = V.check(v)
     separation = SEPARATION.check(separation)
     a_back = A_BACK.check(a_back)
-    ship = 0.1 * separation if ship_length is None else SHIP_LENGTH.check(ship_length)
-    if not ship < separation:  # names both: either may be the one to change
+    ship = default_ship_length(separation) if ship_length is None else SHIP_LENGTH.check(ship_length)
+    if not 0.0 < ship < separation:  # names both: either may be the one to change
         raise ParameterError(
-            "parameters", "such that ship_length < separation", {"separation": separation, "ship_length": ship}
+            "parameters", "such that 0 < ship_length < separation", {"separation": separation, "ship_length": ship}
+        )
+    if not 0.0 < (1.0 / a_back) / separation < math.inf:  # the string's forms take r/s = 1/(a s)
+        raise ParameterError(
+            "parameters",
+            "such that 1/(a_back separation) is a positive finite number",
+            {"separation": separation, "a_back": a_back},
         )
     strain = None if breaking_strain is None else BREAKING_STRAIN.check(breaking_strain)
     velocity = ExactVelocity.from_float(v)
@@ -378,15 +503,16 @@ def bell_spaceships(
         Rod("front ship", rigid_motion(REST, velocity, ship, rho, separation), mass, mass),
         Rod("Born-rigid rod", rigid_motion(REST, velocity, separation, rho, 0.0), mass, mass),
     )
-    (rear_rod, rear_f), (front_rod, front_f) = _STRING_ENDS
-    rear_end = MaterialWorldline(rear_rod, rear_f, rods[rear_rod].motion)
-    front_end = MaterialWorldline(front_rod, front_f, rods[front_rod].motion)
-    string = BellString(separation, ship, a_back, rods[REAR_SHIP].motion.velocity_final, rear_end, strain)
     params: dict[str, float] = {"v": v, "separation": separation, "a_back": a_back}
     if ship_length is not None:
         params["ship_length"] = ship
     if strain is not None:
         params["breaking_strain"] = strain
+    checked_rods(rods, params)  # before the string is derived from them
+    (rear_rod, rear_f), (front_rod, front_f) = _STRING_ENDS
+    rear_end = MaterialWorldline(rear_rod, rear_f, rods[rear_rod].motion)
+    front_end = MaterialWorldline(front_rod, front_f, rods[front_rod].motion)
+    string = BellString(separation, ship, a_back, rods[REAR_SHIP].motion.velocity_final, rear_end, strain)
     frames: Mapping[str, Frame] = MappingProxyType({"lab": LAB, "ships after": Frame(velocity, "ships after")})
     scene = BellScene(
         kind=BELL_SPACESHIPS.kind,
@@ -416,17 +542,22 @@ def _figure_caption(scene: Scene) -> str:
     t_b = scene.events["T_B1"][0]
     broken = scene.string_break
     if broken is not None:
-        fate = f"at breaking strain {scene.breaking_strain:g} it breaks at (t, x) = ({broken[0]:.4g}, {broken[1]:.4g})"
+        fate = (
+            f"at breaking strain {scene.breaking_strain:g} (measured in the rear ship's comoving frame) it breaks "
+            f"at (lab t, x) = ({broken[0]:.4g}, {broken[1]:.4g})"
+        )
     else:
         fate = "it holds"
     return (
         f"Bell's spaceships: two ships (solid) whose rear ends have the same proper acceleration a = {a:g} start "
         f"{s:g} apart and reach V = {v.value:g} at the same lab time, T_B1 and T_B2 (t = γV/a = {t_b:.4g}): their "
         f"rear ends stay {s:g} apart in the lab and end γs = {v.lorentz_factor() * s:.4g} apart in the ships' frame. "
-        f"The string from the rear ship's front to the front ship's rear stretches from rest length "
-        f"{scene.string_unstretched:.4g} to {scene.string_final:.4g} (strain {scene.final_strain:.3g}): {fate}. "
-        f"The Born-rigid rod on the same rear ends (dashed) keeps its rest length {s:g}: its front accelerates "
-        "less, a/(1 + a s) (Eq. (15)), and reaches V only at T_Frod."
+        f"The string from the rear ship's front to the front ship's rear {'would stretch' if broken else 'stretches'} "
+        f"from rest length {scene.string_unstretched:.4g} to {scene.string_final:.4g} (strain "
+        f"{scene.final_strain:.3g}){' if it held' if broken else ''}: {fate}. The Born-rigid rod that starts between "
+        f"the same rear ends, its rear end with the rear ship's (dashed, drawn instead of the ships), keeps its rest "
+        f"length {s:g}: its front accelerates less, a/(1 + a s) (Eq. (15)), falls behind the front ship and reaches "
+        "V only at T_Frod."
     )
 
 
@@ -443,8 +574,11 @@ BELL_SPACESHIPS = SceneDescription(
     kind="bell-spaceships",
     title="Bell's spaceships",
     summary=(
-        "Two ships with the same proper acceleration stay a lab distance s apart; the string between "
-        "them stretches to γ s − l in their frame. A Born-rigid rod beside them does not stretch."
+        "Two ships whose rear ends have the same proper acceleration stay a lab distance s apart; the string "
+        "between them, its length measured in the rear ship's comoving frame, stretches towards γs − l (and "
+        "breaks first if its breaking strain is lower). A Born-rigid rod that starts between the same rear ends, "
+        "instead of the ships, its rear end moving with the rear ship's, keeps its rest length: its front "
+        "accelerates less and falls behind the front ship."
     ),
     source="Sec. 1; Sec. 3",
     constructor=bell_spaceships,
@@ -477,6 +611,7 @@ BELL_SPACESHIPS = SceneDescription(
             {"v": 0.6, "separation": 1.0, "a_back": 0.5, "breaking_strain": 1.0},
         ),
     ),
+    meanings=MappingProxyType({"v": "final speed V (c = 1) of both ships, which start at rest"}),
     order=60,
     renamed=RENAMED,
 )

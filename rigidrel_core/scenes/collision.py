@@ -277,7 +277,10 @@ LENGTH2 = Parameter(
 ROD_COLLISION = SceneDescription(
     kind="rod-collision",
     title="Rod-rod collision",
-    summary="Rod 1 at V1 hits rod 2 at V2 < V1; their touching ends take the barycentric solution at once.",
+    summary=(
+        "Rod 1 at V1 hits rod 2 at V2 < V1; their touching ends take the barycentric (zero total momentum) "
+        "solution at once."
+    ),
     source="Secs. 5-6",
     constructor=rod_collision,
     parameters=(V1, MASS2, V2, LENGTH2, EPS, MASS1, LENGTH1),

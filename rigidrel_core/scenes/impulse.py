@@ -48,6 +48,7 @@ IMPULSIVE_START = SceneDescription(
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod after",
     events=(EventDescription("T_F", "the front end reaches V", "Sec. 4, Eq. (21)"),),
+    meanings=MappingProxyType({"v": "final speed V (c = 1): the kicked back end jumps from rest to +V"}),
     order=30,
 )
 

@@ -23,13 +23,21 @@ door at ``(L0/gamma - D)/V`` if ``D >= L1``, never otherwise. The kinetic energy
 the pole, whose rest mass grows to ``gamma M``: in the barn's frame the wall takes the momentum
 ``gamma M V`` and gives no energy.
 
-**Verdicts.** In any frame, the rear end's velocity only grows (it is braked toward rest in the
-barn) while the door's is constant, so ``x'_rear - x'_door`` at equal frame time never increases
+**Verdicts.** What the door does is decided by three events on the door's worldline ``x = D``:
+the door closes (``t_d``), the front end passes the door (``-D/V``: the front coasts until the
+contact) and the rear end passes it (above; never if ``D < X``). Events on one timelike worldline
+have the same order in every frame, so each verdict holds in every frame: the pole is **caught**
+(entirely inside when the door closes, in every frame's time too: the rear end's passing is in the
+door event's causal past) iff the rear end passes the door at or before ``t_d``; the door closes
+**on the pole** (the pole spans the doorway, front in, rear out) iff the front end has passed and
+the rear end has not; else it closes **in front of the pole**, which would hit it. The scene does
+not model the door's effect on the pole: it is a marker.
+
+Apart from the door: in any frame, the rear end's velocity only grows (it is braked toward rest in
+the barn) while the door's is constant, so ``x'_rear - x'_door`` at equal frame time never increases
 and is constant once the rear end rests in the barn: its least value is ``(X - D)/gamma'``, ``X``
-the rear end's resting place; the front end never crosses the wall. So the pole is entirely inside
-at some instant of a frame iff ``X <= D``: the same in every frame (each frame's samplers find it).
-The door's closing and the rear end's passing the door are both at ``x = D`` in the barn: their
-separation is timelike (or zero) and their order the same in every frame.
+the rear end's resting place; the front end never crosses the wall. So the pole, the door left
+open, ends entirely inside iff ``X <= D``: the same in every frame.
 """
 
 from __future__ import annotations
@@ -42,7 +50,8 @@ from typing import Literal
 
 import numpy as np
 
-from .._build import IMPULSE, LENGTH, MASS, SIZE, V, checked_scene, rigid_motion
+from .._budget import PhysicalSystem
+from .._build import IMPULSE, LENGTH, MASS, MAX_SCENE_COORDINATE, SIZE, V, checked_scene, rigid_motion
 from .._description import (
     EventDescription,
     Interval,
@@ -53,6 +62,7 @@ from .._description import (
     SceneDescription,
     ScenePreset,
     Slider,
+    given,
 )
 from .._exact import REST, ExactVelocity
 from .._frame import LAB, Frame, check_frame
@@ -60,10 +70,27 @@ from .._objects import ObjectEvent, SceneObject
 from .._plastic import PlasticMotion
 from .._scene import EventSpec, Rod, Scene
 from .._validate import ParameterError
+from .._words import event_in_words
 from .wall import bounce
 
 Model = Literal["born", "signal", "both"]
 MODELS: tuple[Model, ...] = ("born", "signal", "both")
+
+
+def moving_length(v: float, length: float) -> float:
+    """``L0/gamma``: the length in the barn's frame of the pole moving at ``V`` (Sec. 3, Eq. (17))."""
+    return length / ExactVelocity.from_float(v).lorentz_factor()
+
+
+def paradox_door_time(v: float, length: float, barn_length: float) -> float:
+    """``(L0/gamma - D)/V``: the lab time at which the pole's rear end, were the pole not stopped
+    (on ``x = L0/gamma - V t``), would pass the door at ``x = D``: the instant the paradox names
+    (``0``, the contact, for ``D = L0/gamma``)."""
+    return (moving_length(v, length) - barn_length) / v
+
+
+#: Largest |t_d|: the door's event, like every lab event of a scene, within this of the origin.
+_DOOR_TIMES = Interval(-MAX_SCENE_COORDINATE, MAX_SCENE_COORDINATE, lo_closed=True, hi_closed=True)
 
 BARN_LENGTH = Parameter(
     "barn_length",
@@ -71,12 +98,13 @@ BARN_LENGTH = Parameter(
     "D (barn)",
     "length unit",
     SIZE,
-    0.8,
-    "rest length D of the barn, back wall at 0, door at D (none: L0/γ, where the moving pole just fits; "
-    "the default 0.8 is L0/γ at the default V = 0.6)",
+    None,
+    "rest length D of the barn, back wall at 0, door at D (default none: L0/γ, the moving pole's length in "
+    "the barn's frame, so that it just fits there at every V)",
     Slider(0.05, 2.0, 0.01),
     typical=(0.05, 2.0),
     optional=True,
+    when_omitted=lambda p: moving_length(given(p, "v"), given(p, "length")),
 )
 SOUND_SPEED = Parameter(
     "sound_speed",
@@ -93,13 +121,14 @@ DOOR_TIME = Parameter(
     "t_d",
     "t_d (door closes)",
     "length unit",
-    Interval(-math.inf, math.inf),
-    0.0,
-    "lab time t_d at which the front door closes (none: (L0/γ − D)/V, when the unstopped rear end would pass "
-    "it; the default 0 is that instant for D = L0/γ)",
+    _DOOR_TIMES,
+    None,
+    "lab (barn) time t_d at which the front door closes (default none: (L0/γ − D)/V, the instant the paradox "
+    "names, when the rear end, were the pole not stopped, would pass the door; 0 for D = L0/γ)",
     Slider(-3.0, 3.0, 0.01),
     typical=(-3.0, 3.0),
     optional=True,
+    when_omitted=lambda p: paradox_door_time(given(p, "v"), given(p, "length"), given(p, "barn_length")),
 )
 
 
@@ -109,22 +138,42 @@ class DoorOrder(StrEnum):
     AFTER = "after the rear end passes the door"
     SAME_EVENT = "as the rear end passes the door (the same event)"
     BEFORE = "before the rear end passes the door"
-    NEVER_PASSES = "while the rear end never passes the door"
+    NEVER_PASSES = "but the rear end never passes the door"
+
+    def words(self) -> str:
+        """``"the door closes after the rear end passes the door"``; ``"the door closes, but the rear end
+        never passes the door"``."""
+        return f"the door closes, {self.value}" if self is DoorOrder.NEVER_PASSES else f"the door closes {self.value}"
+
+
+class DoorOutcome(StrEnum):
+    """What the door's closing does to a pole, in every frame (module docstring, **Verdicts**)."""
+
+    CAUGHT = "the door closes with the pole entirely inside"
+    """The rear end passes the door at or before the door closes."""
+    ON_POLE = "the door closes on the pole, which spans the doorway"
+    """The front end has passed the door, the rear end has not (or never does): a real door would strike
+    the pole."""
+    SHUT_OUT = "the door closes in front of the pole"
+    """The front end has not passed the door (or reaches it as it closes): the pole would hit the closed door."""
 
 
 @dataclass(frozen=True)
 class PoleVerdict:
-    """What one pole does in the barn, found in two frames (they agree: see the module docstring)."""
+    """What one pole does in the barn (module docstring, **Verdicts**): each question answered by one
+    exact criterion in the barn's frame, whose answer is the same in every frame."""
 
     rod: int
     model: Literal["born", "signal"]
     rear_rest_x: float
     """Lab x where the rear end comes to rest (``L0`` Born-rigid, ``L1`` signal-limited)."""
-    inside_barn_frame: bool
-    inside_pole_frame: bool
-    """Entirely inside at some instant of the pole's initial frame ("pole before")."""
-    door_barn_frame: DoorOrder
-    door_pole_frame: DoorOrder
+    inside: bool
+    """With the door left open, the pole ends at rest entirely inside the barn: ``X <= D``."""
+    door: DoorOrder
+    """The door's closing against the rear end's passing the door, in every frame."""
+    outcome: DoorOutcome
+    """What the door's closing does to the pole, in every frame: decided by :attr:`door` and the front
+    end's passing the door alone."""
     text: str
 
 
@@ -136,11 +185,35 @@ class PoleBarnScene(Scene):
     door_time: float = 0.0
     sound_speed: float = 1.0
     models: tuple[Literal["born", "signal"], ...] = ("born",)
+    heats: tuple[float, ...] = (0.0,)
+    """The rest energy each pole's stop creates: the Born-rigid pole's goes into the wall, the
+    signal-limited pole's into the pole (``M (gamma - 1)`` each)."""
 
     @property
     def rod_groups(self) -> tuple[int, ...]:
         """Each pole in its own group: the models are alternatives, never in the barn together."""
         return tuple(range(len(self.models)))
+
+    @property
+    def systems(self) -> tuple[PhysicalSystem, ...]:
+        """One physical system per model: a pole and the barn's wall that stops it (the two poles are
+        two models of one pole, never in the barn together: their 4-momenta are never summed)."""
+        return tuple(
+            PhysicalSystem(f"the {rod.name} and the barn's back wall (one model)", (i,), "wall", heat)
+            for i, (rod, heat) in enumerate(zip(self.rods, self.heats, strict=True))
+        )
+
+    @property
+    def moving_length(self) -> float:
+        """``L0/gamma``: the moving pole's length in the barn's frame."""
+        motion = self.rods[0].motion
+        return moving_length(-motion.velocity_initial.value, motion.length)
+
+    @property
+    def paradox_door_time(self) -> float:
+        """``(L0/gamma - D)/V``: when the unstopped rear end would pass the door (lab), the paradox's instant."""
+        motion = self.rods[0].motion
+        return paradox_door_time(-motion.velocity_initial.value, motion.length, self.barn_length)
 
     @property
     def door_closing(self) -> tuple[float, float]:
@@ -157,67 +230,167 @@ class PoleBarnScene(Scene):
         return self.rods[rod].motion.length_final if self.models[rod] == "signal" else self.rods[rod].motion.length
 
     def rear_passes_door(self, rod: int) -> tuple[float, float] | None:
-        """Lab event where pole ``rod``'s rear end reaches ``x = D`` (``None``: never; module docstring)."""
+        """Lab event where pole ``rod``'s rear end reaches ``x = D`` (``None``: never, ``D < X``; module
+        docstring)."""
         motion = self.rods[rod].motion
         length, d = motion.length, self.barn_length
-        speed = -motion.velocity_initial.value
         gamma = motion.velocity_initial.lorentz_factor()
         if d < self.rear_rest_x(rod):
             return None
         if self.models[rod] == "born" and d < gamma * length:
             return (-math.sqrt((d - length) * (d + length)), d)  # on x = sqrt(L0^2 + t^2), Eq. (23)
-        return ((length / gamma - d) / speed, d)
+        return (self.paradox_door_time, d)
+
+    @property
+    def front_passes_door(self) -> tuple[float, float]:
+        """Lab event where the poles' front end passes the door: ``(-D/V, D)`` (it coasts until the
+        contact at the origin, in either model)."""
+        v = -self.rods[0].motion.velocity_initial.value
+        return (-self.barn_length / v, self.barn_length)
+
+    def rear_at_door_time(self, rod: int) -> float:
+        """Lab x of pole ``rod``'s rear end when the door closes (lab time ``t_d``)."""
+        return float(self.positions(np.array([self.door_time]))[rod, 1, 0])
+
+    def inside(self, rod: int) -> bool:
+        """Whether pole ``rod``, the door left open, ends at rest entirely inside the barn: ``X <= D``,
+        ``X`` its rear end's resting place, exactly. The same in every frame (module docstring,
+        **Verdicts**: in any frame ``x'_rear - x'_door`` at equal time never increases and ends at
+        ``(X - D)/gamma'``), and the same criterion as the rear end's passing the door
+        (:meth:`rear_passes_door`). Whether the door catches it is :meth:`door_outcome`."""
+        return self.rear_rest_x(rod) <= self.barn_length
 
     def inside_in(self, rod: int, *, frame: Frame) -> bool:
-        """Whether pole ``rod`` is entirely inside the barn (``x'_wall <= x'_front``, ``x'_rear <=
-        x'_door`` at one frame time) at some instant of ``frame``: sampled after every event of the
-        scene in that frame, where ``x'_rear - x'_door`` has its least value (module docstring)."""
-        frame = check_frame(frame)
-        t_late = self.time_window(frame=frame, margin=1.0)[1]
-        t_late = max(t_late, self.door_closing_in(frame=frame)[0] + 1.0)
-        x = self.positions(np.array([t_late]), frame=frame)[rod, :, 0]
-        wall, door = (float(o.positions(t_late, frame=frame)[0]) for o in self.objects)
-        scale = 1e-12 * max(abs(t_late), self.barn_length, self.rods[rod].motion.length)
-        return bool(x[1] - door <= scale and x[0] - wall >= -scale)
+        """:meth:`inside`, asked in ``frame``: the answer is the same in every frame (module docstring)."""
+        check_frame(frame)
+        return self.inside(rod)
 
-    def door_order_in(self, rod: int, *, frame: Frame) -> DoorOrder:
-        """The door's closing against the rear end's passing the door, by their times in ``frame``."""
-        frame = check_frame(frame)
+    def door_order(self, rod: int) -> DoorOrder:
+        """The door's closing against pole ``rod``'s rear end passing the door, by their lab times,
+        exactly: both events are at the barn's ``x = D``, a timelike (or null) separation, so their
+        order is the same in every frame."""
         passes = self.rear_passes_door(rod)
         if passes is None:
             return DoorOrder.NEVER_PASSES
-        if passes == self.door_closing:
+        if passes[0] == self.door_time:
             return DoorOrder.SAME_EVENT
-        t_pass = float((frame @ np.array(passes))[0])
-        t_door = self.door_closing_in(frame=frame)[0]
-        return DoorOrder.AFTER if t_door > t_pass else DoorOrder.BEFORE
+        return DoorOrder.AFTER if self.door_time > passes[0] else DoorOrder.BEFORE
+
+    def door_order_in(self, rod: int, *, frame: Frame) -> DoorOrder:
+        """:meth:`door_order`, asked in ``frame``: the same in every frame."""
+        check_frame(frame)
+        return self.door_order(rod)
+
+    def door_outcome(self, rod: int) -> DoorOutcome:
+        """What the door's closing does to pole ``rod`` (module docstring, **Verdicts**): caught iff its
+        rear end passes the door at or before the door closes (:meth:`door_order`); else on the pole iff
+        the front end passed the door before it closes; else in front of it. Each comparison is of two
+        events on the door's worldline: the same in every frame."""
+        if self.door_order(rod) in (DoorOrder.AFTER, DoorOrder.SAME_EVENT):
+            return DoorOutcome.CAUGHT
+        if self.door_time > self.front_passes_door[0]:
+            return DoorOutcome.ON_POLE
+        return DoorOutcome.SHUT_OUT
 
     def notes(self, *, frame: Frame = LAB) -> tuple[str, ...]:
-        """The door's closing in ``frame`` and each pole's verdict (the same in every frame)."""
-        t, x = self.door_closing_in(frame=frame)
-        return (f"the door closes at (t, x) = ({t:.6g}, {x:.6g}) in this frame", *(v.text for v in self.verdicts()))
+        """The barn against the moving pole, the door's closing (as an event of ``frame``, labelled)
+        and each pole's verdict (the same in every frame; lengths and times of the barn's frame, the
+        lab, labelled so)."""
+        frame = check_frame(frame)
+        d, moving = self.barn_length, self.moving_length
+        if math.isclose(d, moving, rel_tol=1e-12):
+            barn = (
+                f"the barn is D = {d:.4g} long in its own frame (the lab), the moving pole's length there, "
+                f"L0/γ = {moving:.4g}: in the barn's frame the moving pole just fits"
+            )
+        elif d < moving:
+            barn = (
+                f"the barn, D = {d:.4g} in its own frame (the lab), is shorter than the moving pole there "
+                f"(L0/γ = {moving:.4g}): even unstopped, the pole does not fit in the barn's frame"
+            )
+        else:
+            barn = (
+                f"the barn, D = {d:.4g} in its own frame (the lab), is longer than the moving pole there "
+                f"(L0/γ = {moving:.4g}): the moving pole fits with room to spare"
+            )
+        paradox = self.paradox_door_time
+        if self.door_time == paradox:
+            when = "the instant the paradox names, when the rear end, were the pole not stopped, would pass it"
+        else:
+            when = (
+                "not the paradox's instant (the rear end, were the pole not stopped, would pass the door at "
+                f"lab t = {paradox:.4g})"
+            )
+        seen = event_in_words(self.door_closing_in(frame=frame), frame)
+        door = f"the door closes at lab t_d = {self.door_time:.4g}, {when}: at {seen}"
+        return (barn, door, *(v.text for v in self.verdicts()))
+
+    def pole_name(self, rod: int) -> str:
+        """``"the Born-rigid pole"``; ``"the signal-limited pole (its stop front at c_s = 1, light speed,
+        in the barn's frame)"``."""
+        if self.models[rod] == "born":
+            return "the Born-rigid pole"
+        light = ", light speed," if self.sound_speed == 1.0 else ""
+        return f"the signal-limited pole (its stop front at c_s = {self.sound_speed:g}{light} in the barn's frame)"
 
     def verdicts(self) -> tuple[PoleVerdict, ...]:
-        """One :class:`PoleVerdict` per pole, in words for the readout and the command line."""
-        pole = self.frames["pole before"]
+        """One :class:`PoleVerdict` per pole, in words for the readout and the command line: what the
+        door's closing does to it (:meth:`door_outcome`), with the events that decide it (lab times, all
+        at the door), and where it comes to rest."""
         out: list[PoleVerdict] = []
+        d, t_d = self.barn_length, self.door_time
+        same_x = f"both events are at the door, lab x = {d:.4g}, so no frame reverses them"
         for i, model in enumerate(self.models):
-            inside = (self.inside_in(i, frame=LAB), self.inside_in(i, frame=pole))
-            door = (self.door_order_in(i, frame=LAB), self.door_order_in(i, frame=pole))
-            x_rest = self.rear_rest_x(i)
-            name = "Born-rigid pole" if model == "born" else f"signal-limited pole (c_s = {self.sound_speed:g})"
-            if inside[0] == inside[1]:
-                where = "is entirely inside the barn at some instant" if inside[0] else "is never entirely inside"
-                where += " (in the barn's frame and in the pole's initial frame)"
-            else:
-                where = f"inside in the barn's frame: {inside[0]}; in the pole's initial frame: {inside[1]}"
-            order = door[0].value if door[0] == door[1] else f"{door[0].value} (barn), {door[1].value} (pole)"
-            text = (
-                f"{name}: {where}; its rear end comes to rest at barn x = {x_rest:.4g}, the door is at "
-                f"x = {self.barn_length:.4g}; the door closes at barn time {self.door_time:.4g}, {order}, "
-                "in every frame."
+            inside, door, outcome, x_rest = (
+                self.inside(i),
+                self.door_order(i),
+                self.door_outcome(i),
+                self.rear_rest_x(i),
             )
-            out.append(PoleVerdict(i, model, x_rest, inside[0], inside[1], door[0], door[1], text))
+            name = self.pole_name(i)
+            passes = self.rear_passes_door(i)
+            rest = (
+                f"it comes to rest with its rear end at lab x = {x_rest:.4g}"
+                if model == "born"
+                else f"it comes to rest compressed to rest length {x_rest:.4g}, its rear end at lab x = {x_rest:.4g}"
+            )
+            spot = "at" if x_rest == d else "inside"
+            if outcome is DoorOutcome.CAUGHT:
+                assert passes is not None
+                when = (
+                    "as the door closes (the same event)"
+                    if door is DoorOrder.SAME_EVENT
+                    else f"at lab t = {passes[0]:.4g}, before the door closes at lab t = {t_d:.4g} ({same_x})"
+                )
+                text = (
+                    f"{name} is caught: its rear end passes the door {when}, so the whole pole is inside the "
+                    f"barn when the door closes, in every frame; {rest}."
+                )
+            elif outcome is DoorOutcome.ON_POLE:
+                head = (
+                    f"the door closes on {name}, in every frame: at lab t = {t_d:.4g} the pole spans the doorway, "
+                    f"its rear end at lab x = {self.rear_at_door_time(i):.4g}, outside the door at lab x = {d:.4g}"
+                )
+                if passes is None:
+                    tail = f"its rear end never passes the door: {rest}, beyond the door"
+                else:
+                    tail = (
+                        f"its rear end passes the door only at lab t = {passes[0]:.4g}, after the door closes "
+                        f"({same_x}); only with the door left open does the pole end entirely inside ({rest}, "
+                        f"{spot} the door)"
+                    )
+                text = f"{head}; {tail}."
+            else:
+                if inside:
+                    tail = f"only with the door left open does the pole end entirely inside ({rest}, {spot} the door)"
+                else:
+                    tail = f"even with the door left open it would stick out of the barn: {rest}, beyond the door"
+                text = (
+                    f"the door closes in front of {name}, in every frame: at lab t = {t_d:.4g}, before its front end "
+                    f"reaches the door at lab t = {self.front_passes_door[0]:.4g} ({same_x}); the pole would hit "
+                    f"the closed door; {tail}."
+                )
+            out.append(PoleVerdict(i, model, x_rest, inside, door, outcome, text))
         return tuple(out)
 
 
@@ -231,7 +404,9 @@ def pole_barn(
     mass: float = 1.0,
 ) -> PoleBarnScene:
     """The pole in the barn (module docstring); ``model`` ``"born"``, ``"signal"`` or ``"both"``
-    (the two poles as rods 0 and 1, the registry's scene).
+    (the two poles as rods 0 and 1, the registry's scene). ``barn_length`` ``None``: ``L0/gamma``
+    (:func:`moving_length`, the pole just fits in the barn's frame); ``door_time`` ``None``: the
+    paradox's instant (:func:`paradox_door_time`).
 
     Events: ``"T_1"``, ``"T_1'"`` (the Born-rigid pole's rear end starts and ends its deceleration,
     Sec. 5, Eqs. (22), (24)), ``"T_s"`` (the stop front reaches the signal-limited pole's rear end).
@@ -244,25 +419,39 @@ def pole_barn(
     c_s = SOUND_SPEED.check(sound_speed)
     mass = MASS.check(mass)
     velocity = ExactVelocity.from_float(-v)
-    contracted = length / velocity.lorentz_factor()
-    d = contracted if barn_length is None else BARN_LENGTH.check(barn_length)
-    t_d = (contracted - d) / v if door_time is None else DOOR_TIME.check(door_time)
+    d = moving_length(v, length) if barn_length is None else BARN_LENGTH.check(barn_length)
+    t_d = None if door_time is None else DOOR_TIME.check(door_time)
+    # the events the verdicts and notes name, like every lab event of a scene, within 1e120 of the
+    # origin: the unstopped rear end's passing the door (the default door time) and the stop front's
+    # reaching the signal-limited pole's rear end, at L0/(gamma (c_s + V))
+    paradox = paradox_door_time(v, length, d)
+    stop_front = moving_length(v, length) / (c_s + v)
+    if paradox not in _DOOR_TIMES or (model != "born" and not stop_front <= MAX_SCENE_COORDINATE):
+        within = f"within {MAX_SCENE_COORDINATE:g} of the origin"
+        raise ParameterError(
+            "parameters",
+            f"such that the unstopped rear end passes the door, at lab t = (L0/γ − D)/V, and the stop front "
+            f"reaches the rear end, at lab t = L0/(γ (c_s + V)), {within}",
+            {"v": v, "length": length, "barn_length": d, "sound_speed": c_s},
+        )
+    if t_d is None:
+        t_d = paradox
     models: tuple[Literal["born", "signal"], ...] = ("born", "signal") if model == "both" else (model,)
     rods: list[Rod] = []
     specs: list[EventSpec] = []
-    heat = 0.0
+    heats: list[float] = []
     for i, m in enumerate(models):
         if m == "born":
-            _, wall_heat = bounce(v, 0.0, mass)
+            _, wall_heat = bounce(v, 0.0, mass)  # M (gamma - 1), into the wall
             rods.append(Rod("Born-rigid pole", rigid_motion(velocity, REST, length, IMPULSE, 0.0), mass, mass))
             specs += [EventSpec("T_1", i, 1, "start"), EventSpec("T_1'", i, 1, "stop")]
-            heat += wall_heat
+            heats.append(wall_heat)
         else:
             plastic = PlasticMotion.stop_at_wall(v, length, c_s)
-            gamma = velocity.lorentz_factor()
-            rods.append(Rod("signal-limited pole", plastic, mass, gamma * mass))
+            heat = mass * velocity.lorentz_factor_minus_one()  # M (gamma - 1), into the pole: a product
+            rods.append(Rod("signal-limited pole", plastic, mass, mass + heat))
             specs.append(EventSpec("T_s", i, 1, "stop"))
-            heat += (gamma - 1.0) * mass
+            heats.append(heat)
     params: dict[str, float] = {"v": v, "length": length, "sound_speed": c_s}
     if barn_length is not None:
         params["barn_length"] = d
@@ -275,18 +464,24 @@ def pole_barn(
         event_specs=tuple(specs),
         frames=MappingProxyType({"lab": LAB, "pole before": Frame(velocity, "pole before")}),
         external_source="wall",
-        heat=heat,
+        heat=heats[0],
         origin_event=OriginEvent.CONTACT,
         objects=(  # the wall's matter toward -x, the door's outside the barn (toward +x)
             SceneObject.inertial("back wall", ObjectKind.WALL, 0.0, REST, side=-1),
             SceneObject.inertial(
-                "door", ObjectKind.BARN_DOOR, d, REST, side=1, event=ObjectEvent("door closes", (t_d, d))
+                "door",
+                ObjectKind.BARN_DOOR,
+                d,
+                REST,
+                side=1,
+                event=ObjectEvent("door closes", (t_d, d), meaning="the barn's front door closes"),
             ),
         ),
         barn_length=d,
         door_time=t_d,
         sound_speed=c_s,
         models=models,
+        heats=tuple(heats),
     )
     checked_scene(scene)
     return scene
@@ -305,21 +500,25 @@ def _both(
 
 def _figure_caption(scene: Scene) -> str:
     """The print figure's caption (:class:`~rigidrel_core.PresetFigure`): the Born-rigid pole solid,
-    the signal-limited one dashed, the door dashed; every number and verdict the scene's."""
+    the signal-limited one dashed, the door dashed; every number and verdict the scene's, every
+    coordinate the lab's (the figure is the lab's diagram)."""
     assert isinstance(scene, PoleBarnScene)
     v, length = scene.parameters["v"], scene.parameters["length"]
     d, t_d = scene.barn_length, scene.door_time
-    fits = " L0/γ =" if math.isclose(d, length * math.sqrt((1.0 - v) * (1.0 + v)), rel_tol=1e-12) else ""
+    fits = " L0/γ =" if math.isclose(d, scene.moving_length, rel_tol=1e-12) else ""
     born, signal = scene.verdicts()
+    fate = {
+        DoorOutcome.CAUGHT: "the door closes behind it: it is caught inside, in every frame",
+        DoorOutcome.ON_POLE: "the door closes on it, in every frame, while it spans the doorway",
+        DoorOutcome.SHUT_OUT: "the door closes in front of it, in every frame",
+    }
     return (
-        f"The pole in the barn, V = {v:g}, L0 = {length:g}, barn D ={fits} {d:g} (back wall at x = 0, door dashed at "
-        f"x = {d:g}, closing at t = {t_d:g}). Solid: the Born-rigid stop (Sec. 5, ε = 0): its rear end starts "
-        f"braking at T_1, before the contact, and comes to rest at x = {born.rear_rest_x:.4g}; it "
-        f"{'is' if born.inside_barn_frame else 'is never'} entirely inside the barn, in the barn's frame and in the "
-        f"pole's, and the door closes {born.door_barn_frame.value}. Dashed: the signal-limited stop "
-        f"(c_s = {scene.sound_speed:g}): every point moves on until the stop front from the contact reaches it; the "
-        f"rear end stops at T_s, x = {signal.rear_rest_x:.4g}; it {'is' if signal.inside_barn_frame else 'is never'} "
-        f"entirely inside, in both frames, and the door closes {signal.door_barn_frame.value}."
+        f"The pole in the barn, V = {v:g}, L0 = {length:g}, barn D ={fits} {d:g}; lab coordinates (the barn's frame): "
+        f"back wall at x = 0, door dashed at x = {d:g}, closing at t = {t_d:g}. Solid: the Born-rigid stop (Sec. 5, "
+        f"ε = 0): its rear end starts braking at T_1, before the contact in the lab, and comes to rest at "
+        f"x = {born.rear_rest_x:.4g}; {fate[born.outcome]}. Dashed: the signal-limited stop (a stop front from the "
+        f"contact at c_s = {scene.sound_speed:g} in the barn's frame): every point moves on until the stop front "
+        f"reaches it; the rear end stops at T_s, x = {signal.rear_rest_x:.4g}; {fate[signal.outcome]}."
     )
 
 
@@ -336,8 +535,10 @@ POLE_BARN = SceneDescription(
     kind="pole-barn",
     title="Pole in the barn",
     summary=(
-        "A pole moving at −V crashes into the back wall of a barn that, in the barn's frame, it just fits: "
-        "the Born-rigid pole (Sec. 5) never fits; a pole stopped by a signal does."
+        "A pole moving at −V crashes into the back wall of a barn of length D (by default L0/γ, so that in the "
+        "barn's frame the moving pole just fits), whose door closes, by default, when the unstopped pole's rear "
+        "end would pass it: it closes on the Born-rigid pole (Sec. 5), in every frame, and behind a pole stopped "
+        "by a signal from the contact."
     ),
     source="Sec. 5",
     constructor=_both,
@@ -345,8 +546,10 @@ POLE_BARN = SceneDescription(
     frames=("lab", "pole before"),
     default_frame="pole before",
     events=(
-        EventDescription("T_1", "the Born-rigid pole's rear end starts to decelerate", "Sec. 5, Eq. (22)"),
-        EventDescription("T_1'", "the Born-rigid pole's rear end comes to rest", "Sec. 5, Eq. (24)"),
+        EventDescription("T_1", "the Born-rigid pole's rear (right) end starts changing velocity", "Sec. 5, Eq. (22)"),
+        EventDescription(
+            "T_1'", "the Born-rigid pole's rear end has its final velocity (at rest in the barn)", "Sec. 5, Eq. (24)"
+        ),
         EventDescription("T_s", "the stop front reaches the signal-limited pole's rear end", "Sec. 5"),
     ),
     objects=(ObjectKind.WALL, ObjectKind.BARN_DOOR),
@@ -357,6 +560,9 @@ POLE_BARN = SceneDescription(
         ScenePreset(
             "Pole in the barn, stop front at c/2", {"v": 0.8, "length": 1.0, "barn_length": 0.6, "sound_speed": 0.5}
         ),
+    ),
+    meanings=MappingProxyType(
+        {"v": "approach speed V (c = 1): the pole moves at −V toward the barn's back wall at x = 0"}
     ),
     order=70,
 )

@@ -77,14 +77,17 @@ def wall_collision(v: float, length: float, eps: float, mass: float = 1.0) -> Sc
 WALL_COLLISION = SceneDescription(
     kind="wall-collision",
     title="Wall crash / bounce",
-    summary="A rod moving at −V hits a wall at x = 0 and sticks (ε = 0), bounces (ε = 1) or anything between.",
+    summary=(
+        "A rod moving at −V hits a wall at x = 0 and stops (ε = 0), bounces back elastically (ε = 1) or anything "
+        "between (by default it bounces, ε = 1)."
+    ),
     source="Sec. 5",
     constructor=wall_collision,
     parameters=(V, LENGTH, EPS, MASS),
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod before",
     events=(
-        EventDescription("T_1", "the far end starts to decelerate", "Sec. 5, Eq. (22)"),
+        EventDescription("T_1", "the far (right) end starts changing velocity", "Sec. 5, Eq. (22)"),
         EventDescription("T_1'", "the far end has its final velocity", "Sec. 5, Eq. (24)"),
     ),
     objects=(ObjectKind.WALL,),
@@ -92,6 +95,7 @@ WALL_COLLISION = SceneDescription(
         ScenePreset("Sec. 5: crash into a wall, V = 0.6", {"v": 0.6, "length": 1.0, "eps": 0.0, "mass": 1.0}),
         ScenePreset("Sec. 5: elastic bounce, V = 0.6", {"v": 0.6, "length": 1.0, "eps": 1.0, "mass": 1.0}),
     ),
+    meanings=MappingProxyType({"v": "approach speed V (c = 1): the rod moves at −V toward the wall at x = 0"}),
     order=50,
 )
 

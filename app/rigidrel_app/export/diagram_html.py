@@ -28,7 +28,7 @@ from ..backends.plotly import (
     label_to_annotation,
     shaded_figure,
 )
-from ..view.diagrams import frame_title, length_static, minkowski_in_frame
+from ..view.diagrams import LENGTH_TIME_TITLE, frame_title, length_static, minkowski_in_frame
 from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Resolved, Settings, resolve
 from ..view.vocabulary import Label, Shade
 
@@ -180,7 +180,7 @@ def _panels(r: Resolved) -> tuple[list[dict[str, Any]], list[dict[str, Any]], di
             if isinstance(item, Label):
                 annotations.append({**label_to_annotation(item), "xref": xa, "yref": ya})
     ranges = {
-        "x_title": f"{diagram.x_title} (rest lengths of rod 1, c = 1)",
+        "x_title": f"{diagram.x_title} (in the scene's length unit, c = 1)",
         "t_title": diagram.y_title,
         "xaxis.range": list(diagram.x_range),
         "yaxis.range": list(diagram.y_range),
@@ -286,9 +286,7 @@ def diagram_figure(settings: Settings) -> dict[str, Any]:
         "title": {"text": fl["title"]["text"], "x": 0.01, "y": 0.975, "font": {"size": 18}},
         "xaxis": axis(fl["xaxis"]["title"]["text"], fl["xaxis"]["range"], domain=list(DIAGRAM_DOMAIN)),
         "yaxis": axis(fl["yaxis"]["title"]["text"], fl["yaxis"]["range"], scaleanchor="x", scaleratio=1),
-        "xaxis2": axis(
-            "time in its own frame (t or t′)", fl["xaxis2"]["range"], domain=list(LENGTH_DOMAIN), anchor="y2"
-        ),
+        "xaxis2": axis(LENGTH_TIME_TITLE, fl["xaxis2"]["range"], domain=list(LENGTH_DOMAIN), anchor="y2"),
         "yaxis2": axis("equal-time length", fl["yaxis2"]["range"], domain=list(LENGTH_Y_DOMAIN), anchor="x2"),
         "annotations": fl["annotations"],
         "sliders": [slider(a, i0, SLIDER_X[0]), slider(b, j0, SLIDER_X[1])],

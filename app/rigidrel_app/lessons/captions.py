@@ -6,15 +6,21 @@ scene in the step's frame (c = 1):
 ==========================  ===========================================================
 ``{event[T_1].t}``          a named event's time in the step's frame (``.x`` its place)
 ``{lab[T_1].t}``            the same event in the lab
+``{preset[rod before][T_1].t}``  the same event in one of the scene's frame presets
 ``{signal[S].t}``           where the light from the key event arrives (``S``, ``R``, ``S_1``...)
 ``{rod[1].v_after}``        rod 1's lab velocity after (``v_before``, ``gamma_before``,
                             ``gamma_after``, ``rest_length``, ``mass_before``, ``mass_after``,
                             ``length_before``, ``length_after``)
 ``{param[v]}``              a parameter's value
 ``{frame.beta}``            the step's frame velocity (``frame.name``)
-``{heat}``                  rest energy created (the budget's heat)
-``{verdict[1]}``            the core's first causal verdict in words
-``{note[1]}``               the scene's first note in words (the string's strain, the barn's verdicts)
+``{heat}``                  rest energy created (the budget's heat; of the scene's first
+                            physical system where its rods are alternatives)
+``{heat_where}``            which body that heat is in, in words (``"all in the wall (the rod
+                            keeps its rest mass)"``)
+``{verdict[1]}``            the core's first causal verdict in words, its events in the step's
+                            frame, each labelled (``(lab t, x) = ...`` in the lab)
+``{note[1]}``               the scene's first note in words (the string's strain, the barn's
+                            verdicts), its events in the step's frame, labelled
 ==========================  ===========================================================
 
 A format spec follows a colon as usual: ``{event[T_1].t:.3g}``. Write ``{{`` and ``}}`` for braces.
@@ -105,15 +111,23 @@ def vocabulary(scene: rr.Scene, frame: rr.Frame) -> dict[str, Any]:
         )
         for k, rod in enumerate(scene.rods)
     }
-    verdicts: Sequence[str] = verdict_lines(scene)
+    verdicts: Sequence[str] = verdict_lines(scene, frame)
     return {
         "event": _Table("event", {k: EventValue(*v) for k, v in scene.events_in(frame=frame).items()}),
         "lab": _Table("lab", {k: EventValue(*v) for k, v in scene.events.items()}),
+        "preset": _Table(
+            "preset",
+            {
+                name: _Table(f"preset[{name}]", {k: EventValue(*v) for k, v in scene.events_in(frame=f).items()})
+                for name, f in scene.frames.items()
+            },
+        ),
         "signal": _Table("signal", {leg.name: EventValue(*leg.arrival) for leg in signals.legs}),
         "rod": _Table("rod", rods),
         "param": _Table("param", {k: v for k, v in scene.parameters.items()}, rr.describe(scene).renamed),
         "frame": FrameValues(frame.beta, frame.label()),
-        "heat": scene.budget(frame=frame).heat,
+        "heat": scene.budget(frame=frame).systems[0].heat,
+        "heat_where": scene.budget(frame=frame).systems[0].heat_where,
         "verdict": _Table("verdict", {str(k + 1): v for k, v in enumerate(verdicts)}),
         "note": _Table("note", {str(k + 1): n[:1].upper() + n[1:] for k, n in enumerate(scene.notes(frame=frame))}),
     }

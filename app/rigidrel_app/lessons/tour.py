@@ -78,7 +78,7 @@ def locked_changes(locked: frozenset[str], old: Settings, new: Settings) -> tupl
     if "scene" in locked and (new.scene != old.scene or new.overlay != old.overlay):
         changed.append("scene")
     if new.scene == old.scene:
-        changed += [name for name, value in new.values if name in locked and old.value(name) != value]
+        changed += [name for name, value in new.values if name in locked and old.chosen(name) != value]
     if "frame" in locked and (new.frame, new.beta, new.ride) != (old.frame, old.beta, old.ride):
         changed.append("frame")
     return tuple(changed)

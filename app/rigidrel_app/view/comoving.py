@@ -18,8 +18,12 @@ from .vocabulary import FRAME_COLOR, INK, FloatArray, Item, Label, Points, Polyl
 
 #: The legend's names of the ride's items on the diagrams.
 RIDE_LINE_NAME = "comoving: now"
-HORIZON_NAME = "horizon event"
-#: The horizon event's mark: a square (the named events are dots, the rods now diamonds).
+#: The event every comoving line of simultaneity passes through while the point accelerates: the centre
+#: of its hyperbola, the vertex of the horizon (the horizon is that event's light cone, not the event).
+HORIZON_NAME = "pivot event (the horizon's vertex)"
+#: Its label on the diagram.
+HORIZON_LABEL = "pivot"
+#: The pivot event's mark: a square (the named events are dots, the rods now diamonds).
 HORIZON_SYMBOL = "square"
 
 
@@ -105,7 +109,7 @@ def proper_time_window(scene: rr.Scene, point: RidePoint, lab_window: tuple[floa
 def simultaneity_items(instant: ComovingInstant, span: float, seen_from: rr.Frame = rr.LAB) -> tuple[Item, ...]:
     """For a diagram of ``seen_from`` (the lab unless given): the comoving frame's line of simultaneity
     through the point's event (``span`` either side, in the comoving x'), the point's event and the
-    horizon event, named (the events boosted by the core: ``seen_from @ comoving⁻¹``)."""
+    pivot event, named (the events boosted by the core: ``seen_from @ comoving⁻¹``)."""
     t_here, x_here = instant.event
     events = np.array([[t_here, x_here - span], [t_here, x_here + span], [t_here, x_here]])
     seen = (seen_from @ instant.frame.inverse()) @ events
@@ -117,5 +121,5 @@ def simultaneity_items(instant: ComovingInstant, span: float, seen_from: rr.Fram
         Polyline(seen[:2, 1], seen[:2, 0], style),
         Points(np.array([xe]), np.array([te]), Style(FRAME_COLOR, group="comoving"), size=10, symbol="circle-open"),
         Points(np.array([xh]), np.array([th]), horizon, size=10, symbol=HORIZON_SYMBOL),
-        Label(float(xh), float(th), "horizon", Style(INK, group="comoving")),
+        Label(float(xh), float(th), HORIZON_LABEL, Style(INK, group="comoving")),
     )

@@ -50,6 +50,9 @@ ENDS_NOW_SYMBOL = "diamond-open"
 LENGTH_NOW_NAME = "lengths now"
 #: The length plot's top, per the largest length: room above the rest length for event labels.
 LENGTH_HEADROOM = 1.3
+#: The length panel's time axis: each curve is drawn against its own frame's time (its legend says
+#: which, "(t)" or "(t′)").
+LENGTH_TIME_TITLE = "lab t, or t′ of the frame chosen"
 
 
 @dataclass(frozen=True)
@@ -118,7 +121,7 @@ def equal_scale_ranges(
     half_x = 0.55 * (x[1] - x[0]) + 0.05
     half_t = 0.5 * (t[1] - t[0])
     ratio = area[0] / area[1]  # pixels wide per pixel high
-    if half_x / half_t > ratio:
+    if not half_t > 0.0 or half_x / half_t > ratio:  # a window of no width (a degenerate scene): from x
         half_t = half_x / ratio
     else:
         half_x = half_t * ratio
@@ -385,7 +388,7 @@ def length_static(
             items.append(Label(te, le, text, Style(INK), size=label_px, movable=True))
     chart = Chart(
         items=tuple(items),
-        x_title="time in its own frame (t or t′)",
+        x_title=LENGTH_TIME_TITLE,
         y_title="equal-time length",
         x_range=t_range,
         y_range=(0.0, top * LENGTH_HEADROOM if top > 0 else 1.0),

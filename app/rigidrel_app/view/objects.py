@@ -81,8 +81,9 @@ def _amount(field: rr.ObjectField, value: float, spec: str) -> str:
 
 
 def object_words(obj: rr.SceneObject, value: float | None, parted: bool) -> str:
-    """What a lane's title says of ``obj`` at an instant: its field's ``value`` and the colours' key
-    (``"string strain 22.0 % (faint → strong: 0 → 25 %, breaks)"``), or, once its event has parted
+    """What a lane's title says of ``obj`` at an instant: its field's ``value``, the frame it is measured
+    in, and the colours' key (``"string strain 22.0 % in the rear ship's comoving frame (faint → strong:
+    0 → 25 %, breaks)"``), or, once its event has parted
     it, that state (``"string broken (at its breaking strain 25 %)"``); empty for an object with
     neither."""
     field, event = obj.field, obj.event
@@ -94,4 +95,5 @@ def object_words(obj: rr.SceneObject, value: float | None, parted: bool) -> str:
     if field is None or value is None:
         return ""
     now, scale = _amount(field, value, ".1f"), _amount(field, field.full_scale, ".3g")
-    return f"{obj.name} {field.name} {now} (faint → strong: 0 → {scale}, {field.full_scale_meaning})"
+    measured = f" {field.measured_in}" if field.measured_in else ""
+    return f"{obj.name} {field.name} {now}{measured} (faint → strong: 0 → {scale}, {field.full_scale_meaning})"

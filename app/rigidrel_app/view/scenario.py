@@ -25,8 +25,9 @@ from __future__ import annotations
 import argparse
 import math
 import shlex
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from types import MappingProxyType
 from typing import Any, NoReturn
 
 import rigidrel_core as rr
@@ -67,7 +68,7 @@ def format_scenario(settings: Settings, t: float | None = None) -> str:
     d = settings.description
     parts = [settings.scene]
     for p in d.parameters:
-        value = settings.value(p.name)
+        value = settings.chosen(p.name)  # "none" for an omitted one: it keeps following the others
         if p.slider is not None or value != p.default:
             parts += [flag(p), format_value(value)]
     if settings.frame == CUSTOM_FRAME:
@@ -181,7 +182,9 @@ class _Renamed(argparse.Action):
         raise argparse.ArgumentError(self, f"{old} is now {self.new} (the parameter was renamed)")
 
 
-FRAME_HELP = "frame velocity beta in (-1, 1), or a preset name such as 'barycentric' or 'rod 1 after'"
+FRAME_HELP = "frame velocity beta in (-1, 1), or a preset's name (quoted if it has spaces)"
+#: Frame presets whose name a student may not know, with what they are.
+FRAME_GLOSSES: Mapping[str, str] = MappingProxyType({"barycentric": "zero total momentum"})
 
 
 def add_scene_options(parser: argparse.ArgumentParser, description: rr.SceneDescription, frame_help: str) -> None:
@@ -195,12 +198,13 @@ def add_scene_options(parser: argparse.ArgumentParser, description: rr.SceneDesc
             type=parameter_value(p),
             default=argparse.SUPPRESS,
             metavar=p.symbol.replace("′", "'"),
-            help=f"{p.help}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
+            help=f"{description.help_for(p)}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
             + ("; 'none' omits it" if p.optional else ""),
         )
     for old, new in description.renamed.items():  # a line written before a parameter was renamed
         parser.add_argument("--" + old.replace("_", "-"), action=_Renamed, new=new, help=argparse.SUPPRESS)
-    parser.add_argument("--frame", default=None, help=frame_help + f"; presets: {', '.join(description.frames)}")
+    presets = ", ".join(f"{f} ({FRAME_GLOSSES[f]})" if f in FRAME_GLOSSES else f for f in description.frames)
+    parser.add_argument("--frame", default=None, help=f"{frame_help}; presets: {presets}")
 
 
 def add_scenario_options(parser: argparse.ArgumentParser) -> None:

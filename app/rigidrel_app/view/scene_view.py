@@ -44,7 +44,7 @@ from .lanes import (
 from .layers import Layer
 from .layout import CanvasLayout
 from .sampling import ADAPTIVE, Sampler
-from .signals import Signals, event_cone_items, signals_in, verdict_lines
+from .signals import Signals, event_cone_items, key_definition, signals_in, verdict_lines
 from .state import Resolved, format_value
 from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style, signed
 
@@ -164,7 +164,7 @@ class Drawn:
     ) -> tuple[tuple[Item, ...], ...]:
         """The moving parts while the lower lane rides a point: on the lab diagram its now-line and the
         comoving frame's line of simultaneity through the point's event (sweeping as the point
-        accelerates, always through the horizon event); on the second diagram (the scene's default
+        accelerates, always through the pivot event); on the second diagram (the scene's default
         frame) the same comoving line and the riding lane's rod ends, boosted there by the core; on
         the length panel the lab's lengths and the comoving frame's (the ridden rod's: its rest length)."""
         assert instant is not None
@@ -292,7 +292,7 @@ def build_drawing(
 
     lab_view, frame_view = _views(frame)
     lab_sweep, frame_sweep = window_x_range(scene, (lab,), window), window_x_range(scene, (frame,), window)
-    if resolved.ride is not None:  # the riding lane's lines of simultaneity meet at the horizon event: show it
+    if resolved.ride is not None:  # the riding lane's lines of simultaneity meet at the pivot event: show it
         lab_sweep = _reaching(lab_sweep, scene.horizon_event(resolved.ride.rod)[1])
         frame_sweep = _reaching(frame_sweep, scene.horizon_event(resolved.ride.rod, frame=frame)[1])
     lab_x, lab_t = equal_scale_ranges(lab_sweep, window, plot_area)
@@ -350,7 +350,7 @@ def _with_cone(chart: Chart, scene: rr.Scene, event: str, frame: rr.Frame) -> Ch
     return replace(chart, items=(*cone, *chart.items))
 
 
-#: A diagram widens to show the horizon event if that at most triples its x range.
+#: A diagram widens to show the pivot event if that at most triples its x range.
 HORIZON_REACH = 1.0
 
 
@@ -363,7 +363,7 @@ def _reaching(x_range: tuple[float, float], x: float) -> tuple[float, float]:
 
 
 def _with_horizon(chart: Chart, event: tuple[float, float]) -> Chart:
-    """``chart`` with the ridden rod's horizon event (the centre of its change, where every comoving
+    """``chart`` with the ridden rod's pivot event (the centre of its change, where every comoving
     line of simultaneity meets) marked and named in the legend, if it lies on the chart."""
     t, x = event
     if not (chart.x_range[0] <= x <= chart.x_range[1] and chart.y_range[0] <= t <= chart.y_range[1]):
@@ -405,7 +405,10 @@ def _signals_end(end: float, start: float, signals: tuple[Signals, Signals] | No
 def _round_outward(t0: float, t1: float) -> tuple[float, float]:
     """The window widened to round numbers (about 1/20 of its length), for a tidy time slider."""
     step = nice_step(t1 - t0) * 50.0
-    return (math.floor(t0 / step) * step, math.ceil(t1 / step) * step)
+    lo, hi = (t0 / step, t1 / step) if step > 0.0 else (math.inf, math.inf)
+    if not (math.isfinite(lo) and math.isfinite(hi)):  # a window of subnormal width: kept as it is
+        return (t0, t1)
+    return (math.floor(lo) * step, math.ceil(hi) * step)
 
 
 def camera_pose(lane_x_range: tuple[float, float], aspect: float) -> cam.CameraPose:
@@ -433,21 +436,25 @@ def lane_states(d: Drawn, now: float, labels: bool = True) -> list[LaneState]:
 
 def signals_readout(resolved: Resolved) -> str:
     """The causal verdicts in words (:func:`.signals.verdict_lines`, from the core's
-    :meth:`~rigidrel_core.Scene.causal_verdicts`) as readout Markdown, or ``""`` while the
-    :attr:`~.layers.Layer.SIGNALS` layer is hidden."""
+    :meth:`~rigidrel_core.Scene.causal_verdicts`, their events the lab's and labelled so, as the
+    readout's) as readout Markdown, or ``""`` while the :attr:`~.layers.Layer.SIGNALS` layer is hidden."""
     if Layer.SIGNALS not in resolved.layers:
         return ""
-    return "".join(f"  \n**Light** {line}" for line in verdict_lines(resolved.scene))
+    definition = key_definition(resolved.scene)
+    lines = (definition[:1].upper() + definition[1:] + ".", *verdict_lines(resolved.scene))
+    return "".join(f"  \n**Light** {line}" for line in lines)
 
 
 def readout_markdown(resolved: Resolved) -> str:
-    """Parameters, final velocities and events in plain numbers, for the control panel."""
+    """Parameters, final velocities and events in plain numbers, for the control panel: every event,
+    in the numbers and in the words (notes, verdicts), the lab's, and labelled "(lab t, x)"."""
     scene, frame = resolved.scene, resolved.frame
     d = rr.describe(scene)
     params = [f"{d.parameter(k).symbol} = {format_value(v)}" for k, v in scene.parameters.items()]
     v = ", ".join(f"{r.name}: {signed(v, 4)}" for r, v in zip(scene.rods, scene.final_velocities, strict=True))
     ev = " · ".join(f"{k} ({_fixed(t)}, {_fixed(x)})" for k, (t, x) in scene.events.items())
-    notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame=frame))  # a paradox's verdicts, in words
+    # a paradox's verdicts in words, their events the lab's (labelled "(lab t, x)"), as the events above
+    notes = "".join(f"  \n**Note** {n}" for n in scene.notes(frame=_LAB))
     shown = frame_title(frame)
     if resolved.ride is not None:
         shown = f"the lower lane rides: {resolved.ride.label(scene)} ({RIDE_RULE}); the second diagram: {shown}"

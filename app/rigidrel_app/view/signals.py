@@ -46,6 +46,8 @@ class SignalLeg:
     arrival: tuple[float, float]
     name: str
     """The arrival's name in the paper's style: ``"S_1"`` (rod 1's far end), ``"R_1"`` (back at its near end)."""
+    meaning: str = ""
+    """The arrival in words: ``"light from the contact reaches the right end of the Born-rigid pole"``."""
 
     def position(self, t: float) -> float | None:
         """Where the pulse is at time ``t`` of the frame, or ``None`` before it leaves or after it arrives."""
@@ -63,6 +65,9 @@ class Signals:
     key_phrase: str
     """How a sentence names the key event: "the contact", "the start of the change", ..."""
     legs: tuple[SignalLeg, ...]
+    key_definition: str = ""
+    """What the key event is, in words: ``"the start: the event at the origin of every frame, where the
+    rear ship's left end starts accelerating"``."""
 
     def pulse_positions(self, t: float) -> FloatArray:
         """The x of every pulse in flight at time ``t`` (shape ``(n,)``, possibly empty)."""
@@ -80,8 +85,8 @@ class Signals:
             t, x = frame @ np.array(event)
             return float(t), float(x)
 
-        legs = tuple(SignalLeg(boost(leg.source), boost(leg.arrival), leg.name) for leg in self.legs)
-        return Signals(boost(self.key_event), self.key_phrase, legs)
+        legs = tuple(replace(leg, source=boost(leg.source), arrival=boost(leg.arrival)) for leg in self.legs)
+        return replace(self, key_event=boost(self.key_event), legs=legs)
 
     @property
     def far_arrivals(self) -> tuple[float, ...]:
@@ -97,6 +102,39 @@ def _key_event(scene: rr.Scene) -> tuple[str, str, tuple[float, float]]:
     starts = [s.name for s in scene.event_specs if s.phase == "start"]
     first = min(starts, key=lambda name: events[name][0])
     return first, "the start of the change", events[first]
+
+
+def _the(name: str) -> str:
+    return name if name.startswith("rod ") else f"the {name}"
+
+
+def end_words(scene: rr.Scene, rod: int, fraction: float) -> str:
+    """``"the right end"`` of a one-rod scene, ``"the right end of the rear ship"`` of any other: the
+    words the core's causal verdicts name an end with."""
+    side = "left" if fraction == 0.0 else "right"
+    return f"the {side} end" + (f" of {_the(scene.rods[rod].name)}" if scene.n_rods > 1 else "")
+
+
+def key_definition(scene: rr.Scene) -> str:
+    """What the key event is (:func:`_key_event`), in words, for the reader of "light from the start"."""
+    phrase = _key_event(scene)[1]
+    first = _the(scene.rods[0].name)
+    walls = [o.name for o in scene.objects if o.role is rr.ObjectRole.BARRIER]
+    origin = "the event at the origin of every frame"
+    if scene.origin_event is rr.OriginEvent.START:
+        what = f"where {first}'s left end starts accelerating"
+    elif scene.origin_event is rr.OriginEvent.KICK:
+        what = f"where {first}'s left end is kicked"
+    elif scene.origin_event is rr.OriginEvent.REST:
+        what = f"where {first}'s left end comes to rest in the lab"
+    elif scene.origin_event is rr.OriginEvent.CONTACT and walls:
+        ends = "the left end of each rod" if scene.n_rods > 1 else f"{first}'s left end"
+        what = f"where {ends} hits the {walls[0]}"
+    elif scene.origin_event is rr.OriginEvent.CONTACT:
+        what = "where the rods' facing ends touch"
+    else:
+        return f"{phrase}: where the left end starts to change velocity, the first thing that happens to the rod"
+    return f"{phrase}: {origin}, {what}"
 
 
 def far_fractions(scene: rr.Scene, key_lab: tuple[float, float]) -> tuple[tuple[float, float], ...]:
@@ -122,11 +160,13 @@ def signals_in(scene: rr.Scene, frame: rr.Frame) -> Signals:
         arrival = scene.signal_arrival(source, rod, far, frame=frame)
         if arrival is None:
             continue
-        legs.append(SignalLeg(key_here, arrival, f"S{suffix}"))
+        legs.append(
+            SignalLeg(key_here, arrival, f"S{suffix}", f"light from {phrase} reaches {end_words(scene, rod, far)}")
+        )
         back = scene.signal_arrival(arrival, rod, near, frame=frame)
         if back is not None:
-            legs.append(SignalLeg(arrival, back, f"R{suffix}"))
-    return Signals(key_here, phrase, tuple(legs))
+            legs.append(SignalLeg(arrival, back, f"R{suffix}", f"its echo is back at {end_words(scene, rod, near)}"))
+    return Signals(key_here, phrase, tuple(legs), key_definition(scene))
 
 
 def _clip(poly: FloatArray, x_range: tuple[float, float], y_range: tuple[float, float]) -> FloatArray:
@@ -184,9 +224,10 @@ def signal_items(signals: Signals, x_range: tuple[float, float], t_range: tuple[
     return tuple(items)
 
 
-def verdict_lines(scene: rr.Scene) -> tuple[str, ...]:
-    """The core's causal verdicts in words, one per rod end that changes away from the key event."""
-    verdicts = scene.causal_verdicts()
+def verdict_lines(scene: rr.Scene, frame: rr.Frame = rr.LAB) -> tuple[str, ...]:
+    """The core's causal verdicts in words, one per rod end that changes away from the key event, each
+    event named or given as ``(t, x)`` of ``frame`` and labelled so (``"(lab t, x) = ..."`` in the lab)."""
+    verdicts = scene.causal_verdicts(frame=frame)
     if verdicts:
         return tuple(v.text[:1].upper() + v.text[1:] for v in verdicts)
     return (

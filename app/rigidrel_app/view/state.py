@@ -47,7 +47,9 @@ class Settings:
     """Every control's value: a scene, each of its parameters, the frame, the overlay.
 
     ``values`` always lists every parameter of ``scene`` (defaults filled in), so two
-    settings that mean the same scene compare equal.
+    settings that mean the same scene compare equal. An optional parameter left out is ``None`` there
+    (:meth:`chosen`); :meth:`value` gives what it stands for (the barn's ``L0/γ``, which follows V
+    until a person sets the barn's length).
     """
 
     scene: str = DEFAULT_SCENE
@@ -66,11 +68,13 @@ class Settings:
     """An event of the scene (its name, or the origin event's: ``"contact"``) whose light cone both
     diagrams draw, or ``None``."""
     _by_name: Mapping[str, float | None] = field(init=False, repr=False, compare=False)
+    _resolved: Mapping[str, float | None] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         values = _all_values(self.scene, dict(self.values))
         object.__setattr__(self, "values", values)
         object.__setattr__(self, "_by_name", MappingProxyType(dict(values)))
+        object.__setattr__(self, "_resolved", MappingProxyType(rr.describe(self.scene).resolved(dict(values))))
 
     def __reduce__(self) -> tuple[type[Settings], tuple[object, ...]]:
         """Pickled as its fields (a timeline is recorded in a process of its own)."""
@@ -86,11 +90,20 @@ class Settings:
     def description(self) -> rr.SceneDescription:
         return rr.describe(self.scene)
 
-    def value(self, name: str) -> float | None:
+    def chosen(self, name: str) -> float | None:
+        """The value set for ``name``: ``None`` for an optional parameter left out (the pole's barn
+        then follows ``L0/γ``: :attr:`rigidrel_core.Parameter.when_omitted`)."""
         return self._by_name[name]
 
+    def value(self, name: str) -> float | None:
+        """The value the scene uses for ``name``, as its control shows it: the one set, or for an
+        optional one left out that stands for a value (the barn's ``L0/γ`` at the current V, Bell's
+        ship length ``s/10``), that value; ``None`` where omitting means no value."""
+        return self._resolved[name]
+
     def parameters(self) -> dict[str, float | None]:
-        return dict(self._by_name)
+        """Every parameter's value as :meth:`value` gives it."""
+        return dict(self._resolved)
 
     def with_value(self, name: str, value: float | None) -> Settings:
         """``name`` (a parameter of this scene: KeyError for any other) set to ``value``."""
@@ -227,7 +240,7 @@ def frame_from_text(scene: rr.Scene, text: str | None) -> rr.Frame:
 
 def build(s: Settings) -> Resolved:
     """The scene and frame the settings mean; a ``ValueError`` names the parameter that makes none."""
-    scene = s.description.build(**s.parameters())
+    scene = s.description.build(**dict(s.values))  # an omitted optional value: the core's own default
     ride: RidePoint | None = None
     if s.frame == CUSTOM_FRAME:
         frame = rr.Frame.from_velocity(s.beta, name="custom")

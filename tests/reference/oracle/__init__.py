@@ -384,6 +384,9 @@ WEAK_ACCELERATION = 600
 so clocks advance ``rho`` times the rapidity change, read in frames far from the lab."""
 PARADOXES = 700
 """Bell's spaceships and the pole in the barn (Born-rigid and signal-limited stops)."""
+SMALL_SPEEDS = 800
+"""The paradoxes at ``V = 1e-6`` and ``1e-3``, Bell's string breaking at strains down to ``1e-12``:
+``gamma - 1``, ``cosh theta - 1`` and the strain are ``~V^2/2``, lost by any subtraction."""
 #: Each group's name in the committed table (``order // 100 * 100`` is a fixed case's group;
 #: the random cases form the group ``"random"``).
 GROUP_NAMES: Mapping[int, str] = MappingProxyType(
@@ -395,6 +398,7 @@ GROUP_NAMES: Mapping[int, str] = MappingProxyType(
         VELOCITY_CHANGES: "velocity-changes",
         WEAK_ACCELERATION: "weak-acceleration",
         PARADOXES: "paradoxes",
+        SMALL_SPEEDS: "small-speeds",
     }
 )
 

@@ -16,6 +16,7 @@ import mpmath as mp
 
 from . import (
     PARADOXES,
+    SMALL_SPEEDS,
     F,
     Mp,
     ReferenceCase,
@@ -56,14 +57,16 @@ def ref_pole_barn(
     door_time: float | None = None,
 ) -> RefScene:
     """Both poles; events ``T_1``, ``T_1'`` (Eqs. (22), (24)) and ``T_s``; extras: the signal-limited
-    pole's rest length after, ``L1``, and the heat of both stops (``2 (gamma - 1)`` per unit mass)."""
+    pole's rest length after, ``L1``, and the heat of each stop (``gamma - 1`` per unit mass: the
+    Born-rigid pole's kinetic energy goes into the wall, the signal-limited pole's into the pole; the
+    two stops are alternatives, never summed)."""
     V, L, c_s = F(v), F(length), F(sound_speed)
     g = gamma_of(V)
     born = [hyperbola_point(mp.mpf(0), material_point(f, L), +1, -V, mp.mpf(0)) for f in fractions]
     signal = [stopped_point(material_point(f, L), V, c_s) for f in fractions]
     rear = stopped_point(L, V, c_s)
     events = {"T_1": (-g * V * L, g * L), "T_1'": (mp.mpf(0), L), "T_s": (rear.start, rear.x(rear.start))}
-    extra = {"rest_length_signal": rear.x(rear.start), "heat": 2 * (g - 1)}
+    extra = {"rest_length_signal": rear.x(rear.start), "heat": g - 1}
     zero = mp.mpf(0)
     return RefScene([born, signal], events, [-V, -V], [zero, zero], [L, L], extra)
 
@@ -80,6 +83,8 @@ POLE_BARN = SceneReference(
             PARADOXES + 12,
         ),
         ReferenceCase("pole-barn", {"v": 1 - 1e-9, "length": 1.0, "sound_speed": 0.3}, PARADOXES + 13),
+        ReferenceCase("pole-barn", {"v": 1e-6, "length": 1.0}, SMALL_SPEEDS + 11),
+        ReferenceCase("pole-barn", {"v": 1e-3, "length": 1.0, "sound_speed": 0.5}, SMALL_SPEEDS + 12),
     ),
 )
 

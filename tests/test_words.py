@@ -1,0 +1,434 @@
+"""Words a student can trust: every coordinate pair in words is of the frame shown, or says it is the lab's.
+
+``rigidrel events`` in three frames (in-process): every ``(t, x) = (a, b)`` its words give (the causal
+verdicts, the paradoxes' notes) names the frame of the output and matches a row of that output's
+tables (events, light arrivals, the changes the verdicts name); in the lab each is labelled
+``(lab t, x)``. The app's readout labels every pair ``(lab t, x)`` and each matches a lab event; the
+built-in lesson's captions label every pair with the step's frame. No heading calls coordinates the
+same in every frame. Bell's strain names the frame it is measured in wherever it is shown; loose
+words the physics once had do not come back; V's help says whether it is a final or an approach speed.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+from decimal import Decimal
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rigidrel_core as rr
+from rigidrel_app.cli import main
+from rigidrel_app.lessons import lesson_from
+from rigidrel_app.view.layers import Layer
+from rigidrel_app.view.scenario import flag
+from rigidrel_app.view.scene_view import readout_markdown
+from rigidrel_app.view.signals import signals_in
+from rigidrel_app.view.state import Settings, build
+
+NUMBER = r"-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?"
+#: A coordinate pair in words, with what precedes it: ``(lab t, x) = (1, 1)``, ``(t, x) = (0.75, 0.75) in
+#: the frame 'custom' (β = 0.3)``.
+PAIR = re.compile(
+    rf"(?P<label>\((?:lab )?t, x\) = )?\((?P<t>{NUMBER}), (?P<x>{NUMBER})\)"
+    rf"(?P<after> in the frame (?:'[^']*' \(β = {NUMBER}\)|β = {NUMBER}))?"
+)
+#: The headers of the tables whose rows (name ..., t, x) words may cite.
+TABLES = ("event ", "arrival ", "change ")
+
+
+def frame_words(frame: rr.Frame) -> str:
+    return (
+        f" in the frame '{frame.name}' (β = {frame.beta:.4g})" if frame.name else f" in the frame β = {frame.beta:.4g}"
+    )
+
+
+def tables_and_words(out: str) -> tuple[list[tuple[float, float]], str]:
+    """The ``(t, x)`` of every row of the event, arrival and change tables, and the words (the notes
+    and the verdicts, wrapped lines joined)."""
+    rows: list[tuple[float, float]] = []
+    words: list[str] = []
+    table = ""
+    for line in out.splitlines():
+        if not line.strip():
+            table = ""
+        elif line.startswith(TABLES):
+            table = line.split()[0]
+        elif table in ("event", "arrival"):  # name, then t and x in columns of 20 (the events' meaning after)
+            rows.append((float(line[12:32]), float(line[32:52])))
+        elif table == "change" and not line.startswith(" "):
+            t, x = line.split()[-2:]
+            rows.append((float(t), float(x)))
+        elif line.startswith(("note ", "  ")) and not line.startswith(("  heat", "  total", "  from", "  system")):
+            table = ""
+            words.append(line.strip().removeprefix("note").strip())
+    return rows, " ".join(words)
+
+
+def matches(pair: tuple[str, str], rows: list[tuple[float, float]]) -> bool:
+    """Whether a pair printed with a few significant digits is one of the rows (to half a unit of
+    its last printed digit)."""
+
+    def near(text: str, value: float) -> bool:
+        last = Decimal(text).as_tuple().exponent
+        assert isinstance(last, int)
+        return abs(float(text) - value) <= 0.5 * 10.0**last * (1 + 1e-9) + 1e-12 * abs(value)
+
+    return any(near(pair[0], row[0]) and near(pair[1], row[1]) for row in rows)
+
+
+def events_output(kind: str, frame: str, capsys: pytest.CaptureFixture[str]) -> str:
+    assert main(["events", kind, f"--frame={frame}"]) == 0
+    return capsys.readouterr().out
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_every_coordinate_in_words_is_a_row_of_the_frame_shown(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    """Three frames: the lab, a custom velocity and the scene's default preset."""
+    d = rr.describe(kind)
+    scene = d.build()
+    for frame_text in ("lab", "-0.45", d.default_frame):
+        out = events_output(kind, frame_text, capsys)
+        frame = scene.frame(frame_text) if frame_text in scene.frames else rr.Frame.from_velocity(-0.45, "custom")
+        lab = frame.same_velocity(rr.LAB)
+        assert "the same in every frame)" not in out  # no heading makes coordinates read as invariants
+        rows, words = tables_and_words(out)
+        assert rows, out
+        pairs = list(PAIR.finditer(words))
+        if scene.causal_verdicts():
+            assert pairs, words  # the verdicts give at least the first light's arrival
+        for m in pairs:
+            pair = (m["t"], m["x"])
+            assert m["label"] is not None, f"{m[0]!r}: a coordinate pair without its frame in {words!r}"
+            if lab:
+                assert m["label"] == "(lab t, x) = " and m["after"] is None, m[0]
+            else:
+                assert m["label"] == "(t, x) = " and m["after"] == frame_words(frame), m[0]
+            assert matches(pair, rows), f"{m[0]!r} is no row of the {frame_text} tables: {rows}"
+
+
+def lab_events(scene: rr.Scene) -> list[tuple[float, float]]:
+    """Every lab event the readout's words may give: named events, the objects' events, and each
+    verdict's start, stop and first light."""
+    events = list(scene.events.values())
+    events += [o.event.lab for o in scene.objects if o.event is not None]
+    for v in scene.causal_verdicts():
+        events += [v.start, v.stop] + ([v.arrival] if v.arrival is not None else [])
+    return events
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_the_readout_labels_every_pair_as_the_labs(kind: str) -> None:
+    """The readout's events are the lab's; its notes and verdicts say so for every pair, whatever the
+    frame chosen, and each pair is a lab event of the scene."""
+    d = rr.describe(kind)
+    settings = replace(Settings(kind), frame=d.default_frame).with_layers(frozenset(Layer))
+    r = build(settings)
+    text = readout_markdown(r)
+    words = text.split("**Clocks**", 1)[1]
+    events = lab_events(r.scene)
+    for m in PAIR.finditer(words):
+        assert m["label"] == "(lab t, x) = " and m["after"] is None, m[0]
+        assert matches((m["t"], m["x"]), events), m[0]
+
+
+def test_the_lesson_captions_label_every_pair_with_the_steps_frame() -> None:
+    """Every coordinate pair a caption gives is labelled: ``(lab t, x)`` in a lab step, the step's frame
+    by name in any other; and it is an event of that frame."""
+    lesson = lesson_from("paper")
+    checked = 0
+    for step in lesson.steps:
+        scene, frame = step.resolved.scene, step.resolved.frame
+        events = [frame @ np.array(e) for e in lab_events(scene)]
+        events += [np.array(leg) for leg in scene.events_in(frame=frame).values()]
+        rows = [(float(e[0]), float(e[1])) for e in events]
+        rows += [leg.arrival for leg in signals_in(scene, frame).legs]
+        text = " ".join(step.caption.split())
+        for m in PAIR.finditer(text):
+            if m["label"] is None and not re.search(r"= $", text[: m.start()]):
+                continue  # not a coordinate pair (Eq. (28)'s misprinted Lorentz factors)
+            assert m["label"] is not None, f"step {step.title!r}: {m[0]!r} has no frame"
+            if frame.same_velocity(rr.LAB):
+                assert m["label"] == "(lab t, x) = ", m[0]
+            else:
+                assert m["after"] == frame_words(frame), m[0]
+            assert matches((m["t"], m["x"]), rows), f"step {step.title!r}: {m[0]!r}"
+            checked += 1
+    assert checked >= 14  # every step that gives an event in words
+
+
+#: Bell's string's length, and so its strain and its break, is measured in this frame: a convention
+#: the numbers depend on (in the front ship's frame the same strain is reached at another event).
+STRAIN_FRAME = re.compile(r"rear ship's (?:momentarily )?comoving frame")
+
+
+def test_bells_strain_names_its_frame_wherever_it_is_shown(capsys: pytest.CaptureFixture[str]) -> None:
+    """The string's strain and break event are shown with the frame they are measured in: the notes
+    (command line and readout), the break event's meaning, the summary, the print figure's caption and
+    the lesson's caption."""
+    scene = rr.bell_spaceships(0.6, 1.0, 0.5, breaking_strain=0.25)
+    strain_notes = [n for n in scene.notes() if "strain" in n]
+    assert len(strain_notes) == 2 and all(STRAIN_FRAME.search(n) for n in strain_notes), strain_notes
+    assert "front ship's frame" in strain_notes[-1]  # the convention matters: another event there
+    (string,) = scene.objects
+    assert string.event is not None and STRAIN_FRAME.search(string.event.meaning)
+    d = rr.describe("bell-spaceships")
+    assert STRAIN_FRAME.search(d.summary)
+    (figure,) = [p.figure for p in d.presets if p.figure is not None]
+    assert STRAIN_FRAME.search(figure.caption(d.build(**next(p for p in d.presets if p.figure).values)))
+    readout = readout_markdown(build(Settings("bell-spaceships")))
+    assert len(STRAIN_FRAME.findall(readout)) >= 2, readout
+    out = events_output("bell-spaceships", "ships after", capsys)
+    assert len(STRAIN_FRAME.findall(" ".join(out.split()))) >= 3, out  # the break's meaning and two notes
+    (step,) = [s for s in lesson_from("paper").steps if s.resolved.scene.kind == "bell-spaceships"]
+    assert len(STRAIN_FRAME.findall(" ".join(step.caption.split()))) >= 3, step.caption
+
+
+#: Words the physics once had wrong or loose, and why: none may come back in the README, the docs,
+#: the lesson, a scene's summary or help, or what the core writes.
+LOOSE_WORDS = {
+    r"kick is the (?:\(?Rindler\)? )?horizon": "the kick is an event; the horizon is its light cone",
+    r"centre event \(the Rindler horizon\)": "the centre event is the horizon's vertex, not the horizon",
+    r"from the wall told": "light from the wall before the contact does reach the back end in time",
+    r"respond to the wall": "the rod stops at the wall; what no frame sees is a response to the contact",
+    r"in faster frames after": "only frames with β < −V see the braking start after the contact",
+    r"happens before the contact": "the back end's change starts before the contact and ends at its lab time",
+    r"two meanings of rigid": "the signal-limited pole is compressed: not rigid in any sense",
+    r"\(the same in every frame\)": "coordinates differ between frames; only the verdicts' kinds do not",
+    r"c²": "c = 1 everywhere: energies are in mass units",
+    r"(?:on|spanning) the same (?:two )?rear ends": "the rod starts between them; its front falls behind",
+    r"gamma s\b|\bs - l\b": "γs and s − l, as everywhere else",
+    r"breaks where its strain": "the strain reaches the breaking strain at an event on the string's rear end",
+}
+
+
+def texts_a_student_reads() -> dict[str, str]:
+    """The README, every docs page, the lesson files, and every scene's summary, help and notes."""
+    root = Path(__file__).parent.parent
+    pages = [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "app").rglob("lessons/*.toml"))]
+    texts = {str(p.relative_to(root)): p.read_text() for p in pages}
+    for kind, d in rr.scene_descriptions().items():
+        scene = d.build()
+        helps = [d.help_for(p) for p in d.parameters]
+        texts[kind] = "\n".join([d.summary, *helps, *scene.notes(), *(v.text for v in scene.causal_verdicts())])
+    return texts
+
+
+def test_no_loose_words_come_back() -> None:
+    for name, text in texts_a_student_reads().items():
+        flat = " ".join(text.split())
+        for pattern, why in LOOSE_WORDS.items():
+            found = re.search(pattern, flat, re.IGNORECASE)
+            assert found is None, f"{name}: {found[0]!r}: {why}"
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_v_says_whether_it_is_a_final_or_an_approach_speed(kind: str) -> None:
+    """Where a scene has one speed V, its help says what V is there: the final speed of a rod that starts
+    at rest, or the approach speed of one that moves at −V toward its stop."""
+    d = rr.describe(kind)
+    if "v" not in d.parameter_map:
+        return
+    scene = d.build()
+    before = {r.motion.velocity_initial.value for r in scene.rods}
+    after = {r.motion.velocity_final.value for r in scene.rods}
+    v = scene.parameters["v"]
+    help_text = d.help_for(d.parameter("v"))
+    if before == {0.0}:
+        assert v in after and help_text.startswith("final speed V"), help_text
+    else:
+        assert before == {-v} and help_text.startswith("approach speed V") and "−V" in help_text, help_text
+
+
+@pytest.mark.parametrize(
+    ("kind", "values"),
+    [
+        ("wall-collision", {"eps": 0.0}),
+        ("wall-collision", {"eps": 0.5}),
+        ("pole-barn", {}),
+        ("rod-collision", {"eps": 0.5}),
+        ("rod-collision", {"eps": 0.0, "mass2": 0.5}),
+        ("bell-spaceships", {}),
+    ],
+)
+def test_the_heat_names_the_body_it_is_in(
+    kind: str, values: dict[str, float], capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Each system's heat says where it is, and that is where the 4-momenta put it: in the wall when the
+    rods keep their rest masses (in the lab the wall, at rest, takes exactly that energy), in the rods
+    when their rest masses grow by it (in proportion to rest mass when by one factor). The command line
+    prints it beside the number."""
+    scene = rr.build_scene(kind, **values)
+    budget = scene.budget()
+    for system in budget.systems:
+        rods = list(system.system.rods)
+        grown = budget.rest_mass_after[rods] - budget.rest_mass_before[rods]
+        if system.heat == 0.0:
+            assert system.heat_where == "" and not grown.any()
+        elif not grown.any():
+            assert system.heat_where.startswith("all in the wall (") and system.external_source == "wall"
+            assert system.external[0] == pytest.approx(-system.heat, rel=1e-12)  # into the wall, in the lab
+        else:
+            assert grown.sum() == pytest.approx(system.heat, rel=1e-12)
+            assert system.heat_where.startswith("in ") and "wall" not in system.heat_where
+            if len(rods) > 1:
+                factor = budget.rest_mass_after[rods] / budget.rest_mass_before[rods]
+                assert factor == pytest.approx(factor[0], rel=1e-12)
+                assert f"each rest mass × {factor[0]:.6g}" in system.heat_where
+    flags = [f"--{k.replace('_', '-')}={v}" for k, v in values.items()]
+    assert main(["events", kind, *flags]) == 0
+    out = capsys.readouterr().out
+    heat_lines = [line.strip() for line in out.splitlines() if line.strip().startswith("heat (rest energy created)")]
+    assert len(heat_lines) == len(budget.systems)
+    for line, system in zip(heat_lines, budget.systems, strict=True):
+        assert line.endswith(f", {system.heat_where}" if system.heat_where else ": 0"), line
+
+
+def test_the_lessons_heat_is_in_the_wall_and_in_mass_units() -> None:
+    """The partly elastic bounce's heat: the Born-rigid rod keeps its rest mass M, so the kinetic energy
+    it loses, (γ − γ′) M = 0.182 M at V = 0.6 and ε = 0.5, is the wall's."""
+    (step,) = [s for s in lesson_from("paper").steps if s.title == "A partly elastic bounce makes heat"]
+    text = " ".join(step.caption.split())
+    assert "0.182 M (c = 1: energy in mass units)" in text
+    assert "all in the wall (the rod keeps its rest mass)" in text
+    rod = step.resolved.scene.rods[0]
+    assert rod.mass_after == rod.mass_before
+
+
+#: Words that describe a velocity change as one frame sees it: in another the same change may speed
+#: the end up, or reverse it. An event's meaning is printed under every frame's table, so it says
+#: "changing velocity", or names the frame its word holds in.
+FRAME_BOUND = re.compile(r"decelerat|brak|slows|speeds up|comes to rest|trailing|leading", re.IGNORECASE)
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_event_meanings_hold_in_every_frame(kind: str) -> None:
+    for event in rr.describe(kind).events:
+        found = FRAME_BOUND.search(event.meaning)
+        assert found is None or re.search(r"in the (?:lab|barn)\b", event.meaning), (event.name, event.meaning)
+
+
+def test_the_order_of_two_spacelike_starts_names_its_frame() -> None:
+    """The deceleration's two starts are spacelike apart: "first" is said of the lab, and the caption
+    says that in the rod's frame before they are simultaneous (the core's numbers)."""
+    (step,) = [s for s in lesson_from("paper").steps if s.resolved.scene.kind == "deceleration"]
+    text = " ".join(step.caption.split())
+    scene = step.resolved.scene
+    trailing, leading = scene.events["-T_F"], scene.events["-T_B"]
+    assert rr.causal_relation(trailing, leading).kind == "spacelike"
+    assert "In the lab its trailing (right) end starts braking first" in text
+    before = scene.events_in(frame=scene.frame("rod before"))
+    assert before["-T_F"][0] == pytest.approx(before["-T_B"][0], rel=1e-12)
+    assert f"In the rod's frame before, both ends start together, at t′ = {before['-T_F'][0]:.4g}" in text
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_every_light_signal_row_says_what_it_is(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    """The light-signal table names each arrival (which end of which rod), and says what the key event
+    is ("the start" of Bell's ships is where the rear ship's rear end starts, at the origin)."""
+    scene = rr.describe(kind).build()
+    signals = signals_in(scene, rr.LAB)
+    assert signals.key_definition.startswith(f"{signals.key_phrase}: ")
+    for leg in signals.legs:
+        if leg.name.startswith("S"):
+            assert leg.meaning.startswith(f"light from {signals.key_phrase} reaches the ")
+        else:
+            assert leg.meaning.startswith("its echo is back at the ")
+        if scene.n_rods > 1:
+            rod = scene.rods[int(leg.name.split("_")[1]) - 1].name
+            assert leg.meaning.endswith(rod), leg.meaning
+    out = " ".join(events_output(kind, "lab", capsys).split())
+    assert f"({signals.key_definition})" in out
+    for leg in signals.legs:
+        assert leg.meaning in out
+    if kind == "bell-spaceships":
+        assert "the start: the event at the origin of every frame, where the rear ship's left end starts" in out
+
+
+def test_the_scene_listing_reads_by_column_and_says_which_frame_each_command_shows(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """Every option stands apart from its symbol (``--breaking-strain`` once ran into ``e_b``); each scene
+    says which frame ``events`` shows (the lab) and which ``serve`` and ``export`` open in (its default);
+    the barycentric frame says what it is."""
+    assert main(["scenes"]) == 0
+    out = capsys.readouterr().out
+    symbols = {flag(p): p.symbol for d in rr.scene_descriptions().values() for p in d.parameters}
+    rows = re.findall(r"^  (--\S+) {2,}(\S+) ", out, re.MULTILINE)
+    assert len(rows) == sum(len(d.parameters) for d in rr.scene_descriptions().values())
+    for option, symbol in rows:
+        assert symbols[option] == symbol, (option, symbol)
+    for kind, d in rr.scene_descriptions().items():
+        block = out.split(f"\n{kind}  (", 1)[-1] if not out.startswith(kind) else out
+        block = block.split("\n\n", 1)[0]
+        assert f"`serve` and `export` open in {d.default_frame}; `events` shows the lab unless --frame" in block
+    assert "barycentric (zero total momentum)" in out
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_options_help_names_only_the_scenes_own_frames_and_units(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit):
+        main(["events", kind, "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    own = set(rr.describe(kind).frames)
+    for other in {f for d in rr.scene_descriptions().values() for f in d.frames} - own:
+        assert f"'{other}'" not in text and f" {other}," not in text and not text.endswith(f" {other}"), other
+    assert "[1/L0]" not in text  # a proper acceleration is in 1/(length unit), whatever L0 is
+    if "--a-front" in text:
+        assert "[1/length unit]" in text
+
+
+def row_numbers(out: str, first: str) -> list[str]:
+    """The numbers of the last row of ``out`` that starts with ``first`` (after its indent)."""
+    row = [line for line in out.splitlines() if line.strip().startswith(first)][-1]
+    return row.strip().removeprefix(first).split()
+
+
+@pytest.mark.parametrize(
+    ("args", "first", "column"),
+    [
+        # T_1 = (-gamma V L0, gamma L0) in the lab: t' = gamma (t + V x) = 0 in the pole's frame
+        (["pole-barn", "--v=0.3", "--frame=pole before"], "T_1 ", 0),
+        # the signal-limited pole's wall gives no energy in the barn's frame: gamma M - gamma M
+        (["pole-barn", "--v=0.9"], "from the wall (negative: into the wall)", 0),
+        # the barycentric frame's momenta cancel
+        (["rod-collision", "--eps=0.5", "--frame=barycentric"], "total after", 1),
+    ],
+)
+def test_rounding_noise_is_not_printed_as_data(
+    args: list[str], first: str, column: int, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A value that is zero in exact arithmetic, formed from terms of order 1, prints as 0, not as
+    5.6e-17; and every row of the budget keeps its numbers apart."""
+    assert main(["events", *args]) == 0
+    out = capsys.readouterr().out
+    assert row_numbers(out, first)[column] == "0", row_numbers(out, first)
+    budget = out.split("4-momentum", 1)[1].split("\n\n", 1)[0]
+    for label in ("total before", "total after"):
+        assert len(row_numbers(budget, label)) == 2  # E and p, never run together
+
+
+def test_a_small_value_is_shown_and_noise_is_not() -> None:
+    """Noise is judged against the terms a value was formed from, never against other rows: in the lab
+    nothing changes; a tiny true coordinate (V = 1e-9) stays; the boost's noise goes."""
+    scene = rr.pole_barn(1e-9, 1.0)
+    before = scene.frame("pole before")
+    assert rr.event_shown(scene.events["T_1"], rr.LAB) == scene.events["T_1"]
+    t1, t1_end = scene.events_in(frame=before)["T_1"], scene.events_in(frame=before)["T_1'"]
+    assert rr.event_shown(t1, before)[0] == 0.0
+    assert rr.event_shown(t1_end, before)[0] == pytest.approx(1e-9, rel=1e-6)
+    assert rr.shown(1e-12, 1.0) == 0.0 and rr.shown(2e-12, 1.0) == 2e-12
+
+
+def test_defaults_the_words_name_are_the_registrys() -> None:
+    """The lesson's pole step says what the command line defaults to (a student runs it beside the
+    lesson), and the wall's summary which bounce its default is."""
+    (step,) = [s for s in lesson_from("paper").steps if s.resolved.scene.kind == "pole-barn"]
+    text = " ".join(step.caption.split())
+    default = rr.describe("pole-barn").parameter("v").default
+    assert f"`rigidrel events pole-barn` defaults to V = {default:g}" in text
+    assert f"add `--v {step.resolved.scene.parameters['v']:g}` for these numbers" in text
+    wall = rr.describe("wall-collision")
+    assert f"by default it bounces, ε = {wall.parameter('eps').default:g}" in wall.summary
