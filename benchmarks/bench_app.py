@@ -1,6 +1,6 @@
 """Speed of the app, server side and in the browser (a script that prints figures, not a test).
 
-    python -m benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--phases] [--drawing]
+    python -m benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--phases] [--drawing] [--answer]
 
 * rebuild: a slider change to every drawing rebuilt (scene, diagrams, lanes), median
   per scene, timed in the server process (target <= 16 ms); ``--phases`` prints only where
@@ -33,7 +33,7 @@ import rigidrel_core as rr
 from benchmarks import load
 from rigidrel_app.live.server import ANIMATION_HZ, App
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings, resolve
-from tests.viser_client import light_tab, wait_until
+from tests.viser_client import LightClient, RuntimeClient, light_tab, wait_until
 
 
 def slider_sweep(kind: str) -> list[tuple[str, float]]:
@@ -164,17 +164,19 @@ class SocketClock:
         connection.recv, connection.send = timed_recv, timed_send
 
 
-def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
+def bench_answer(per_scene: int = 6, quiet: float = 0.15, runtime: bool = False) -> dict[str, float]:
     """A slider moved by a client of a paused tab: message in -> last frame of the answer out, on the
     server's socket. Flushed (what the session does) and not flushed (viser's send window) alternate,
     value by value, over ``per_scene`` values of each linear slider of every scene. Also split: the
-    callback's redraw (``Session.change``), and from its end to the last frame out."""
+    callback's redraw (``Session.change``), and from its end to the last frame out. ``runtime``: the
+    tab has the playback runtime (as a browser's has: the moving parts go to it as one still frame),
+    else the server draws them into the tab's scene."""
     times: dict[str, list[float]] = {"flushed": [], "window": []}
     after_redraw: dict[str, list[float]] = {"flushed": [], "window": []}
     redraws: list[float] = []
-    with App(port=0) as app, light_tab(app) as tab:
+    with App(port=0) as app, light_tab(app, RuntimeClient if runtime else LightClient) as tab:
         session, client, loop = tab.session, tab.client, tab.loop
-        wait_until(lambda: "V" in client.gui_uuid, timeout=60)
+        wait_until(lambda: "V" in client.gui_uuid and session.runtime_ready == runtime, timeout=60)
         connection = app.server._websock_server._live_connections[session.client.client_id]
         clock = SocketClock(connection)
         handled = session.messages_handled
@@ -219,13 +221,17 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15) -> dict[str, float]:
             after_redraw[variant].append(clock.sent[-1] - redraw_end)
         session.client.flush = flush  # type: ignore[method-assign]
     out: dict[str, float] = {}
+    if runtime:
+        times = {f"{k}, runtime": v for k, v in times.items()}
+        after_redraw = {f"{k}, runtime": v for k, v in after_redraw.items()}
     for variant, ts in times.items():
         out[f"answer_ms_median[{variant}]"] = 1e3 * statistics.median(ts)
         out[f"answer_ms_p90[{variant}]"] = 1e3 * float(np.percentile(ts, 90))
         out[f"answer_ms_max[{variant}]"] = 1e3 * max(ts)
         out[f"answer_after_redraw_ms_median[{variant}]"] = 1e3 * statistics.median(after_redraw[variant])
-    out["answer_redraw_ms_median"] = 1e3 * statistics.median(redraws)
-    out["answer_samples"] = float(len(times["flushed"]) + len(times["window"]))
+    suffix = "[runtime]" if runtime else ""
+    out[f"answer_redraw_ms_median{suffix}"] = 1e3 * statistics.median(redraws)
+    out[f"answer_samples{suffix}"] = float(sum(len(ts) for ts in times.values()))
     return out
 
 
@@ -353,6 +359,7 @@ def main() -> None:
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--phases", action="store_true", help="only where a slider's redraw goes, per scene")
     parser.add_argument("--drawing", action="store_true", help="only the answer's drawing, without viser")
+    parser.add_argument("--answer", action="store_true", help="only a slider's answer, without and with the runtime")
     args = parser.parse_args()
     figures: dict[str, float] = {}
     if args.phases:
@@ -363,6 +370,11 @@ def main() -> None:
     if args.drawing:
         for k, v in bench_drawing().items():
             print(f"{k:40s} {v:8.2f}")
+        return
+    if args.answer:
+        for runtime in (False, True):
+            for k, v in bench_answer(runtime=runtime).items():
+                print(f"{k:58s} {v:10.2f}", flush=True)
         return
     figures.update(bench_rebuild())
     figures.update(bench_answer())
