@@ -15,13 +15,17 @@ with the server's messages (:class:`tests.viser_client.RuntimeClient`): it says 
 keeps the timelines' blocks and plays them on its own clock. A frame is a new picture the tab
 shows, counted at the client: a timeline frame whose time has come and whose block has arrived
 (at most one per 60 Hz refresh), or a still frame the server sent. Every client is a tab playing
-Fig. 3's collision. The final line reports: clients, the minimum (and median) frames per second
-per client, errors (client disconnects plus server-side errors), the server's CPU share (of one
-core) and resident memory, and the received bytes per second per client.
+Fig. 3's collision, each in a state of its own (its own restitution and V2, so that every tab
+needs its own timeline; ``--same-state``: all in the figure's, the favourable case), measured once
+every tab plays. The final line reports: clients, the minimum (and median) frames per second per
+client, errors (client disconnects plus server-side errors), the server's CPU share (of one core)
+and resident memory (the timeline recorder's process included), the received bytes per second
+per client, and how long after the first press every tab was playing.
 
 ``--follow``: the app gives the built-in lesson with ``--follow``; the first tab leads, and the
 others follow its step (its first step autoplays). Over the window: every tab's frames per second,
-the server's CPU and memory; then the leader presses Next step, and the line reports the time
+the server's CPU and memory (the timeline recorder's process counted in both, and its memory also
+on its own); then the leader presses Next step, and the line reports the time
 until each follower shows the new step's first picture (p50, max), and how many did within 30 s.
 
 ``--server-drawn``: the clients have no runtime (as before the browser played): the server draws
@@ -42,6 +46,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import gc
+import os
 import statistics
 import subprocess
 import sys
@@ -68,11 +73,18 @@ from tests.viser_client import (
 TARGET_FPS = 25.0
 
 
-def rss_mb() -> float:
-    for line in Path("/proc/self/status").read_text().splitlines():
+def rss_mb(pid: int | str = "self") -> float:
+    """Resident memory of a process (this one by default), MB."""
+    for line in Path(f"/proc/{pid}/status").read_text().splitlines():
         if line.startswith("VmRSS:"):
             return int(line.split()[1]) / 1024.0
     return float("nan")
+
+
+def cpu_seconds(pid: int) -> float:
+    """User and system CPU time of another process so far (s)."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
@@ -109,7 +121,7 @@ def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
     }
 
 
-def hall(clients: int, seconds: float, fps: float, follow: bool) -> dict[str, float]:
+def hall(clients: int, seconds: float, fps: float, follow: bool, same: bool = False) -> dict[str, float]:
     """``clients`` tabs with the playback runtime, each playing Fig. 3 or, with ``follow``, following
     the built-in lesson's leader (module docstring)."""
     from rigidrel_app.lessons import lesson_from
@@ -117,15 +129,19 @@ def hall(clients: int, seconds: float, fps: float, follow: bool) -> dict[str, fl
     lesson = lesson_from("paper") if follow else None
     with (
         App(port=0, animation_hz=fps, lesson=lesson, follow=follow) as app,
-        hall_clients(app.url, clients, seconds, follow) as child,
+        hall_clients(app.url, clients, seconds, follow, same) as child,
     ):
-        read_line(child, timeout=600.0)  # joined
+        joined = read_line(child, timeout=1200.0)
         wait_until(lambda: len(app.sessions) >= clients, timeout=120.0)
         tell(child, "measure")
         read_line(child, timeout=120.0)  # the window opens
+        recorders = app.timelines.recorder_pids
         mem0, cpu0, wall0 = rss_mb(), time.process_time(), time.perf_counter()
+        rec0 = sum(cpu_seconds(pid) for pid in recorders)
         measured = read_line(child, timeout=seconds + 120.0)
         mem1, cpu1, wall1 = rss_mb(), time.process_time(), time.perf_counter()
+        rec1 = sum(cpu_seconds(pid) for pid in recorders)
+        recorder_mb = sum(rss_mb(pid) for pid in recorders)
         tell(child, "step")
         stepped = read_line(child, timeout=120.0)
         server_errors = app.errors
@@ -137,13 +153,15 @@ def hall(clients: int, seconds: float, fps: float, follow: bool) -> dict[str, fl
         "min_fps": min(fps_each),
         "median_fps": statistics.median(fps_each),
         "errors": float(len(measured["errors"]) + server_errors),
-        "server_cpu_percent": 100.0 * (cpu1 - cpu0) / (wall1 - wall0),
-        "rss_mb": max(mem0, mem1),
+        "server_cpu_percent": 100.0 * ((cpu1 - cpu0) + (rec1 - rec0)) / (wall1 - wall0),
+        "rss_mb": max(mem0, mem1) + recorder_mb,
+        "recorder_rss_mb": recorder_mb,
         "kbytes_per_second_per_client": statistics.median(measured["bytes"]) / (wall1 - wall0) / 1e3,
         "timelines_made": float(timelines),
         "step_p50_s": statistics.median(latencies) if latencies else float("nan"),
         "step_max_s": max(latencies) if latencies else float("nan"),
         "step_reached": float(len(latencies)),
+        "playing_after_s": float(joined["playing_after_s"]),
         "followers": float(len(stepped["latencies"])),
         "seconds": seconds,
     }
@@ -153,8 +171,9 @@ def hall_line(r: dict[str, float], follow: bool) -> str:
     line = (
         f"{'follow' if follow else 'independent'} clients={r['clients']:.0f} min_fps={r['min_fps']:.1f} "
         f"median_fps={r['median_fps']:.1f} server_cpu_percent={r['server_cpu_percent']:.1f} rss_mb={r['rss_mb']:.0f} "
+        f"(recorder {r['recorder_rss_mb']:.0f}) "
         f"kbytes_per_s_per_client={r['kbytes_per_second_per_client']:.1f} timelines_made={r['timelines_made']:.0f} "
-        f"errors={r['errors']:.0f}"
+        f"errors={r['errors']:.0f} all_playing_after_s={r['playing_after_s']:.1f}"
     )
     if follow:
         line += (
@@ -327,6 +346,7 @@ def main() -> None:
     )
     parser.add_argument("--follow", action="store_true", help="the tabs follow a lesson's leader")
     parser.add_argument("--server-drawn", action="store_true", help="tabs without a runtime: the server draws")
+    parser.add_argument("--same-state", action="store_true", help="independent tabs all in Fig. 3's own state")
     lecture = f"a long lecture: {SOAK_STAY + SOAK_RECONNECTING} clients, {SOAK_RECONNECTING} reconnecting every minute"
     parser.add_argument("--soak", type=int, metavar="MINUTES", help=lecture)
     args = parser.parse_args()
@@ -347,7 +367,9 @@ def main() -> None:
         return
 
     def measure(n: int) -> dict[str, float]:
-        return run(n, args.seconds, args.fps) if args.server_drawn else hall(n, args.seconds, args.fps, False)
+        if args.server_drawn:
+            return run(n, args.seconds, args.fps)
+        return hall(n, args.seconds, args.fps, False, args.same_state)
 
     def report(r: dict[str, float]) -> str:
         return line(r) if args.server_drawn else hall_line(r, False)

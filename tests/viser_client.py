@@ -616,7 +616,13 @@ async def _ready_runtime(client: RuntimeClient, timeout: float = 120.0) -> None:
         await asyncio.sleep(0.05)
 
 
-async def _hall(url: str, n: int, seconds: float, follow: bool) -> None:
+def hall_state(k: int) -> tuple[float, float]:
+    """Tab ``k``'s own state in an independent hall: Fig. 3's collision with its own restitution
+    and V2 (eps, v2)."""
+    return (k % 100) / 100.0, -0.01 * (k // 100)
+
+
+async def _hall(url: str, n: int, seconds: float, follow: bool, same: bool = False) -> None:
     """The hall (see :func:`hall_main`)."""
     clients = [RuntimeClient(url) for _ in range(n)]
     readers = []
@@ -629,13 +635,23 @@ async def _hall(url: str, n: int, seconds: float, follow: bool) -> None:
         await asyncio.gather(*(c.connect() for c in part))
         readers += [asyncio.ensure_future(c.run(3600)) for c in part]
     await asyncio.gather(*(_ready_runtime(c) for c in clients))
-    if not follow:  # each tab chooses Fig. 3 and plays it
-        for c in clients:
+    t_play = time.monotonic()
+    if not follow:  # each tab chooses Fig. 3, unless ``same`` its own state of it, and plays it
+        for k, c in enumerate(clients):
             while "Play" not in c.gui_uuid or "Paper figure" not in c.gui_uuid:
                 await asyncio.sleep(0.02)
             await c.set_value("Paper figure", CHURN_FIGURE)
+            if not same:  # the scenario box: the sliders' labels are shared with other scenes' controls
+                eps, v2 = hall_state(k)
+                await c.set_value("Load", f"rod-collision --v1 0.6 --mass2 2 --eps {eps:g} --v2 {v2:g}")
+                await c.set_value("Load scenario", True)
             await c.set_value("Play", True)
-    print(json.dumps({"phase": "joined", "clients": n}), flush=True)
+    # every tab playing its timeline (made once per state, in the recorder's process)
+    while time.monotonic() - t_play < 900 and not all(
+        c.played and c.blocks.get(c.played[-1].timeline) for c in clients
+    ):
+        await asyncio.sleep(0.05)
+    print(json.dumps({"phase": "joined", "clients": n, "playing_after_s": time.monotonic() - t_play}), flush=True)
     loop = asyncio.get_running_loop()
     await loop.run_in_executor(None, sys.stdin.readline)  # "measure"
     await asyncio.sleep(SWARM_WARMUP)
@@ -673,21 +689,22 @@ async def _hall(url: str, n: int, seconds: float, follow: bool) -> None:
         r.cancel()
 
 
-def hall_main(url: str, n: int, seconds: float, follow: bool) -> None:
+def hall_main(url: str, n: int, seconds: float, follow: bool, same: bool = False) -> None:
     """In a child process: ``n`` tabs with the playback runtime (:class:`RuntimeClient`) join; with
-    ``follow`` they follow the first (a lesson's leader), else each plays Fig. 3. Prints JSON lines:
-    ``joined``; after a ``measure`` line on stdin and :data:`SWARM_WARMUP` s, ``window`` at the
-    start of the measured window and ``measured`` after ``seconds`` (each tab's new pictures per
-    second, errors, bytes); with ``follow``, after a ``step`` line the leader presses Next step and
-    ``stepped`` says when each follower's first picture of the new step came (s after the press, or
-    null if not within 30 s)."""
-    asyncio.run(_hall(url, n, seconds, follow))
+    ``follow`` they follow the first (a lesson's leader), else each plays Fig. 3 in a state of its
+    own (:func:`hall_state`; with ``same`` all in the figure's). Prints JSON lines: ``joined`` once
+    every tab plays its timeline (``playing_after_s``: how long after the first press); after a
+    ``measure`` line on stdin and :data:`SWARM_WARMUP` s, ``window`` at the start of the measured
+    window and ``measured`` after ``seconds`` (each tab's new pictures per second, errors, bytes);
+    with ``follow``, after a ``step`` line the leader presses Next step and ``stepped`` says when
+    each follower's first picture of the new step came (s after the press, or null if not within 30 s)."""
+    asyncio.run(_hall(url, n, seconds, follow, same))
 
 
 @contextlib.contextmanager
-def hall_clients(url: str, n: int, seconds: float, follow: bool) -> Iterator[subprocess.Popen[str]]:
+def hall_clients(url: str, n: int, seconds: float, follow: bool, same: bool = False) -> Iterator[subprocess.Popen[str]]:
     """Start ``hall_main`` in another interpreter; killed on the way out whatever happened."""
-    code = f"from tests.viser_client import hall_main; hall_main({url!r}, {n}, {seconds}, {follow})"
+    code = f"from tests.viser_client import hall_main; hall_main({url!r}, {n}, {seconds}, {follow}, {same})"
     child = subprocess.Popen(
         [sys.executable, "-c", code], cwd=ROOT, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True
     )

@@ -346,6 +346,14 @@ class ProcessRecorder:
             pool = self._pool
         return pool.submit(_record_settings, key, timeline_id(key)).result()
 
+    @property
+    def pids(self) -> tuple[int, ...]:
+        """The recorder's process ids (none before the first timeline), for a benchmark's accounts."""
+        with self._lock:
+            pool = self._pool
+        processes = getattr(pool, "_processes", None) or {}  # concurrent.futures keeps them by pid
+        return tuple(processes)
+
     def shutdown(self) -> None:
         with self._lock:
             pool, self._pool = self._pool, None
@@ -417,6 +425,11 @@ class TimelineCache:
         self._thread.join(timeout=5)
         if isinstance(self._record, ProcessRecorder):
             self._record.shutdown()
+
+    @property
+    def recorder_pids(self) -> tuple[int, ...]:
+        """The processes timelines are recorded in, besides this one (a benchmark counts them)."""
+        return self._record.pids if isinstance(self._record, ProcessRecorder) else ()
 
     def _work(self) -> None:
         while True:
