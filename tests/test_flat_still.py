@@ -18,7 +18,9 @@ from PIL import Image
 
 from rigidrel_app.backends.raster import page_image
 from rigidrel_app.backends.viser import FlatStill, flat_still, sent_for_shade
-from rigidrel_app.live.session import FLAT_AFTER_S, FLAT_SWAP_S, Session
+from rigidrel_app.live.session import Session
+from rigidrel_app.live.still_image import AFTER_S as FLAT_AFTER_S
+from rigidrel_app.live.still_image import SWAP_S as FLAT_SWAP_S
 from rigidrel_app.view.canvas import PageDots, PageLines, PagePicture, PageText
 from rigidrel_app.view.layout import CanvasSize
 from rigidrel_app.view.state import presets
@@ -128,7 +130,7 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
     with session.lock:
         # the browser lowered its resolution: its frames come slow
         session.canvas_size = replace(session.canvas_size, resolution=0.75)
-        session.slow_canvas = True
+        session.still_image.slow_canvas = True
         session.toggle_play()
     roots = ("/page/static", "/page/static_dots", "/page/text")
     wait_until(lambda: all(_visibility(client.messages, root)[-1:] == [False] for root in roots), timeout=30)
@@ -168,6 +170,24 @@ def test_the_same_canvas_at_a_lower_resolution_marks_it_slow(tab: tuple[Session,
         w, h = session.canvas_size.width, session.canvas_size.height
         session._resize(CanvasSize.measured_by_page(w + 10, h, 1.0))  # pyright: ignore[reportPrivateUsage]
         session._resize(CanvasSize.measured_by_page(w, h, 2.0))  # pyright: ignore[reportPrivateUsage]
-        assert not session.slow_canvas
+        assert not session.still_image.slow_canvas
         session._resize(CanvasSize.measured_by_page(w, h, 1.5))  # pyright: ignore[reportPrivateUsage]
-        assert session.slow_canvas
+        assert session.still_image.slow_canvas
+
+
+def test_the_off_switch_keeps_a_slow_canvas_drawing_its_lines() -> None:
+    """``--no-still-image``: the seam never marks a canvas slow, so no image is ever made."""
+    from rigidrel_app.cli import build_parser
+    from rigidrel_app.live.still_image import StillImage
+
+    off, on = StillImage(enabled=False), StillImage()
+    off.canvas_slowed()
+    on.canvas_slowed()
+    assert not off.slow_canvas and on.slow_canvas
+    made: list[object] = []
+    off.tick(None, None, 1.0, made.append)  # type: ignore[arg-type]  # returns before touching either
+    assert made == []
+    args = build_parser().parse_args(["serve", "--no-still-image"])
+    assert args.still_image is False and build_parser().parse_args(["serve"]).still_image is True
+    scene_args = build_parser().parse_args(["serve", "constant-acceleration", "--no-still-image"])
+    assert scene_args.still_image is False

@@ -340,6 +340,13 @@ def build_parser() -> OneLineParser:
             default="light" if defaults else argparse.SUPPRESS,
             help="the theme every tab opens in: light, or dark for a projector (key T switches a tab)",
         )
+        common.add_argument(
+            "--no-still-image",
+            dest="still_image",
+            action="store_false",
+            default=True if defaults else argparse.SUPPRESS,
+            help="never send a slow canvas its still picture as one image while it plays",
+        )
         return common
 
     sv = sub.add_parser(
@@ -510,7 +517,7 @@ def cmd_serve(args: argparse.Namespace) -> int:
     start = start_scenario(prog, args)
     from .live.server import serve  # viser is imported only here
 
-    return serve(args.host, args.port, start, lesson, args.follow, args.theme)
+    return serve(args.host, args.port, start, lesson, args.follow, args.theme, args.still_image)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -33,7 +33,7 @@ def test_the_image_shows_the_picture_its_nodes_draw(browser: Any, app_server: Ap
         s = tab.session
         show(tab, presets()["Fig. 3: collision, M2 = 2 M1"], 0.0)
         lines = tab.canvas_after(np.zeros_like(tab.canvas()))
-        s.slow_canvas = True  # as when the browser has lowered its resolution
+        s.still_image.slow_canvas = True  # as when the browser has lowered its resolution
         with s.lock:
             s.toggle_play()
         wait_until(lambda: s.renderer.flat_version == s.renderer.version and not s.renderer.vectors_shown, timeout=30)

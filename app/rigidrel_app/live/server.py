@@ -145,15 +145,18 @@ class App:
         lesson: Lesson | None = None,
         follow: bool = False,
         shade: Shade = "light",
+        still_image: bool = True,
     ) -> None:
         """``start``: the state every new tab opens on, as a scenario line names it (default: the
         first scene's defaults);
         ``budget``: how many messages a tab may send before it is dropped; ``lesson``: every tab gives
         it, from step 1 (``start`` is then not used); ``follow``: every tab follows the leading tab's
         step (the first tab to connect leads, or the last to press L; a tab that joins opens on the
-        leader's step); ``shade``: the theme every new tab opens in (each tab's key T changes its own)."""
+        leader's step); ``shade``: the theme every new tab opens in (each tab's key T changes its own);
+        ``still_image``: a slow canvas plays with its still picture as one image (:mod:`.still_image`)."""
         limit_heap_growth()
         self.shade: Shade = shade
+        self.still_image = still_image
         self.lesson = lesson
         self.follow = follow and lesson is not None
         self.leader: int | None = None
@@ -260,6 +263,7 @@ class App:
                 start.t,
                 self.timelines,
                 self.paintings,
+                self.still_image,
             )
         finally:
             with self._lock:
@@ -374,6 +378,7 @@ def serve(
     lesson: Lesson | None = None,
     follow: bool = False,
     shade: Shade = "light",
+    still_image: bool = True,
 ) -> int:
     """Run until Ctrl-C or SIGTERM; print the URL the server really got."""
     done = threading.Event()
@@ -385,7 +390,7 @@ def serve(
     # shell inherits SIGINT as *ignored*, and Python then raises no KeyboardInterrupt.
     signal.signal(signal.SIGINT, _terminate)
     signal.signal(signal.SIGTERM, _terminate)
-    with App(host, port, start=start, lesson=lesson, follow=follow, shade=shade) as app:
+    with App(host, port, start=start, lesson=lesson, follow=follow, shade=shade, still_image=still_image) as app:
         if lesson is not None:
             followed = ", every tab following the leading one (key L leads)" if app.follow else ""
             print(f"rigidrel: lesson {lesson.title!r}, {len(lesson.steps)} steps{followed}", flush=True)

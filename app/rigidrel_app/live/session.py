@@ -20,8 +20,7 @@ import viser
 import rigidrel_core as rr
 
 from ..backends._viser import PlaybackMessage, handle_uuid, queue_to_client, run_javascript, scene_owner
-from ..backends.raster import page_image
-from ..backends.viser import FlatStill, PageRenderer, flat_still
+from ..backends.viser import PageRenderer
 from ..lessons import Lesson
 from ..lessons.tour import arrival, caption_html, clamp_step, lock_notice, lock_reason, locked_changes
 from ..view import camera as cam
@@ -65,6 +64,7 @@ from .keys import Action
 from .painting import Painting, PaintingCache, PaintingKey
 from .playback import Playback
 from .runtime import Report, RuntimeConfig, add_playback_report, clock_controls, parse_report, runtime_script
+from .still_image import StillImage
 from .timeline import FRAMES_PER_BLOCK, Mirror, Timeline, TimelineCache, TimelineKey
 from .timeline import timeline_id as timeline_id_of
 
@@ -97,13 +97,6 @@ def scenario_problem(exc: ScenarioError) -> str:
 #: Timelines a tab's runtime keeps (the oldest is forgotten past these).
 RUNTIME_TIMELINES = 4
 
-#: While it plays, a tab sends its still picture (the diagrams, the legend) as one image once the
-#: picture has not changed for this long (s): a software renderer then draws one textured
-#: rectangle instead of its hundreds of lines, thousands of fill dots and fifty labels.
-FLAT_AFTER_S = 0.3
-#: ... and leaves the picture to the image this long (s) after sending it (the browser decodes it).
-FLAT_SWAP_S = 0.5
-
 
 class Session:
     """State and controls of one client; :meth:`tick` is called by the server's animation loop."""
@@ -120,13 +113,15 @@ class Session:
         start_time: float | None = None,
         timelines: TimelineCache | None = None,
         paintings: PaintingCache | None = None,
+        still_image: bool = True,
     ) -> None:
         """``lesson``: the tab gives it, opening on ``first_step`` (from 0); ``follow``: ``--follow``
         (the Lesson folder says who leads); ``hooks``: where step changes and key L are reported;
         ``shade``: the theme the tab opens in (key T changes it); ``start_time``: the time the tab
         opens at, in the settings' frame (a scenario line's ``--t``; not with a lesson); ``timelines``:
         where the tab's browser gets its playback from (None: the server draws every frame);
-        ``paintings``: the server's paintings, shared by its tabs (None: the tab's own)."""
+        ``paintings``: the server's paintings, shared by its tabs (None: the tab's own);
+        ``still_image``: the still picture as one image while a slow canvas plays (:mod:`.still_image`)."""
         self.client = client
         self.shade: Shade = shade
         """The tab's theme: light, or the dark projector theme (key T)."""
@@ -173,9 +168,6 @@ class Session:
         self.renderer_lanes: list[LanePicture] = []
         """The lanes as last drawn."""
         self._last_plot = 0.0
-        self._flat_asked = (-1, 0.0)
-        """The still-picture version and scale whose image was last asked for."""
-        self._flat_sent_at = 0.0
         self.timelines = timelines
         self.paintings = paintings or PaintingCache(capacity=2)
         self._sent_page: str | None = None
@@ -200,10 +192,8 @@ class Session:
         """The runtime plays :attr:`timeline` (the server's clock only follows it)."""
         self._pausing = False
         """A pause was sent to the runtime and its frame has not come back yet."""
-        self.slow_canvas = False
-        """The browser has lowered its canvas' resolution (viser does while frames come slower
-        than 38 a second, as in a software renderer): from then on, while it plays, the still
-        picture goes as one image (:meth:`_flatten`). A canvas that keeps up never gets one."""
+        self.still_image = StillImage(still_image)
+        """The still picture as one image while a slow canvas plays (:mod:`.still_image`)."""
         resolved = resolve_settings(self.settings)
         if isinstance(resolved, str):  # a start state given from outside that makes no scene
             self.notice, self.settings = resolved, Settings()
@@ -258,10 +248,10 @@ class Session:
 
     def _resize(self, size: CanvasSize) -> None:
         """Take the canvas' new size (CSS px); lay the page out again if it changed. The same size
-        at a lower resolution is the browser finding its frames slow (:attr:`slow_canvas`)."""
+        at a lower resolution is the browser finding its frames slow (:mod:`.still_image`)."""
         resized = (size.width, size.height) != (self.canvas_size.width, self.canvas_size.height)
         if not resized and size.resolution < self.canvas_size.resolution - 1e-3:
-            self.slow_canvas = True
+            self.still_image.canvas_slowed()
         self.canvas_size = size
         if resized and self.drawn is not None and self.layout is not None:
             with self.client.atomic():
@@ -866,48 +856,16 @@ class Session:
             if self.runtime_ready:  # the browser plays: the server's clock follows it, nothing is drawn
                 if self.runtime_playing:
                     self.set_playback(self.playback.advance(dt))
-                self._flatten()
-                return
-            self.set_playback(self.playback.advance(dt))
-            self.draw_now(force_plots=not self.playback.playing)  # stopped at the end: the box shows the end
-            self._flatten()
+            else:
+                self.set_playback(self.playback.advance(dt))
+                self.draw_now(force_plots=not self.playback.playing)  # stopped at the end: the box shows the end
+            self.still_image.tick(self.renderer, self.layout, self.canvas_size.resolution, self._send_still_image)
 
-    def _flatten(self) -> None:
-        """While playing on a slow canvas (:attr:`slow_canvas`): once the still picture has stood
-        for :data:`FLAT_AFTER_S`, have its image
-        made (in a thread of its own; :meth:`_show_flat` sends it), and :data:`FLAT_SWAP_S` after
-        the image went out, hide the picture's lines, dots and labels. Any redraw of the picture
-        shows them again at once (:meth:`PageRenderer.set_static`), so a control's answer is
-        never held up by the image; the image follows when the picture stands still again."""
-        r, layout, wall = self.renderer, self.layout, time.monotonic()
-        if layout is None or not self.slow_canvas or r.still_lent:
-            return
-        # the image's px on the canvas' rendered pixels (CSS px times the screen's pixel ratio
-        # times the client's adaptive resolution): a texture drawn at another scale blurs
-        scale = self.canvas_size.resolution
-        if r.flat_version == r.version:
-            if r.vectors_shown and wall - self._flat_sent_at >= FLAT_SWAP_S:
-                r.hide_vectors()
-            if abs(r.flat_scale - scale) < 1e-3:
-                return
-        if self._flat_asked == (r.version, scale) or wall - r.still_at < FLAT_AFTER_S:
-            return
-        self._flat_asked = (r.version, scale)
-        picture, version, shade = r.still, r.version, layout.theme.shade
-        page_w, page_h = layout.width, layout.height
-
-        def make() -> None:
-            flat = flat_still(page_image(picture, page_w, page_h, scale), scale, shade, version)
-            if flat is not None:
-                self._show_flat(flat)
-
-        threading.Thread(target=make, name="flat-still", daemon=True).start()
-
-    def _show_flat(self, flat: FlatStill) -> None:
+    def _send_still_image(self, show: Callable[[], None]) -> None:
+        """From the still image's thread: ``show`` it, under the lock and in one batch."""
         with self.lock:
             if self.closed:
                 return
             with self.client.atomic():
-                if self.renderer.show_flat(flat):
-                    self._flat_sent_at = time.monotonic()
+                show()
         self.client.flush()
