@@ -184,6 +184,7 @@ class App:
         loop.call_soon_threadsafe(loop.set_exception_handler, self._loop_exception)
         self.timelines = TimelineCache(ProcessRecorder())
         """The playback timelines the tabs' browsers play, made once per state and canvas, shared."""
+        self._warmed = False
         self.paintings = PaintingCache()
         """The states laid out and drawn for a canvas, made once per state and canvas, shared."""
         self.sessions: dict[int, Session] = {}
@@ -282,6 +283,9 @@ class App:
         threading.Thread(
             target=greet, args=(client, self.version, lambda: session.closed), name="rigidrel-greet", daemon=True
         ).start()
+        if not self._warmed:  # the first tab: its Play should not wait for the recorder to start
+            self._warmed = True
+            self.timelines.warm()
 
     async def _disconnect(self, client: viser.ClientHandle) -> None:
         # async: it runs on viser's event loop, so it still runs while the server stops

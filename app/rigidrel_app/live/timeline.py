@@ -326,6 +326,10 @@ def _record_settings(key: TimelineKey, tid: str) -> Timeline:
     return record_timeline(key, resolved, tid=tid)
 
 
+def _warm_up() -> None:
+    """In a recorder process: nothing (importing this module brought in what recording needs)."""
+
+
 class ProcessRecorder:
     """Records timelines in a process of its own (started on the first one, spawned: nothing of the
     server's threads is copied), so that the second or third of a second a timeline takes never
@@ -337,14 +341,21 @@ class ProcessRecorder:
         self._pool: concurrent.futures.ProcessPoolExecutor | None = None
         self._lock = threading.Lock()
 
-    def __call__(self, key: TimelineKey, resolved: Resolved) -> Timeline:
-        del resolved  # made again in the recorder from the key's settings
+    def _started(self) -> concurrent.futures.ProcessPoolExecutor:
         with self._lock:
             if self._pool is None:
                 context = multiprocessing.get_context("spawn")
                 self._pool = concurrent.futures.ProcessPoolExecutor(max_workers=1, mp_context=context)
-            pool = self._pool
-        return pool.submit(_record_settings, key, timeline_id(key)).result()
+            return self._pool
+
+    def warm(self) -> None:
+        """Start the process now, without waiting (it takes a few seconds to import what it needs):
+        the first tab to press Play does not wait for it."""
+        self._started().submit(_warm_up)
+
+    def __call__(self, key: TimelineKey, resolved: Resolved) -> Timeline:
+        del resolved  # made again in the recorder from the key's settings
+        return self._started().submit(_record_settings, key, timeline_id(key)).result()
 
     @property
     def pids(self) -> tuple[int, ...]:
@@ -425,6 +436,11 @@ class TimelineCache:
         self._thread.join(timeout=5)
         if isinstance(self._record, ProcessRecorder):
             self._record.shutdown()
+
+    def warm(self) -> None:
+        """Get the recorder ready (a :class:`ProcessRecorder` starts its process); else nothing."""
+        if isinstance(self._record, ProcessRecorder):
+            self._record.warm()
 
     @property
     def recorder_pids(self) -> tuple[int, ...]:
