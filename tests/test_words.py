@@ -15,6 +15,7 @@ import re
 from dataclasses import replace
 from decimal import Decimal
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -432,3 +433,108 @@ def test_defaults_the_words_name_are_the_registrys() -> None:
     assert f"add `--v {step.resolved.scene.parameters['v']:g}` for these numbers" in text
     wall = rr.describe("wall-collision")
     assert f"by default it bounces, ε = {wall.parameter('eps').default:g}" in wall.summary
+
+
+def event_rows(out: str) -> dict[str, tuple[float, float]]:
+    """The event table of ``rigidrel events`` output: name -> (t, x) of its frame."""
+    rows: dict[str, tuple[float, float]] = {}
+    table = False
+    for line in out.splitlines():
+        if line.startswith("event "):
+            table = True
+        elif not line.strip():
+            table = False
+        elif table:
+            rows[line[:12].strip()] = (float(line[12:32]), float(line[32:52]))
+    return rows
+
+
+@pytest.mark.parametrize("values", [{}, {"v_initial": 0.6, "v_final": -0.2}, {"v_initial": -0.2, "v_final": -0.6}])
+@pytest.mark.parametrize("frame", ["lab", "rod before", "rod after", "-0.45", "0.9"])
+def test_which_end_starts_first_is_said_from_the_events_of_each_frame(
+    values: dict[str, float], frame: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A general velocity change's key event is where an end starts first in the lab; the two starts are
+    spacelike apart, so "first" is said of the lab, and the order in the frame shown is the one its own
+    event table gives (together in the rod's frame before)."""
+    flags = [f"--{k.replace('_', '-')}={v}" for k, v in values.items()]
+    assert main(["events", "velocity-change", *flags, f"--frame={frame}"]) == 0
+    out = capsys.readouterr().out
+    flat = " ".join(out.split())
+    lab = event_rows(_events(["velocity-change", *flags], capsys))
+    here = event_rows(out)
+    key = min(("T_B0", "T_F0"), key=lambda n: lab[n][0])
+    other = "T_F0" if key == "T_B0" else "T_B0"
+    assert lab[key][0] < lab[other][0]
+    assert f"the start of the change: the event {key}, where" in flat
+    assert "; in the lab it is the first thing that happens to the rod" in flat
+    assert "the first thing that happens to the rod)" not in flat  # never as a bare fact
+    scene = rr.build_scene("velocity-change", **values)
+    side = {0: "left", 1: "right"}
+    other_side = side[next(s.end for s in scene.event_specs if s.name == other)]
+    dt = here[other][0] - here[key][0]
+    if frame == "rod before":
+        assert dt == pytest.approx(0.0, abs=1e-9)
+        assert "in the frame 'rod before' both ends start together" in flat
+    elif frame != "lab":
+        if dt > 1e-9:
+            assert "it is first too" in flat
+        else:
+            assert f"the {other_side} end starts first" in flat
+
+
+def _events(args: list[str], capsys: pytest.CaptureFixture[str]) -> str:
+    assert main(["events", *args]) == 0
+    return capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    ("values", "kick", "side"),
+    [
+        # pushed toward +x: B, the left end, is kicked at the origin; F is on x = sqrt(1 + t^2)
+        ({"v_initial": 0.2, "v_final": 0.6}, (0.0, 0.0), 1),
+        # pushed toward -x: B, the right end, is kicked at lab (0, 1); F is on x = 1 - sqrt(1 + t^2)
+        ({"v_initial": 0.6, "v_final": -0.2}, (0.0, 1.0), -1),
+    ],
+)
+@pytest.mark.parametrize("a_front", ["none", "1"])
+def test_an_impulsive_velocity_change_is_caused_by_its_kick(
+    values: dict[str, float],
+    kick: tuple[float, float],
+    side: int,
+    a_front: str,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """With a′_F L0 = 1 (or none) the end B jumps at once: that kick is the event the light leaves from
+    and the verdict is measured from (not "a vertex where nothing happens"); the other end's whole
+    change lies outside its light cone. The numbers against 50-digit closed forms: F, at L0 = 1 from
+    the kick, has velocity v at (t, x) = (side γv, x_kick + side γ), and the light x = x_kick + side t
+    meets it coasting at V_f after T_F."""
+    import mpmath as mp
+
+    mp.mp.dps = 50
+    flags = [f"--{k.replace('_', '-')}={v}" for k, v in values.items()]
+    out = _events(["velocity-change", *flags, f"--a-front={a_front}"], capsys)
+    flat = " ".join(out.split())
+    assert "nothing happens" not in flat and "vertex" not in flat
+    assert "light from the kick: S reaches" in flat
+    assert "lies outside the light cone of the kick: no signal from the kick can have caused it" in flat
+    rows = event_rows(out)
+    assert rows["T_B0"] == rows["T_B"] == kick
+
+    def on_f(v: float) -> tuple[Any, Any]:  # mpf numbers (the stubs type their arithmetic loosely)
+        g = 1 / mp.sqrt(1 - mp.mpf(v) ** 2)
+        return side * g * mp.mpf(v), kick[1] + side * g
+
+    t_start, x_start = on_f(values["v_initial"])
+    t_stop, x_stop = on_f(values["v_final"])
+    vf = mp.mpf(values["v_final"])
+    t_light = (x_stop - kick[1] - vf * t_stop) / (side - vf)
+    x_light = kick[1] + side * t_light
+    scene = rr.build_scene("velocity-change", **values, a_front=None if a_front == "none" else 1.0)
+    for name, (t, x) in (("T_F0", (t_start, x_start)), ("T_F", (t_stop, x_stop))):
+        assert scene.events[name] == pytest.approx((float(t), float(x)), rel=1e-12), name
+    (verdict,) = scene.causal_verdicts()
+    (far,) = [leg for leg in signals_in(scene, rr.LAB).legs if leg.name == "S"]
+    assert verdict.arrival == far.arrival == pytest.approx((float(t_light), float(x_light)), rel=1e-12)
+    assert f"reaches it at (lab t, x) = ({float(t_light):.4g}, {float(x_light):.4g})" in flat
