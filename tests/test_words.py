@@ -26,7 +26,7 @@ from rigidrel_app.lessons import lesson_from
 from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.scenario import flag
 from rigidrel_app.view.scene_view import readout_markdown
-from rigidrel_app.view.signals import signals_in
+from rigidrel_app.view.signals import signals_in, verdict_lines
 from rigidrel_app.view.state import Settings, build
 
 NUMBER = r"-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?"
@@ -538,3 +538,16 @@ def test_an_impulsive_velocity_change_is_caused_by_its_kick(
     (far,) = [leg for leg in signals_in(scene, rr.LAB).legs if leg.name == "S"]
     assert verdict.arrival == far.arrival == pytest.approx((float(t_light), float(x_light)), rel=1e-12)
     assert f"reaches it at (lab t, x) = ({float(t_light):.4g}, {float(x_light):.4g})" in flat
+
+
+def test_the_decelerations_reference_event_is_named_for_the_end_the_table_names() -> None:
+    """Deceleration's origin event is where its left end, the leading one in the lab, comes to rest: the
+    light's key event says "left" and "leading", as the event table does, never "back"."""
+    scene = rr.build_scene("deceleration")
+    signals = signals_in(scene, rr.LAB)
+    assert signals.key_phrase == "the left end's stop"
+    assert "left end (B, leading in the lab) comes to rest in the lab" in signals.key_definition
+    assert "leading" in rr.describe("deceleration").event("-T_B").meaning
+    assert "left end" in rr.describe("deceleration").event("-T_B").meaning
+    for verdict in verdict_lines(scene):
+        assert "back end" not in verdict

@@ -6,7 +6,7 @@ closed form in the frame asked for, and :meth:`rigidrel_core.Scene.causal_verdic
 only chooses what to show and lays it out (c = 1: light moves one unit of x per unit of t).
 
 The key event is the scene's cause (:meth:`rigidrel_core.Scene.cause`): its origin event, ``(0, 0)``
-in every frame (the start, the kick, the contact or the back end's stop), or a kick elsewhere. A
+in every frame (the start, the kick, the contact or the left end's stop), or a kick elsewhere. A
 general velocity change has no cause (nothing happens at its origin, the vertex of its left end's
 hyperbola); its key event is where an end starts to change velocity first in the lab. Whether that
 is first in another frame depends on the frame (the two starts are spacelike apart): the words say
@@ -186,7 +186,8 @@ def key_definition(scene: rr.Scene, frame: rr.Frame = rr.LAB) -> str:
     elif scene.origin_event is rr.OriginEvent.KICK:
         what = f"where {first}'s left end is kicked: it jumps to its final velocity at once"
     elif scene.origin_event is rr.OriginEvent.REST:
-        what = f"where {first}'s left end comes to rest in the lab"
+        lead = "leading" if scene.rods[0].motion.velocity_initial.value < 0.0 else "trailing"
+        what = f"where {first}'s left end ({_letter(scene, 0)}, {lead} in the lab) comes to rest in the lab"
     elif walls:
         ends = "the left end of each rod" if scene.n_rods > 1 else f"{first}'s left end"
         what = f"where {ends} hits the {walls[0]}"
