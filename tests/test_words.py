@@ -551,3 +551,34 @@ def test_the_decelerations_reference_event_is_named_for_the_end_the_table_names(
     assert "left end" in rr.describe("deceleration").event("-T_B").meaning
     for verdict in verdict_lines(scene):
         assert "back end" not in verdict
+
+
+@pytest.mark.parametrize(
+    ("args", "frame", "owners"),
+    [
+        (["wall-collision", "--eps=0"], "rod before", ["the wall's"]),
+        (["wall-collision", "--eps=0.5"], "rod after", ["the wall's"]),
+        (["wall-collision", "--eps=1"], "-0.45", [None]),
+        (["pole-barn"], "pole before", ["the wall's", "the signal-limited pole's"]),
+    ],
+)
+def test_a_moving_wall_does_work_while_the_heat_stays_where_it_is(
+    args: list[str], frame: str, owners: list[str | None], capsys: pytest.CaptureFixture[str]
+) -> None:
+    """In a frame where the wall moves, its row can be positive: that is work the wall does on the rod,
+    not heat leaving the wall. Each system says so, with the wall's velocity there, and that the heat is
+    still the growth of the same body's rest energy, the same in every frame. In the lab, nothing."""
+    out = _events([*args, f"--frame={frame}"], capsys)
+    scene = rr.build_scene(args[0], **{a.split("=")[0][2:]: float(a.split("=")[1]) for a in args[1:]})
+    f = scene.frame(frame) if frame in scene.frames else rr.Frame.from_velocity(float(frame), "custom")
+    flat = " ".join(out.split())
+    notes = re.findall(r"\(the wall moves at (\S+) in this frame: (.*?)\)(?= system:| light from|$)", flat)
+    assert len(notes) == len(owners), flat
+    for (speed, text), owner, system in zip(notes, owners, scene.budget(frame=f).systems, strict=True):
+        assert float(speed) == pytest.approx(-f.beta, rel=1e-9)
+        assert "its E is the work the wall does on" in text
+        if owner is None:
+            assert system.heat == 0.0 and "heat" not in text
+        else:
+            assert f"the heat, {system.heat:.10g}, the same in every frame, is still the growth of {owner} rest" in text
+    assert "the wall moves" not in _events([*args, "--frame=lab"], capsys)
