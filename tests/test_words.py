@@ -299,9 +299,10 @@ def test_the_lessons_heat_is_in_the_wall_and_in_mass_units() -> None:
 
 
 #: Words that describe a velocity change as one frame sees it: in another the same change may speed
-#: the end up, or reverse it. An event's meaning is printed under every frame's table, so it says
-#: "changing velocity", or names the frame its word holds in.
-FRAME_BOUND = re.compile(r"decelerat|brak|slows|speeds up|comes to rest|trailing|leading", re.IGNORECASE)
+#: the end up, or reverse it, and the end comes to rest instead of "reaching V". An event's meaning is
+#: printed under every frame's table, so it says "changing velocity" or "its final velocity", or names
+#: the frame its word holds in.
+FRAME_BOUND = re.compile(r"decelerat|brak|slows|speeds up|comes to rest|trailing|leading|reaches V\b", re.IGNORECASE)
 
 
 @pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
@@ -582,3 +583,22 @@ def test_a_moving_wall_does_work_while_the_heat_stays_where_it_is(
         else:
             assert f"the heat, {system.heat:.10g}, the same in every frame, is still the growth of {owner} rest" in text
     assert "the wall moves" not in _events([*args, "--frame=lab"], capsys)
+
+
+def test_the_lessons_first_stop_is_the_labs() -> None:
+    """Constant acceleration: T_B and T_F are spacelike apart, simultaneous in the rod's new frame, so
+    the step that says the back end reaches V first says it of the lab, and that they are together there."""
+    (step, *_) = [s for s in lesson_from("paper").steps if s.resolved.scene.kind == "constant-acceleration"]
+    text = " ".join(step.caption.split())
+    scene = step.resolved.scene
+    assert rr.causal_relation(scene.events["T_B"], scene.events["T_F"]).kind == "spacelike"
+    after = scene.events_in(frame=scene.frame("rod after"))
+    assert after["T_B"][0] == pytest.approx(after["T_F"][0], rel=1e-12)
+    assert "In the lab the back end reaches V first" in text
+    assert "in the rod's new frame both ends stop accelerating together" in text
+    for other in lesson_from("paper").steps:
+        flat = " ".join(other.caption.split())
+        for m in re.finditer(r"[^.]*\bfirst\b[^.]*", flat):
+            if "first light" in m[0] or "light from" in m[0]:
+                continue
+            assert "lab" in m[0] or "frame" in m[0], f"{other.title!r}: {m[0]!r}"  # "first" names its frame
