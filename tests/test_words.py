@@ -602,3 +602,26 @@ def test_the_lessons_first_stop_is_the_labs() -> None:
             if "first light" in m[0] or "light from" in m[0]:
                 continue
             assert "lab" in m[0] or "frame" in m[0], f"{other.title!r}: {m[0]!r}"  # "first" names its frame
+
+
+def test_a_lane_in_the_lab_is_not_labelled_as_another_frame() -> None:
+    """Where the chosen frame is the lab, its lane's time is t and its ruler x (a prime belongs to another
+    frame), and a frame at rest in the lab that has another name (the custom frame at β = 0, a
+    preset) says that it is the lab."""
+    from rigidrel_app.view.diagrams import frame_title
+    from rigidrel_app.view.scene_view import build_drawing, lane_titles, ruler_names
+
+    for step in lesson_from("paper").steps:
+        r = step.resolved
+        _, second = lane_titles(r, 0.25)
+        if r.ride is None and r.frame.same_velocity(rr.LAB):
+            assert "t' =" not in second and "t′ =" not in second and second.startswith("lab frame (chosen):")
+            assert ruler_names(r) == ("x", "x")
+        elif r.ride is None:
+            assert "t' =" in second and ruler_names(r) == ("x", "x′")
+    assert frame_title(rr.Frame.from_velocity(0.0, "custom")) == "custom (β = 0: the lab)"
+    assert frame_title(rr.build_scene("deceleration").frame("rod after")) == "rod after (β = 0: the lab)"
+    assert frame_title(rr.LAB) == "lab"
+    lab_step = build(replace(Settings("wall-collision"), frame="lab"))
+    labels = [lab.text for _, texts in build_drawing(lab_step).lane_statics() for lab in texts]
+    assert "x′" not in labels

@@ -89,9 +89,10 @@ def typeset_prime(prime: str) -> str:
 
 
 def frame_title(frame: rr.Frame) -> str:
-    """``"lab"``, or the frame's name (``"custom"`` for an unnamed one) and its velocity."""
-    if frame.same_velocity(rr.LAB) and frame.name in (None, "lab"):
-        return "lab"
+    """``"lab"``, or the frame's name (``"custom"`` for an unnamed one) and its velocity; one at rest
+    in the lab says it is the lab: ``"custom (β = 0: the lab)"``."""
+    if frame.same_velocity(rr.LAB):
+        return "lab" if frame.name in (None, "lab") else f"{frame.name} (β = 0: the lab)"
     return f"{frame.name or 'custom'} (β = {frame.beta:.4g})"
 
 

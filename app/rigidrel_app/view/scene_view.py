@@ -119,10 +119,15 @@ class Drawn:
         """A half-length beyond anything on screen: the diagrams' 'now' lines run this far."""
         return 4.0 * max(abs(v) for v in (*self.window, *self.x_range))
 
+    @property
+    def ruler_names(self) -> tuple[str, str]:
+        """The lanes' rulers' names: x in the lab, x′ in the chosen frame (x again where it is the lab)."""
+        return ruler_names(self.resolved)
+
     def lane_statics(self) -> list[tuple[Segments, tuple[Label, ...]]]:
         """Each lane's ruler (x in the lab, x′ in the chosen frame) and origin mark: drawn once per scene."""
         origin = self.resolved.scene.origin_event
-        return [lane_static(self.geometry, r, origin, axis) for r, axis in zip(self.lane_ranges, RULER_NAMES)]
+        return [lane_static(self.geometry, r, origin, axis) for r, axis in zip(self.lane_ranges, self.ruler_names)]
 
     @property
     def charts(self) -> tuple[Chart, Chart, Chart]:
@@ -250,12 +255,24 @@ def _now_items(items: tuple[Item, ...], x: FloatArray, y: FloatArray, now_lines:
     return tuple(out)
 
 
+def _is_lab(r: Resolved) -> bool:
+    """Whether the chosen frame is the lab's (a lab step, or a preset at rest in the lab), unridden."""
+    return r.ride is None and r.frame.same_velocity(_LAB)
+
+
+def ruler_names(r: Resolved) -> tuple[str, str]:
+    """The lanes' rulers' names: x in the lab, x′ in the chosen frame, x where that is the lab too."""
+    return ("x", "x") if _is_lab(r) else RULER_NAMES
+
+
 def lane_titles(r: Resolved, now: float, instant: ComovingInstant | None = None) -> tuple[str, str]:
     """The lanes' first lines: the frame and its time; riding, the point and its clock's reading
-    (``instant``: the ride at ``now``)."""
+    (``instant``: the ride at ``now``). The chosen frame's time is t′, and t where it is the lab."""
     lab = f"lab frame:   t = {signed(now)}"
     if r.ride is not None and instant is not None:
         return lab, f"riding: {r.ride.label(r.scene)}:   its clock τ = {signed(instant.proper_time)}"
+    if _is_lab(r):
+        return lab, f"{frame_title(r.frame)} frame (chosen):   t = {signed(now)}"
     return lab, f"{frame_title(r.frame)} frame:   t' = {signed(now)}"
 
 
