@@ -625,3 +625,26 @@ def test_a_lane_in_the_lab_is_not_labelled_as_another_frame() -> None:
     lab_step = build(replace(Settings("wall-collision"), frame="lab"))
     labels = [lab.text for _, texts in build_drawing(lab_step).lane_statics() for lab in texts]
     assert "x′" not in labels
+
+
+def test_every_exported_step_says_when_each_clock_reads_zero() -> None:
+    """Two clocks on one worldline (the two poles' rear ends before the stop) can read differently: each
+    end's clock reads 0 where that end starts changing velocity. Every exported step page says so, and
+    it is what the core's clocks do."""
+    from rigidrel_app.export.lesson_site import _step_page  # pyright: ignore[reportPrivateUsage]
+
+    lesson = lesson_from("paper")
+    for k, step in enumerate(lesson.steps):
+        page = _step_page(lesson, k, step)
+        assert (
+            "read each end&#x27;s proper time τ: every clock reads 0 where its point starts changing velocity" in page
+        )
+    scene = rr.build_scene("pole-barn", v=0.8, barn_length=0.6)
+    for rod in range(scene.n_rods):
+        for end in (0.0, 1.0):
+            start = scene.point_event(rod, end, proper_time=0.0)
+            spec = [s for s in scene.event_specs if (s.rod, s.end, s.phase) == (rod, int(end), "start")]
+            if spec:
+                assert start == pytest.approx(scene.events[spec[0].name], abs=1e-12)
+            tau = scene.proper_times(np.array([start[0]]), fractions=np.array([end]))[rod, 0, 0]
+            assert tau == pytest.approx(0.0, abs=1e-12)
