@@ -648,3 +648,27 @@ def test_every_exported_step_says_when_each_clock_reads_zero() -> None:
                 assert start == pytest.approx(scene.events[spec[0].name], abs=1e-12)
             tau = scene.proper_times(np.array([start[0]]), fractions=np.array([end]))[rod, 0, 0]
             assert tau == pytest.approx(0.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("kind", ["wall-collision", "rod-collision"])
+def test_restitution_is_defined_as_the_paper_defines_it(kind: str) -> None:
+    """ε is the paper's relativistic coefficient of restitution (Sec. 6, Eq. (29): γ̄′V̄′ = −ε γ̄V̄ in the
+    barycentric frame), a ratio of proper velocities, not of speeds: the help says so with a number
+    the core gives, checked against 50 digits; the docs say it too."""
+    import mpmath as mp
+
+    mp.mp.dps = 50
+    d = rr.describe(kind)
+    text = " ".join(d.help_for(d.parameter("eps")).split())
+    assert "(Sec. 6, Eq. (29))" in text and "proper velocity γV after the impact to before, reversed" in text
+    assert "in the barycentric frame (zero total momentum; for a wall, the wall's frame)" in text
+    v = mp.mpf("0.6")
+    w = v / mp.sqrt(1 - v**2) / 2
+    exact = w / mp.sqrt(1 + w**2)
+    (rod,) = rr.wall_collision(0.6, 1.0, 0.5).rods
+    assert rod.motion.velocity_final.value == pytest.approx(float(exact), rel=1e-15)
+    assert f"leaves at {float(exact):.4g}, not 0.3" in text
+    root = Path(__file__).parent.parent
+    for page in ("core.md", "conventions.md"):
+        flat = " ".join((root / "docs" / page).read_text().split())
+        assert "Sec. 6, Eq. (29)" in flat and "γ̄′V̄′ = −ε γ̄V̄" in flat and "not 0.3" in flat, page
