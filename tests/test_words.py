@@ -672,3 +672,25 @@ def test_restitution_is_defined_as_the_paper_defines_it(kind: str) -> None:
     for page in ("core.md", "conventions.md"):
         flat = " ".join((root / "docs" / page).read_text().split())
         assert "Sec. 6, Eq. (29)" in flat and "γ̄′V̄′ = −ε γ̄V̄" in flat and "not 0.3" in flat, page
+
+
+def test_every_event_a_caption_names_is_inside_its_steps_diagram() -> None:
+    """A student looks for the event a caption names on the step's exported diagram: its first view
+    (the step's own state, its layers: with the light signals, the window reaches their arrivals)
+    contains every coordinate pair the caption gives."""
+    from rigidrel_app.export.diagram_html import _panels  # pyright: ignore[reportPrivateUsage]
+    from rigidrel_app.view.state import resolve, settings_for
+
+    checked = 0
+    for step in lesson_from("paper").steps:
+        r = resolve(settings_for(step.resolved.scene, step.resolved.frame).with_layers(step.layers))
+        assert not isinstance(r, str)
+        ranges = _panels(r)[2]
+        (t0, t1), (x0, x1) = ranges["yaxis.range"], ranges["xaxis.range"]
+        for m in PAIR.finditer(" ".join(step.caption.split())):
+            if m["label"] is None:
+                continue
+            t, x = float(m["t"]), float(m["x"])
+            assert t0 <= t <= t1 and x0 <= x <= x1, f"step {step.title!r}: {m[0]} outside {ranges}"
+            checked += 1
+    assert checked >= 14

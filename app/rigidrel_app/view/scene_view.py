@@ -44,7 +44,7 @@ from .lanes import (
 from .layers import Layer
 from .layout import CanvasLayout
 from .sampling import ADAPTIVE, Sampler
-from .signals import Signals, event_cone_items, key_definition, signals_in, verdict_lines
+from .signals import Signals, event_cone_items, key_definition, signals_in, signals_window_end, verdict_lines
 from .state import Resolved, format_value
 from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style, signed
 
@@ -299,7 +299,7 @@ def build_drawing(
     a0, a1 = scene.time_window(frame=lab)
     b0, b1 = scene.time_window(frame=frame)
     signals = (signals_in(scene, lab), signals_in(scene, frame)) if Layer.SIGNALS in resolved.layers else None
-    window = _round_outward(min(a0, b0), _signals_end(max(a1, b1), min(a0, b0), signals))
+    window = _round_outward(min(a0, b0), signals_window_end(max(a1, b1), min(a0, b0), signals))
     geometry = lane_geometry(scene)
 
     def lane_range(f: rr.Frame) -> tuple[float, float]:
@@ -400,23 +400,6 @@ def hidden_chart(title: str, note: str) -> Chart:
     """A panel that shows only ``title`` and ``note`` (no axes: its chart has no axis names)."""
     text = Label(0.5, 0.5, note, Style(INK), anchor="center", size=15.0)
     return Chart(items=(text,), x_title="", y_title="", x_range=(0.0, 1.0), y_range=(0.0, 1.0), title=title)
-
-
-#: The window grows to show the light reach the far ends only if that adds at most this many windows.
-SIGNAL_REACH = 1.5
-
-
-def _signals_end(end: float, start: float, signals: tuple[Signals, Signals] | None) -> float:
-    """The window's end, late enough for the light from the key event to reach every far end
-    (the arrivals ``S`` in both frames), unless that would squeeze the diagrams: then the rays run
-    off the top and the readout gives the arrival in numbers."""
-    if signals is None:
-        return end
-    arrivals = [leg.arrival[0] for sig in signals for leg in sig.legs if leg.name.startswith("S")]
-    late = max(arrivals, default=end)
-    if late <= end or late - end > SIGNAL_REACH * (end - start):
-        return end
-    return late + 0.05 * (late - start)
 
 
 def _round_outward(t0: float, t1: float) -> tuple[float, float]:

@@ -15,6 +15,7 @@ which, from the events of the frame shown.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -226,6 +227,23 @@ def signals_in(scene: rr.Scene, frame: rr.Frame) -> Signals:
         if back is not None:
             legs.append(SignalLeg(arrival, back, f"R{suffix}", f"its echo is back at {end_words(scene, rod, near)}"))
     return Signals(key_here, phrase, tuple(legs), key_definition(scene, frame))
+
+
+#: The window grows to show the light reach the far ends only if that adds at most this many windows.
+SIGNAL_REACH = 1.5
+
+
+def signals_window_end(end: float, start: float, signals: Sequence[Signals] | None) -> float:
+    """The window's end, late enough for the light from the key event to reach every far end (the
+    arrivals ``S`` in each frame of ``signals``), unless that would squeeze the diagrams: then the
+    rays run off the top and the readout gives the arrival in numbers."""
+    if signals is None:
+        return end
+    arrivals = [leg.arrival[0] for sig in signals for leg in sig.legs if leg.name.startswith("S")]
+    late = max(arrivals, default=end)
+    if late <= end or late - end > SIGNAL_REACH * (end - start):
+        return end
+    return late + 0.05 * (late - start)
 
 
 def _clip(poly: FloatArray, x_range: tuple[float, float], y_range: tuple[float, float]) -> FloatArray:
