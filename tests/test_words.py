@@ -694,3 +694,34 @@ def test_every_event_a_caption_names_is_inside_its_steps_diagram() -> None:
             assert t0 <= t <= t1 and x0 <= x <= x1, f"step {step.title!r}: {m[0]} outside {ranges}"
             checked += 1
     assert checked >= 14
+
+
+def test_each_caption_states_what_its_numbers_depend_on() -> None:
+    """The wall crash names V and ε and gives T′_1, spelled as the paper does and tied once to the
+    command line's T_1'; the bounces and the collision say they are elastic; the collision's lengths
+    are L0 for both rods, as in the paper; Bell's s and a are given; the pole moves at −V; the
+    paper's primes are explained where the first one appears."""
+    steps = {s.title: (" ".join(s.caption.split()), s.resolved.scene) for s in lesson_from("paper").steps}
+    text, scene = steps["Born-rigid constant acceleration"]
+    assert "a′ is a proper acceleration, measured in the end's own momentary rest frame" in text
+    assert "t′ and x′ are another frame's coordinates" in text
+    text, scene = steps["The wall crash (Sec. 5)"]
+    v, eps = scene.parameters["v"], scene.parameters["eps"]
+    assert f"moving at −V = −{v:g}" in text and f"(ε = {eps:g}, a crash)" in text
+    t, x = scene.events["T_1'"]
+    assert f"From T′_1 (T_1' on the command line), (lab t, x) = ({t:.3g}, {x:.3g}), it is at rest" in text
+    assert sum("on the command line" in s[0] for s in steps.values()) == 1
+    assert "With ε = 1, an elastic bounce" in steps["An elastic bounce"][0]
+    text, scene = steps["Two rods collide: case I in the lab"]
+    assert f"elastically (ε = {scene.parameters['eps']:g})" in text
+    assert [r.motion.length for r in scene.rods] == [1.0, 1.0] and "(L1 = L2 = L0)" in text
+    assert "−γ1V1L0 = " in text and "L1 =" not in text.split("(L1 = L2 = L0)")[1]
+    text, scene = steps["Bell's spaceships"]
+    p = scene.parameters
+    assert (
+        f"rear ends start s = {p['separation']:g} apart in the lab, each with proper acceleration a = {p['a_back']:g}"
+        in text
+    )
+    text, scene = steps["The pole in the barn: a Born-rigid stop beside a stop by signals"]
+    assert f"moving at −V = −{scene.parameters['v']:g}" in text
+    assert scene.rods[0].motion.velocity_initial.value == -scene.parameters["v"]
