@@ -29,7 +29,7 @@ from rigidrel_app.view.scene_view import readout_markdown
 from rigidrel_app.view.signals import signals_in, verdict_lines
 from rigidrel_app.view.state import Settings, build
 
-NUMBER = r"-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?"
+NUMBER = r"[-−]?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?"
 #: A coordinate pair in words, with what precedes it: ``(lab t, x) = (1, 1)``, ``(t, x) = (0.75, 0.75) in
 #: the frame 'custom' (β = 0.3)``.
 PAIR = re.compile(
@@ -73,6 +73,7 @@ def matches(pair: tuple[str, str], rows: list[tuple[float, float]]) -> bool:
     its last printed digit)."""
 
     def near(text: str, value: float) -> bool:
+        text = text.replace("−", "-")  # a caption's minus sign
         last = Decimal(text).as_tuple().exponent
         assert isinstance(last, int)
         return abs(float(text) - value) <= 0.5 * 10.0**last * (1 + 1e-9) + 1e-12 * abs(value)
@@ -323,7 +324,8 @@ def test_the_order_of_two_spacelike_starts_names_its_frame() -> None:
     assert "In the lab its trailing (right) end starts braking first" in text
     before = scene.events_in(frame=scene.frame("rod before"))
     assert before["-T_F"][0] == pytest.approx(before["-T_B"][0], rel=1e-12)
-    assert f"In the rod's frame before, both ends start together, at t′ = {before['-T_F'][0]:.4g}" in text
+    t = f"{before['-T_F'][0]:.4g}".replace("-", "−")
+    assert f"In the rod's frame before, both ends start together, at t′ = {t}" in text
 
 
 @pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
@@ -690,7 +692,7 @@ def test_every_event_a_caption_names_is_inside_its_steps_diagram() -> None:
         for m in PAIR.finditer(" ".join(step.caption.split())):
             if m["label"] is None:
                 continue
-            t, x = float(m["t"]), float(m["x"])
+            t, x = (float(v.replace("−", "-")) for v in (m["t"], m["x"]))
             assert t0 <= t <= t1 and x0 <= x <= x1, f"step {step.title!r}: {m[0]} outside {ranges}"
             checked += 1
     assert checked >= 14
@@ -725,3 +727,15 @@ def test_each_caption_states_what_its_numbers_depend_on() -> None:
     text, scene = steps["The pole in the barn: a Born-rigid stop beside a stop by signals"]
     assert f"moving at −V = −{scene.parameters['v']:g}" in text
     assert scene.rods[0].motion.velocity_initial.value == -scene.parameters["v"]
+
+
+def test_a_caption_writes_every_negative_number_with_the_minus_sign() -> None:
+    """The prose writes −V and 1 − a′_F L0; a number filled in is written the same way, −0.75, never
+    -0.75 beside it (a command line in a code span is left as typed)."""
+    from rigidrel_app.lessons.captions import with_minus_signs
+
+    for step in lesson_from("paper").steps:
+        prose = "".join(part for k, part in enumerate(step.caption.split("`")) if k % 2 == 0)
+        assert re.search(r"(?<![\w′'.\])-])-\.?\d", prose) is None, step.title
+    assert "(lab t, x) = (−0.75, 1.25)" in " ".join(lesson_from("paper").steps[5].caption.split())
+    assert with_minus_signs("x = -0.3, 1e-5, Born-rigid, `--v -0.3`") == "x = −0.3, 1e-5, Born-rigid, `--v -0.3`"
