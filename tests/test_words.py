@@ -739,3 +739,26 @@ def test_a_caption_writes_every_negative_number_with_the_minus_sign() -> None:
         assert re.search(r"(?<![\w′'.\])-])-\.?\d", prose) is None, step.title
     assert "(lab t, x) = (−0.75, 1.25)" in " ".join(lesson_from("paper").steps[5].caption.split())
     assert with_minus_signs("x = -0.3, 1e-5, Born-rigid, `--v -0.3`") == "x = −0.3, 1e-5, Born-rigid, `--v -0.3`"
+
+
+#: An end named by its place in the motion (front, back, rear) where the light and causality blocks
+#: name it by its side: the first time each body's end is named so in a scene's events, its side is
+#: given too, "the back (left) end", so one output never leaves two names for one end untied.
+END_BY_MOTION = re.compile(
+    r"(?:(?P<owner>[\w-]+(?: [\w-]+)?'s) |the )(?P<which>front|back|rear)(?P<side> \((?:left|right)\))? end"
+)
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_an_end_named_front_or_back_is_tied_to_its_side(kind: str) -> None:
+    tied: set[tuple[str, str]] = set()
+    for event in rr.describe(kind).events:
+        for m in END_BY_MOTION.finditer(event.meaning):
+            if (m["owner"] or "").endswith("string's"):
+                continue  # the string's rear end is the rear ship's front end, named beside it
+            key = (m["owner"] or "", m["which"])
+            assert m["side"] is not None or key in tied, (event.name, event.meaning)
+            tied.add(key)
+    scene = rr.describe(kind).build()
+    if scene.n_rods > 1 and all(r.name.endswith("pole") for r in scene.rods):
+        assert "each rod" not in signals_in(scene, rr.LAB).key_definition

@@ -134,8 +134,8 @@ CONSTANT_ACCELERATION = SceneDescription(
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod after",
     events=(
-        EventDescription("T_B", "the back end stops accelerating", "Sec. 3, Eq. (9)"),
-        EventDescription("T_F", "the front end stops accelerating", "Sec. 3, Eq. (9)"),
+        EventDescription("T_B", "the back (left) end stops accelerating", "Sec. 3, Eq. (9)"),
+        EventDescription("T_F", "the front (right) end stops accelerating", "Sec. 3, Eq. (9)"),
     ),
     presets=(ScenePreset("Fig. 1: acceleration to V = 0.6", FIG1_CONSTANT_ACCELERATION, overlay=True),),
     meanings=MappingProxyType({"v": "final speed V (c = 1): the rod starts at rest and ends moving at +V"}),

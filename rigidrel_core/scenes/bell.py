@@ -586,17 +586,23 @@ BELL_SPACESHIPS = SceneDescription(
     frames=FRAMES,
     default_frame="ships after",
     events=(
-        EventDescription("T_B1", "the rear ship's rear end reaches its final velocity (lab V)", "Sec. 3, Eq. (9)"),
         EventDescription(
-            "T_F1", "the rear ship's front end (the string's rear end) reaches its final velocity", "Sec. 3, Eq. (9)"
+            "T_B1", "the rear ship's rear (left) end reaches its final velocity (lab V)", "Sec. 3, Eq. (9)"
         ),
         EventDescription(
-            "T_B2", "the front ship's rear end reaches its final velocity, at the lab time of T_B1", "Sec. 3, Eq. (9)"
+            "T_F1",
+            "the rear ship's front (right) end, the string's rear end, reaches its final velocity",
+            "Sec. 3, Eq. (9)",
         ),
-        EventDescription("T_F2", "the front ship's front end reaches its final velocity", "Sec. 3, Eq. (9)"),
+        EventDescription(
+            "T_B2",
+            "the front ship's rear (left) end reaches its final velocity, at the lab time of T_B1",
+            "Sec. 3, Eq. (9)",
+        ),
+        EventDescription("T_F2", "the front ship's front (right) end reaches its final velocity", "Sec. 3, Eq. (9)"),
         EventDescription(
             "T_Frod",
-            "the Born-rigid rod's front end reaches its final velocity (it accelerates less)",
+            "the Born-rigid rod's front (right) end reaches its final velocity (it accelerates less)",
             "Sec. 3, Eqs. (9), (15)",
         ),
     ),

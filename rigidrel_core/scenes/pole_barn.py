@@ -550,7 +550,7 @@ POLE_BARN = SceneDescription(
         EventDescription(
             "T_1'", "the Born-rigid pole's rear end has its final velocity (at rest in the barn)", "Sec. 5, Eq. (24)"
         ),
-        EventDescription("T_s", "the stop front reaches the signal-limited pole's rear end", "Sec. 5"),
+        EventDescription("T_s", "the stop front reaches the signal-limited pole's rear (right) end", "Sec. 5"),
     ),
     objects=(ObjectKind.WALL, ObjectKind.BARN_DOOR),
     presets=(

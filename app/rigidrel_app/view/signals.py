@@ -190,7 +190,8 @@ def key_definition(scene: rr.Scene, frame: rr.Frame = rr.LAB) -> str:
         lead = "leading" if scene.rods[0].motion.velocity_initial.value < 0.0 else "trailing"
         what = f"where {first}'s left end ({_letter(scene, 0)}, {lead} in the lab) comes to rest in the lab"
     elif walls:
-        ends = "the left end of each rod" if scene.n_rods > 1 else f"{first}'s left end"
+        noun = "pole" if all(r.name.endswith("pole") for r in scene.rods) else "rod"
+        ends = f"the left end of each {noun}" if scene.n_rods > 1 else f"{first}'s left end"
         what = f"where {ends} hits the {walls[0]}"
     else:
         what = "where the rods' facing ends touch"
