@@ -762,3 +762,20 @@ def test_an_end_named_front_or_back_is_tied_to_its_side(kind: str) -> None:
     scene = rr.describe(kind).build()
     if scene.n_rods > 1 and all(r.name.endswith("pole") for r in scene.rods):
         assert "each rod" not in signals_in(scene, rr.LAB).key_definition
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_none_is_said_to_give_what_each_help_says(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    """'none' never omits a barn, a door or a ship: each optional parameter's help says what 'none'
+    gives (a default from the other parameters, the impulsive limit, a string that never breaks),
+    and the option's line points there; a summary that states a verdict of the defaults says so."""
+    d = rr.describe(kind)
+    with pytest.raises(SystemExit):
+        main(["events", kind, "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "omits it" not in text
+    for p in d.parameters:
+        if p.optional:
+            assert re.search(r"\bnone\b", d.help_for(p)), p.name
+    if kind == "pole-barn":
+        assert "With both defaults it closes on the Born-rigid pole" in d.summary

@@ -537,8 +537,9 @@ POLE_BARN = SceneDescription(
     summary=(
         "A pole moving at −V crashes into the back wall of a barn of length D (by default L0/γ, so that in the "
         "barn's frame the moving pole just fits), whose door closes, by default, when the unstopped pole's rear "
-        "end would pass it: it closes on the Born-rigid pole (Sec. 5), in every frame, and behind a pole stopped "
-        "by a signal from the contact."
+        "end would pass it. With both defaults it closes on the Born-rigid pole (Sec. 5), in every frame, and "
+        "behind a pole stopped by a signal from the contact (at light speed); other values can change either "
+        "verdict, and the notes say which holds."
     ),
     source="Sec. 5",
     constructor=_both,
