@@ -321,7 +321,7 @@ class Scene:
             total_before, total_after = before[rods].sum(axis=0), after[rods].sum(axis=0)
             external = np.zeros(2) if system.external_source == "none" else total_after - total_before
             names = tuple(r.name for r in self.rods)
-            where = heat_where(system, names, m0, m1)
+            where = heat_where(system, names, m0, m1, tuple(not r.motion.born_rigid for r in self.rods))
             systems.append(SystemBudget(system, total_before, total_after, external, where))
         return FourMomentumBudget(
             frame_velocity=frame.beta,

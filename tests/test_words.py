@@ -779,3 +779,23 @@ def test_none_is_said_to_give_what_each_help_says(kind: str, capsys: pytest.Capt
             assert re.search(r"\bnone\b", d.help_for(p)), p.name
     if kind == "pole-barn":
         assert "With both defaults it closes on the Born-rigid pole" in d.summary
+
+
+def test_masses_the_scene_chooses_and_rest_energy_in_compression_are_said() -> None:
+    """Bell's ships and rod and the barn's poles have rest mass 1 because the scene has no mass option:
+    each system says so. The signal-limited pole ends compressed, so its new rest energy is not all
+    heat: part is the energy of its compression; a Born-rigid body's is never said to be."""
+    for kind in ("bell-spaceships", "pole-barn"):
+        d = rr.describe(kind)
+        assert "mass" not in d.parameter_map
+        for system in d.build().systems:
+            assert "rest mass M = 1" in system.name, system.name
+    budget = rr.build_scene("pole-barn").budget()
+    born, plastic = budget.systems
+    assert plastic.heat_where.startswith(
+        "in the signal-limited pole: not all heat, part is the energy of its compression"
+    )
+    assert "compression" not in born.heat_where
+    for values in ({"eps": 0.5}, {"eps": 0.0}):
+        for system in rr.build_scene("rod-collision", **values).budget().systems:
+            assert "compression" not in system.heat_where

@@ -400,12 +400,18 @@ class BellScene(Scene):
         """Two physical systems, never summed: the two ships (and the massless string between them),
         and the Born-rigid rod that starts between the same two rear ends, which stands in their place (a comparison:
         it occupies the ships' places, so it is an alternative to them, not a third body)."""
+        m = self.rods[REAR_SHIP].mass_before
+        mass = f"{m:g}" + (", the scene's unit (it has no mass option)" if m == 1.0 else "")
         return (
             PhysicalSystem(
-                "the two ships (the string between them taken as massless)", (REAR_SHIP, FRONT_SHIP), "drive", 0.0
+                f"the two ships, each of rest mass M = {mass} (the string between them taken as massless)",
+                (REAR_SHIP, FRONT_SHIP),
+                "drive",
+                0.0,
             ),
             PhysicalSystem(
-                "the Born-rigid rod that starts between the same rear ends (instead of the ships, never beside them)",
+                f"the Born-rigid rod that starts between the same rear ends, given the same rest mass M = {m:g} "
+                "(instead of the ships, never beside them)",
                 (COMPARISON_ROD,),
                 "drive",
                 0.0,

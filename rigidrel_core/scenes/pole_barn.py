@@ -199,7 +199,14 @@ class PoleBarnScene(Scene):
         """One physical system per model: a pole and the barn's wall that stops it (the two poles are
         two models of one pole, never in the barn together: their 4-momenta are never summed)."""
         return tuple(
-            PhysicalSystem(f"the {rod.name} and the barn's back wall (one model)", (i,), "wall", heat)
+            PhysicalSystem(
+                f"the {rod.name}, of rest mass M = {rod.mass_before:g} before the stop"
+                + (", the scene's unit (it has no mass option)," if rod.mass_before == 1.0 else ",")
+                + " and the barn's back wall (one model)",
+                (i,),
+                "wall",
+                heat,
+            )
             for i, (rod, heat) in enumerate(zip(self.rods, self.heats, strict=True))
         )
 
