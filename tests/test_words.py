@@ -799,3 +799,10 @@ def test_masses_the_scene_chooses_and_rest_energy_in_compression_are_said() -> N
     for values in ({"eps": 0.5}, {"eps": 0.0}):
         for system in rr.build_scene("rod-collision", **values).budget().systems:
             assert "compression" not in system.heat_where
+
+
+def test_the_frame_line_writes_beta_as_the_prose_does(capsys: pytest.CaptureFixture[str]) -> None:
+    """The frame's velocity is β in the header, as in every sentence below it (never "beta")."""
+    out = _events(["wall-collision", "--frame=rod before"], capsys)
+    assert "frame      rod before  (β = -0.6): every table below is in this frame" in out
+    assert "beta" not in out

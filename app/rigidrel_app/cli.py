@@ -178,8 +178,7 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
     lines = [
         f"scene      {scene.kind}   ({d.title}, {d.source}; c = 1)",
         "parameters " + "  ".join(f"{k}={_g(v)}" for k, v in scene.parameters.items()),
-        f"frame      {frame.label()}  (beta = {_g(frame.beta)}): every table below is in this frame, "
-        "unless it says lab",
+        f"frame      {frame.label()}  (β = {_g(frame.beta)}): every table below is in this frame, unless it says lab",
         "",
         f"{'event':<12}{'t':>20}{'x':>20}   meaning",
     ]
