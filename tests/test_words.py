@@ -203,6 +203,11 @@ LOOSE_WORDS = {
     r"(?:on|spanning) the same (?:two )?rear ends": "the rod starts between them; its front falls behind",
     r"gamma s\b|\bs - l\b": "γs and s − l, as everywhere else",
     r"breaks where its strain": "the strain reaches the breaking strain at an event on the string's rear end",
+    r"vertex of the hyperbolas": "the origin is the vertex of one hyperbola, the left end's",
+    r"where nothing happens": "an impulsive change has its kick; say what the origin is",
+    r"nearer the horizon": "jargon the output never defines: B is the end behind, seen along the push",
+    r"back end's stop": "the deceleration's left end leads: it is the left end's stop",
+    r"'none' omits it": "none gives a default, the impulsive limit or no break: never nothing",
 }
 
 
@@ -214,7 +219,17 @@ def texts_a_student_reads() -> dict[str, str]:
     for kind, d in rr.scene_descriptions().items():
         scene = d.build()
         helps = [d.help_for(p) for p in d.parameters]
-        texts[kind] = "\n".join([d.summary, *helps, *scene.notes(), *(v.text for v in scene.causal_verdicts())])
+        light = signals_in(scene, rr.LAB)
+        texts[kind] = "\n".join(
+            [
+                d.summary,
+                *helps,
+                *scene.notes(),
+                light.key_definition,
+                *verdict_lines(scene),
+                *(e.meaning for e in d.events),
+            ]
+        )
     return texts
 
 
