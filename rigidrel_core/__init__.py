@@ -50,7 +50,9 @@ from ._signals import CausalRelation as CausalRelation
 from ._signals import ChangeVerdict as ChangeVerdict
 from ._signals import causal_relation as causal_relation
 from ._validate import ParameterError as ParameterError
+from ._words import event_in_words as event_in_words
 from ._words import event_shown as event_shown
+from ._words import frame_in_words as frame_in_words
 from ._words import shown as shown
 from .scenes.acceleration import constant_acceleration as constant_acceleration
 from .scenes.acceleration import deceleration as deceleration
@@ -113,7 +115,9 @@ __all__ = [
     "deceleration",
     "default_frame",
     "describe",
+    "event_in_words",
     "event_shown",
+    "frame_in_words",
     "impulsive_start",
     "pole_barn",
     "register_scene",

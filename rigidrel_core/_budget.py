@@ -44,11 +44,19 @@ def _the(name: str) -> str:
     return name if name.startswith("rod ") else f"the {name}"
 
 
-def heat_where(system: PhysicalSystem, names: tuple[str, ...], mass_before: FloatArray, mass_after: FloatArray) -> str:
+def heat_where(
+    system: PhysicalSystem,
+    names: tuple[str, ...],
+    mass_before: FloatArray,
+    mass_after: FloatArray,
+    compressed: tuple[bool, ...] = (),
+) -> str:
     """Which body the heat of ``system`` is in, in words (c = 1, energy in mass units): the wall, when
     the rods keep their rest masses (a Born-rigid stop: an infinitely heavy wall takes the momentum and
     the rest energy); else the rods, whose rest masses grow by it (shared in proportion to rest mass
-    when they grow by one factor, as in a collision with ε < 1); ``""`` when there is no heat."""
+    when they grow by one factor, as in a collision with ε < 1); ``""`` when there is no heat. A rod
+    that ends compressed (``compressed``, by rod: one stopped by a signal, not Born rigid) holds part
+    of it as the energy of its compression, and the words say so."""
     rods = list(system.rods)
     m0, m1 = mass_before[rods], mass_after[rods]
     if system.heat == 0.0:
@@ -58,7 +66,12 @@ def heat_where(system: PhysicalSystem, names: tuple[str, ...], mass_before: Floa
         where = _TAKEN_BY.get(system.external_source, "outside the rods")
         return f"all {where} ({' and '.join(_the(names[i]) for i in rods)} {keeps})"
     if len(rods) == 1:
-        return f"in {_the(names[rods[0]])} (its rest mass grows from {m0[0]:.6g} to {m1[0]:.6g})"
+        part = (
+            ": not all heat, part is the energy of its compression"
+            if rods[0] < len(compressed) and (compressed[rods[0]])
+            else ""
+        )
+        return f"in {_the(names[rods[0]])}{part} (its rest mass grows from {m0[0]:.6g} to {m1[0]:.6g})"
     factors = m1 / m0
     if np.allclose(factors, factors[0], rtol=1e-12, atol=0.0):
         return f"in the rods, shared in proportion to rest mass (each rest mass × {factors[0]:.6g})"

@@ -62,7 +62,10 @@ EPS = Parameter(
     "",
     UNIT_CLOSED,
     1.0,
-    "coefficient of restitution ε: 0 sticks (crash), 1 is elastic (Sec. 6, Eq. (29))",
+    "coefficient of restitution ε, as the paper defines it (Sec. 6, Eq. (29)): the ratio of each body's "
+    "proper velocity γV after the impact to before, reversed, in the barycentric frame (zero total "
+    "momentum; for a wall, the wall's frame); 0 sticks (crash), 1 is elastic. Not the ratio of speeds: "
+    "a rod at V = 0.6 against a wall with ε = 0.5 has γV = 0.75 halved and leaves at 0.3511, not 0.3",
     Slider(0.0, 1.0, 0.01),
 )
 #: Frame presets of a one-rod scene, in menu order.

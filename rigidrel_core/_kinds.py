@@ -18,14 +18,15 @@ class OriginEvent(StrEnum):
     CONTACT = "contact"
     """Two bodies touch: the rod and the wall, or the two rods."""
     REST = "rest"
-    """The decelerating rod's back end comes to rest there."""
+    """The rod's left end comes to rest there (in the lab): the leading end of a rod that moves in
+    toward -x and brakes, the trailing end of one that moves toward +x."""
     VERTEX = "vertex"
     """A general velocity change: the origin is where the rod's left end would be at rest if its
     hyperbola were continued; nothing need happen there."""
 
     @property
     def phrase(self) -> str:
-        """How a sentence names the event: "the contact", "the back end's stop", ..."""
+        """How a sentence names the event: "the contact", "the left end's stop", ..."""
         return _PHRASES[self]
 
 
@@ -33,7 +34,7 @@ _PHRASES = {
     OriginEvent.START: "the start",
     OriginEvent.KICK: "the kick",
     OriginEvent.CONTACT: "the contact",
-    OriginEvent.REST: "the back end's stop",
+    OriginEvent.REST: "the left end's stop",
     OriginEvent.VERTEX: "the vertex",
 }
 

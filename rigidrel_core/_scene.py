@@ -91,6 +91,10 @@ class Scene:
     objects: tuple[SceneObject, ...] = ()
     """What the scene holds that is not a rod (a wall, a barn's door, Bell's string), each with its
     drawing description: front ends draw them from it alone."""
+    kick: str = ""
+    """The named event where an end is kicked (jumps to its final velocity at once) when that is not
+    the origin event: an impulsive velocity change pushed toward -x kicks its right end, at lab
+    ``(0, L0)``. The causal verdicts and the light signals then leave from it; ``""``: none."""
     _plans: PlanCache = field(default_factory=PlanCache, init=False, repr=False)
 
     def __init__(
@@ -104,6 +108,7 @@ class Scene:
         heat: float,
         origin_event: OriginEvent,
         objects: tuple[SceneObject, ...] = (),
+        kick: str = "",
     ) -> None:
         # the instance's dict filled at once: the generated __init__ of a frozen dataclass calls
         # object.__setattr__ once per field, and every slider change builds a scene
@@ -117,6 +122,7 @@ class Scene:
             heat=heat,
             origin_event=origin_event,
             objects=objects,
+            kick=kick,
             _plans={},
         )
 
@@ -315,7 +321,7 @@ class Scene:
             total_before, total_after = before[rods].sum(axis=0), after[rods].sum(axis=0)
             external = np.zeros(2) if system.external_source == "none" else total_after - total_before
             names = tuple(r.name for r in self.rods)
-            where = heat_where(system, names, m0, m1)
+            where = heat_where(system, names, m0, m1, tuple(not r.motion.born_rigid for r in self.rods))
             systems.append(SystemBudget(system, total_before, total_after, external, where))
         return FourMomentumBudget(
             frame_velocity=frame.beta,
@@ -480,20 +486,34 @@ class Scene:
         t, x = frame @ np.array([0.0, motion.horizon_x])
         return float(t), float(x)
 
+    def cause(self) -> tuple[str, str, tuple[float, float]] | None:
+        """The event the causal verdicts are measured from: its name as a :meth:`signal_arrival` source,
+        its phrase (``"the contact"``) and its lab ``(t, x)``. The kick (:attr:`kick`) where an end is
+        kicked away from the origin, else the origin event; ``None`` where nothing happens at the origin
+        and nothing is kicked (a general velocity change's vertex): no single event causes that change."""
+        if self.kick:
+            return self.kick, OriginEvent.KICK.phrase, self.events[self.kick]
+        if self.origin_event is OriginEvent.VERTEX:
+            return None
+        return self.origin_event.value, self.origin_event.phrase, (0.0, 0.0)
+
     def causal_verdicts(self, *, frame: Frame = LAB) -> tuple[ChangeVerdict, ...]:
-        """For every rod end whose change does not begin or end at the origin event: where the change
-        lies relative to the origin event's light cone, and where its first light signal arrives.
+        """For every rod end whose change does not begin or end at the cause (:meth:`cause`: the
+        origin event, or a kick away from it): where the change lies relative to the cause's light
+        cone, and where its first light signal arrives.
 
         The kinds (timelike, lightlike, spacelike) are invariants, found from the exact lab events,
         so the verdicts hold in every frame; the events, and every coordinate pair in the words, are
         those of ``frame`` (each pair labelled: ``"(lab t, x) = ..."`` in the lab, ``"(t, x) = ... in
         the frame ..."`` elsewhere). E.g. a wall crash: "the right end: its whole change, T_1 to T_1',
         lies outside the light cone of the contact: no signal from the contact can have caused it, in
-        any frame". An origin where nothing happens (a general velocity change's vertex) has no verdicts.
+        any frame". A scene without a cause (a general velocity change's vertex) has no verdicts.
         """
         frame = check_frame(frame)
-        if self.origin_event is OriginEvent.VERTEX:
+        cause = self.cause()
+        if cause is None:
             return ()
+        source, phrase, cause_lab = cause
         named = {(s.rod, s.end, s.phase): s.name for s in self.event_specs}
         out: list[ChangeVerdict] = []
         for i, rod in enumerate(self.rods):
@@ -502,19 +522,17 @@ class Scene:
             for end in (0, 1):
                 s_event = (float(start[end, 0]), float(start[end, 1]))
                 t_event = (float(stop[end, 0]), float(stop[end, 1]))
-                if (0.0, 0.0) in (s_event, t_event):
-                    continue  # this end's change begins or ends at the origin event itself
+                if cause_lab in (s_event, t_event):
+                    continue  # this end's change begins or ends at the cause itself
                 side = "left" if end == 0 else "right"
                 article = "" if rod.name.startswith("rod ") else "the "
                 label = f"the {side} end" + (f" of {article}{rod.name}" if self.n_rods > 1 else "")
                 names = (named.get((i, end, "start"), ""), named.get((i, end, "stop"), ""))
-                arrival = self.signal_arrival(self.origin_event.value, i, float(end), frame=frame)
+                arrival = self.signal_arrival(source, i, float(end), frame=frame)
                 seen = (
                     (float(seen_start[end, 0]), float(seen_start[end, 1])),
                     (float(seen_stop[end, 0]), float(seen_stop[end, 1])),
                     arrival,
                 )
-                out.append(
-                    change_verdict(i, end, names, (s_event, t_event), seen, frame, self.origin_event.phrase, label)
-                )
+                out.append(change_verdict(i, end, names, (s_event, t_event), seen, frame, phrase, label, cause_lab))
         return tuple(out)

@@ -200,9 +200,10 @@ def signal_arrival_on(
 
 @dataclass(frozen=True)
 class ChangeVerdict:
-    """Where one end's velocity change lies relative to the scene's origin event (the kick, the
-    contact, the start), in words and in numbers. The kinds (timelike, lightlike, spacelike) are
-    invariants, found from the exact lab events; the events and the words are those of :attr:`frame`."""
+    """Where one end's velocity change lies relative to the scene's cause (the kick, the contact, the
+    start: :meth:`rigidrel_core.Scene.cause`), in words and in numbers. The kinds (timelike,
+    lightlike, spacelike) are invariants, found from the exact lab events; the events and the words
+    are those of :attr:`frame`."""
 
     rod: int
     end: Literal[0, 1]
@@ -211,10 +212,10 @@ class ChangeVerdict:
     stop: Event
     """Event of :attr:`frame` where it has its final velocity."""
     relation_start: CausalRelation
-    """The start's relation to the origin event (the same in every frame)."""
+    """The start's relation to the cause (the same in every frame)."""
     relation_stop: CausalRelation
     arrival: Event | None
-    """Event of :attr:`frame` where the first light signal from the origin event reaches the end."""
+    """Event of :attr:`frame` where the first light signal from the cause reaches the end."""
     text: str
     """The verdict in words; every coordinate pair in it is of :attr:`frame`, labelled
     (:func:`rigidrel_core._words.event_in_words`)."""
@@ -249,15 +250,17 @@ def change_verdict(
     frame: Frame,
     origin: str,
     end_label: str,
+    cause: Event = (0.0, 0.0),
 ) -> ChangeVerdict:
-    """The verdict on one end's change relative to the origin event ``(0, 0)``, which the text calls
-    ``origin`` ("the contact"); ``end_label`` names the end. ``lab`` holds the change's start and stop
+    """The verdict on one end's change relative to the lab event ``cause`` (the origin event ``(0, 0)``
+    unless an end is kicked elsewhere), which the text calls ``origin`` ("the contact");
+    ``end_label`` names the end. ``lab`` holds the change's start and stop
     as exact lab events (their kinds relative to the origin are computed there: invariants);
     ``seen`` the start, the stop and the first light's arrival as events of ``frame``, which the
     words give. ``names`` are the start's and the stop's names (``""``: none; the words then give
     the event's coordinates in ``frame``, labelled)."""
-    r_start = causal_relation((0.0, 0.0), lab[0])
-    r_stop = causal_relation((0.0, 0.0), lab[1])
+    r_start = causal_relation(cause, lab[0])
+    r_stop = causal_relation(cause, lab[1])
     start, stop, arrival = seen
     s, t = (name or event_in_words(event, frame) for name, event in zip(names, (start, stop), strict=True))
     if r_start.kind == "spacelike" and r_stop.kind == "spacelike":

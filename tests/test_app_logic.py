@@ -205,7 +205,7 @@ def test_spliced_figure_is_valid_plotly_json_with_exact_arrays() -> None:
     base = json.loads(fig.to_json())
     dyn = json.loads(fig.with_dynamic([Points(np.array([0.25]), np.array([0.75])), Label(0.1, 0.2, "now")]))
     assert len(base["data"]) == 1 and len(dyn["data"]) == 2
-    assert [a["text"] for a in dyn["layout"]["annotations"]] == ["<b>T'<sub>1</sub></b>", "now"]
+    assert [a["text"] for a in dyn["layout"]["annotations"]] == ["<b>T′<sub>1</sub></b>", "now"]
     assert np.array_equal(decode_array(base["data"][0]["x"]), x)  # bit-exact
     assert dyn["config"] == {"displayModeBar": False}
     assert base["layout"]["yaxis"]["scaleanchor"] == "x"
@@ -213,7 +213,7 @@ def test_spliced_figure_is_valid_plotly_json_with_exact_arrays() -> None:
 
 def test_event_labels_in_the_papers_notation() -> None:
     assert event_label("T_B") == "<b>T<sub>B</sub></b>"
-    assert event_label("T_2'") == "<b>T'<sub>2</sub></b>"
+    assert event_label("T_2'") == "<b>T′<sub>2</sub></b>"  # the prime the captions write
     assert event_label("-T_F") == "<b>−T<sub>F</sub></b>"
 
 

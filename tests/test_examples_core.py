@@ -51,7 +51,7 @@ EXPECTED: dict[str, list[str]] = {
         "T_B   lab t = +0.000000 x = +1.000000   rod after t' = +0.750000",
         "T_F0  lab t = +0.000000 x = +0.000000   rod after t' = +0.000000",
         "T_F   lab t = +0.750000 x = -0.250000   rod after t' = +0.750000",
-        "(the far end (F) stops changing velocity)",
+        "(the end F stops changing velocity)",
     ],
     "04_light_signals.py": [
         "light from the contact reaches the far end at lab (t, x) = (2.0, 2.0)",

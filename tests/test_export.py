@@ -108,7 +108,7 @@ def test_figures_regenerate_the_paper(tmp_path: Path) -> None:
     for label in (">T<", ">B<", ">F<"):
         assert label in fig1
     fig3 = (tmp_path / "fig3.svg").read_text().replace("\u200b", "")
-    assert fig3.count(">T<") + fig3.count(">T'<") >= 4
+    assert fig3.count(">T<") + fig3.count(">T′<") >= 4
     # every sampled vertex reaches the SVG: plotly's line simplification would drop the ones it
     # judges collinear and leave visible corners on the hyperbolas
     sampled = max(it.x.size for it in paper_figures()[2].chart.items if isinstance(it, Polyline))

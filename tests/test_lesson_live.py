@@ -75,7 +75,7 @@ def test_locks_refuse_only_what_they_fix() -> None:
 def test_caption_band_is_the_filled_in_markdown() -> None:
     band = caption_html(LESSON.steps[0], presenter=True)
     assert "rr-caption-presenter" in band and "<h2>Crash</h2>" in band
-    assert "Braking at t = -0.75; <strong>before</strong> contact." in band
+    assert "Braking at t = −0.75; <strong>before</strong> contact." in band
     assert '"shown": false' in caption_message(band, False)
     assert "another scene" in caption_html(LESSON.steps[0], off_step=True) and "another scene" not in band
 

@@ -34,7 +34,7 @@ ride = { rod = 1, fraction = 0.5 }
 def test_a_good_lesson() -> None:
     lesson = parse_lesson(GOOD, "two.toml")
     first, second = lesson.steps
-    assert first.caption == "T_1 at t = -0.75; light arrives at 1."
+    assert first.caption == "T_1 at t = −0.75; light arrives at 1."  # a number's sign is the minus sign
     assert first.layers == {Layer.WORLD_TUBE, Layer.SIGNALS}
     assert first.window == (-1.0, 2.0) and first.start == -0.5 and first.autoplay
     assert first.locked == {"v", "frame"}

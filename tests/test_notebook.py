@@ -52,7 +52,7 @@ def test_the_notebook_page_example_runs() -> None:
     rec = namespace["rec"]
     assert isinstance(fig, go.Figure)
     texts = [a.text for a in fig.layout.annotations]
-    assert any("T<sub>1</sub>" in t for t in texts) and any("T'<sub>2</sub>" in t for t in texts)
+    assert any("T<sub>1</sub>" in t for t in texts) and any("T′<sub>2</sub>" in t for t in texts)
     html = rec._repr_html_()  # type: ignore[attr-defined]
     assert html.startswith("<iframe srcdoc=") and "__VISER_EMBED_DATA__" in html
     assert len(html) > 100_000

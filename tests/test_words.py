@@ -15,6 +15,7 @@ import re
 from dataclasses import replace
 from decimal import Decimal
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -25,10 +26,10 @@ from rigidrel_app.lessons import lesson_from
 from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.scenario import flag
 from rigidrel_app.view.scene_view import readout_markdown
-from rigidrel_app.view.signals import signals_in
+from rigidrel_app.view.signals import signals_in, verdict_lines
 from rigidrel_app.view.state import Settings, build
 
-NUMBER = r"-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?"
+NUMBER = r"[-−]?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?"
 #: A coordinate pair in words, with what precedes it: ``(lab t, x) = (1, 1)``, ``(t, x) = (0.75, 0.75) in
 #: the frame 'custom' (β = 0.3)``.
 PAIR = re.compile(
@@ -72,6 +73,7 @@ def matches(pair: tuple[str, str], rows: list[tuple[float, float]]) -> bool:
     its last printed digit)."""
 
     def near(text: str, value: float) -> bool:
+        text = text.replace("−", "-")  # a caption's minus sign
         last = Decimal(text).as_tuple().exponent
         assert isinstance(last, int)
         return abs(float(text) - value) <= 0.5 * 10.0**last * (1 + 1e-9) + 1e-12 * abs(value)
@@ -201,6 +203,11 @@ LOOSE_WORDS = {
     r"(?:on|spanning) the same (?:two )?rear ends": "the rod starts between them; its front falls behind",
     r"gamma s\b|\bs - l\b": "γs and s − l, as everywhere else",
     r"breaks where its strain": "the strain reaches the breaking strain at an event on the string's rear end",
+    r"vertex of the hyperbolas": "the origin is the vertex of one hyperbola, the left end's",
+    r"where nothing happens": "an impulsive change has its kick; say what the origin is",
+    r"nearer the horizon": "jargon the output never defines: B is the end behind, seen along the push",
+    r"back end's stop": "the deceleration's left end leads: it is the left end's stop",
+    r"'none' omits it": "none gives a default, the impulsive limit or no break: never nothing",
 }
 
 
@@ -212,7 +219,17 @@ def texts_a_student_reads() -> dict[str, str]:
     for kind, d in rr.scene_descriptions().items():
         scene = d.build()
         helps = [d.help_for(p) for p in d.parameters]
-        texts[kind] = "\n".join([d.summary, *helps, *scene.notes(), *(v.text for v in scene.causal_verdicts())])
+        light = signals_in(scene, rr.LAB)
+        texts[kind] = "\n".join(
+            [
+                d.summary,
+                *helps,
+                *scene.notes(),
+                light.key_definition,
+                *verdict_lines(scene),
+                *(e.meaning for e in d.events),
+            ]
+        )
     return texts
 
 
@@ -298,9 +315,10 @@ def test_the_lessons_heat_is_in_the_wall_and_in_mass_units() -> None:
 
 
 #: Words that describe a velocity change as one frame sees it: in another the same change may speed
-#: the end up, or reverse it. An event's meaning is printed under every frame's table, so it says
-#: "changing velocity", or names the frame its word holds in.
-FRAME_BOUND = re.compile(r"decelerat|brak|slows|speeds up|comes to rest|trailing|leading", re.IGNORECASE)
+#: the end up, or reverse it, and the end comes to rest instead of "reaching V". An event's meaning is
+#: printed under every frame's table, so it says "changing velocity" or "its final velocity", or names
+#: the frame its word holds in.
+FRAME_BOUND = re.compile(r"decelerat|brak|slows|speeds up|comes to rest|trailing|leading|reaches V\b", re.IGNORECASE)
 
 
 @pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
@@ -321,7 +339,8 @@ def test_the_order_of_two_spacelike_starts_names_its_frame() -> None:
     assert "In the lab its trailing (right) end starts braking first" in text
     before = scene.events_in(frame=scene.frame("rod before"))
     assert before["-T_F"][0] == pytest.approx(before["-T_B"][0], rel=1e-12)
-    assert f"In the rod's frame before, both ends start together, at t′ = {before['-T_F'][0]:.4g}" in text
+    t = f"{before['-T_F'][0]:.4g}".replace("-", "−")
+    assert f"In the rod's frame before, both ends start together, at t′ = {t}" in text
 
 
 @pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
@@ -432,3 +451,373 @@ def test_defaults_the_words_name_are_the_registrys() -> None:
     assert f"add `--v {step.resolved.scene.parameters['v']:g}` for these numbers" in text
     wall = rr.describe("wall-collision")
     assert f"by default it bounces, ε = {wall.parameter('eps').default:g}" in wall.summary
+
+
+def event_rows(out: str) -> dict[str, tuple[float, float]]:
+    """The event table of ``rigidrel events`` output: name -> (t, x) of its frame."""
+    rows: dict[str, tuple[float, float]] = {}
+    table = False
+    for line in out.splitlines():
+        if line.startswith("event "):
+            table = True
+        elif not line.strip():
+            table = False
+        elif table:
+            rows[line[:12].strip()] = (float(line[12:32]), float(line[32:52]))
+    return rows
+
+
+@pytest.mark.parametrize("values", [{}, {"v_initial": 0.6, "v_final": -0.2}, {"v_initial": -0.2, "v_final": -0.6}])
+@pytest.mark.parametrize("frame", ["lab", "rod before", "rod after", "-0.45", "0.9"])
+def test_which_end_starts_first_is_said_from_the_events_of_each_frame(
+    values: dict[str, float], frame: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A general velocity change's key event is where an end starts first in the lab; the two starts are
+    spacelike apart, so "first" is said of the lab, and the order in the frame shown is the one its own
+    event table gives (together in the rod's frame before)."""
+    flags = [f"--{k.replace('_', '-')}={v}" for k, v in values.items()]
+    assert main(["events", "velocity-change", *flags, f"--frame={frame}"]) == 0
+    out = capsys.readouterr().out
+    flat = " ".join(out.split())
+    lab = event_rows(_events(["velocity-change", *flags], capsys))
+    here = event_rows(out)
+    key = min(("T_B0", "T_F0"), key=lambda n: lab[n][0])
+    other = "T_F0" if key == "T_B0" else "T_B0"
+    assert lab[key][0] < lab[other][0]
+    assert f"the start of the change: the event {key}, where" in flat
+    assert "; in the lab it is the first thing that happens to the rod" in flat
+    assert "the first thing that happens to the rod)" not in flat  # never as a bare fact
+    scene = rr.build_scene("velocity-change", **values)
+    side = {0: "left", 1: "right"}
+    other_side = side[next(s.end for s in scene.event_specs if s.name == other)]
+    dt = here[other][0] - here[key][0]
+    if frame == "rod before":
+        assert dt == pytest.approx(0.0, abs=1e-9)
+        assert "in the frame 'rod before' both ends start together" in flat
+    elif frame != "lab":
+        if dt > 1e-9:
+            assert "it is first too" in flat
+        else:
+            assert f"the {other_side} end starts first" in flat
+
+
+def _events(args: list[str], capsys: pytest.CaptureFixture[str]) -> str:
+    assert main(["events", *args]) == 0
+    return capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    ("values", "kick", "side"),
+    [
+        # pushed toward +x: B, the left end, is kicked at the origin; F is on x = sqrt(1 + t^2)
+        ({"v_initial": 0.2, "v_final": 0.6}, (0.0, 0.0), 1),
+        # pushed toward -x: B, the right end, is kicked at lab (0, 1); F is on x = 1 - sqrt(1 + t^2)
+        ({"v_initial": 0.6, "v_final": -0.2}, (0.0, 1.0), -1),
+    ],
+)
+@pytest.mark.parametrize("a_front", ["none", "1"])
+def test_an_impulsive_velocity_change_is_caused_by_its_kick(
+    values: dict[str, float],
+    kick: tuple[float, float],
+    side: int,
+    a_front: str,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """With a′_F L0 = 1 (or none) the end B jumps at once: that kick is the event the light leaves from
+    and the verdict is measured from (not "a vertex where nothing happens"); the other end's whole
+    change lies outside its light cone. The numbers against 50-digit closed forms: F, at L0 = 1 from
+    the kick, has velocity v at (t, x) = (side γv, x_kick + side γ), and the light x = x_kick + side t
+    meets it coasting at V_f after T_F."""
+    import mpmath as mp
+
+    mp.mp.dps = 50
+    flags = [f"--{k.replace('_', '-')}={v}" for k, v in values.items()]
+    out = _events(["velocity-change", *flags, f"--a-front={a_front}"], capsys)
+    flat = " ".join(out.split())
+    assert "nothing happens" not in flat and "vertex" not in flat
+    assert "light from the kick: S reaches" in flat
+    assert "lies outside the light cone of the kick: no signal from the kick can have caused it" in flat
+    rows = event_rows(out)
+    assert rows["T_B0"] == rows["T_B"] == kick
+
+    def on_f(v: float) -> tuple[Any, Any]:  # mpf numbers (the stubs type their arithmetic loosely)
+        g = 1 / mp.sqrt(1 - mp.mpf(v) ** 2)
+        return side * g * mp.mpf(v), kick[1] + side * g
+
+    t_start, x_start = on_f(values["v_initial"])
+    t_stop, x_stop = on_f(values["v_final"])
+    vf = mp.mpf(values["v_final"])
+    t_light = (x_stop - kick[1] - vf * t_stop) / (side - vf)
+    x_light = kick[1] + side * t_light
+    scene = rr.build_scene("velocity-change", **values, a_front=None if a_front == "none" else 1.0)
+    for name, (t, x) in (("T_F0", (t_start, x_start)), ("T_F", (t_stop, x_stop))):
+        assert scene.events[name] == pytest.approx((float(t), float(x)), rel=1e-12), name
+    (verdict,) = scene.causal_verdicts()
+    (far,) = [leg for leg in signals_in(scene, rr.LAB).legs if leg.name == "S"]
+    assert verdict.arrival == far.arrival == pytest.approx((float(t_light), float(x_light)), rel=1e-12)
+    assert f"reaches it at (lab t, x) = ({float(t_light):.4g}, {float(x_light):.4g})" in flat
+
+
+def test_the_decelerations_reference_event_is_named_for_the_end_the_table_names() -> None:
+    """Deceleration's origin event is where its left end, the leading one in the lab, comes to rest: the
+    light's key event says "left" and "leading", as the event table does, never "back"."""
+    scene = rr.build_scene("deceleration")
+    signals = signals_in(scene, rr.LAB)
+    assert signals.key_phrase == "the left end's stop"
+    assert "left end (B, leading in the lab) comes to rest in the lab" in signals.key_definition
+    assert "leading" in rr.describe("deceleration").event("-T_B").meaning
+    assert "left end" in rr.describe("deceleration").event("-T_B").meaning
+    for verdict in verdict_lines(scene):
+        assert "back end" not in verdict
+
+
+@pytest.mark.parametrize(
+    ("args", "frame", "owners"),
+    [
+        (["wall-collision", "--eps=0"], "rod before", ["the wall's"]),
+        (["wall-collision", "--eps=0.5"], "rod after", ["the wall's"]),
+        (["wall-collision", "--eps=1"], "-0.45", [None]),
+        (["pole-barn"], "pole before", ["the wall's", "the signal-limited pole's"]),
+    ],
+)
+def test_a_moving_wall_does_work_while_the_heat_stays_where_it_is(
+    args: list[str], frame: str, owners: list[str | None], capsys: pytest.CaptureFixture[str]
+) -> None:
+    """In a frame where the wall moves, its row can be positive: that is work the wall does on the rod,
+    not heat leaving the wall. Each system says so, with the wall's velocity there, and that the heat is
+    still the growth of the same body's rest energy, the same in every frame. In the lab, nothing."""
+    out = _events([*args, f"--frame={frame}"], capsys)
+    scene = rr.build_scene(args[0], **{a.split("=")[0][2:]: float(a.split("=")[1]) for a in args[1:]})
+    f = scene.frame(frame) if frame in scene.frames else rr.Frame.from_velocity(float(frame), "custom")
+    flat = " ".join(out.split())
+    notes = re.findall(r"\(the wall moves at (\S+) in this frame: (.*?)\)(?= system:| light from|$)", flat)
+    assert len(notes) == len(owners), flat
+    for (speed, text), owner, system in zip(notes, owners, scene.budget(frame=f).systems, strict=True):
+        assert float(speed) == pytest.approx(-f.beta, rel=1e-9)
+        assert "its E is the work the wall does on" in text
+        if owner is None:
+            assert system.heat == 0.0 and "heat" not in text
+        else:
+            assert f"the heat, {system.heat:.10g}, the same in every frame, is still the growth of {owner} rest" in text
+    assert "the wall moves" not in _events([*args, "--frame=lab"], capsys)
+
+
+def test_the_lessons_first_stop_is_the_labs() -> None:
+    """Constant acceleration: T_B and T_F are spacelike apart, simultaneous in the rod's new frame, so
+    the step that says the back end reaches V first says it of the lab, and that they are together there."""
+    (step, *_) = [s for s in lesson_from("paper").steps if s.resolved.scene.kind == "constant-acceleration"]
+    text = " ".join(step.caption.split())
+    scene = step.resolved.scene
+    assert rr.causal_relation(scene.events["T_B"], scene.events["T_F"]).kind == "spacelike"
+    after = scene.events_in(frame=scene.frame("rod after"))
+    assert after["T_B"][0] == pytest.approx(after["T_F"][0], rel=1e-12)
+    assert "In the lab the back end reaches V first" in text
+    assert "in the rod's new frame both ends stop accelerating together" in text
+    for other in lesson_from("paper").steps:
+        flat = " ".join(other.caption.split())
+        for m in re.finditer(r"[^.]*\bfirst\b[^.]*", flat):
+            if "first light" in m[0] or "light from" in m[0]:
+                continue
+            assert "lab" in m[0] or "frame" in m[0], f"{other.title!r}: {m[0]!r}"  # "first" names its frame
+
+
+def test_a_lane_in_the_lab_is_not_labelled_as_another_frame() -> None:
+    """Where the chosen frame is the lab, its lane's time is t and its ruler x (a prime belongs to another
+    frame), and a frame at rest in the lab that has another name (the custom frame at β = 0, a
+    preset) says that it is the lab."""
+    from rigidrel_app.view.diagrams import frame_title
+    from rigidrel_app.view.scene_view import build_drawing, lane_titles, ruler_names
+
+    for step in lesson_from("paper").steps:
+        r = step.resolved
+        _, second = lane_titles(r, 0.25)
+        if r.ride is None and r.frame.same_velocity(rr.LAB):
+            assert "t' =" not in second and "t′ =" not in second and second.startswith("lab frame (chosen):")
+            assert ruler_names(r) == ("x", "x")
+        elif r.ride is None:
+            assert "t' =" in second and ruler_names(r) == ("x", "x′")
+    assert frame_title(rr.Frame.from_velocity(0.0, "custom")) == "custom (β = 0: the lab)"
+    assert frame_title(rr.build_scene("deceleration").frame("rod after")) == "rod after (β = 0: the lab)"
+    assert frame_title(rr.LAB) == "lab"
+    lab_step = build(replace(Settings("wall-collision"), frame="lab"))
+    labels = [lab.text for _, texts in build_drawing(lab_step).lane_statics() for lab in texts]
+    assert "x′" not in labels
+
+
+def test_every_exported_step_says_when_each_clock_reads_zero() -> None:
+    """Two clocks on one worldline (the two poles' rear ends before the stop) can read differently: each
+    end's clock reads 0 where that end starts changing velocity. Every exported step page says so, and
+    it is what the core's clocks do."""
+    from rigidrel_app.export.lesson_site import _step_page  # pyright: ignore[reportPrivateUsage]
+
+    lesson = lesson_from("paper")
+    for k, step in enumerate(lesson.steps):
+        page = _step_page(lesson, k, step)
+        assert (
+            "read each end&#x27;s proper time τ: every clock reads 0 where its point starts changing velocity" in page
+        )
+    scene = rr.build_scene("pole-barn", v=0.8, barn_length=0.6)
+    for rod in range(scene.n_rods):
+        for end in (0.0, 1.0):
+            start = scene.point_event(rod, end, proper_time=0.0)
+            spec = [s for s in scene.event_specs if (s.rod, s.end, s.phase) == (rod, int(end), "start")]
+            if spec:
+                assert start == pytest.approx(scene.events[spec[0].name], abs=1e-12)
+            tau = scene.proper_times(np.array([start[0]]), fractions=np.array([end]))[rod, 0, 0]
+            assert tau == pytest.approx(0.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("kind", ["wall-collision", "rod-collision"])
+def test_restitution_is_defined_as_the_paper_defines_it(kind: str) -> None:
+    """ε is the paper's relativistic coefficient of restitution (Sec. 6, Eq. (29): γ̄′V̄′ = −ε γ̄V̄ in the
+    barycentric frame), a ratio of proper velocities, not of speeds: the help says so with a number
+    the core gives, checked against 50 digits; the docs say it too."""
+    import mpmath as mp
+
+    mp.mp.dps = 50
+    d = rr.describe(kind)
+    text = " ".join(d.help_for(d.parameter("eps")).split())
+    assert "(Sec. 6, Eq. (29))" in text and "proper velocity γV after the impact to before, reversed" in text
+    assert "in the barycentric frame (zero total momentum; for a wall, the wall's frame)" in text
+    v = mp.mpf("0.6")
+    w = v / mp.sqrt(1 - v**2) / 2
+    exact = w / mp.sqrt(1 + w**2)
+    (rod,) = rr.wall_collision(0.6, 1.0, 0.5).rods
+    assert rod.motion.velocity_final.value == pytest.approx(float(exact), rel=1e-15)
+    assert f"leaves at {float(exact):.4g}, not 0.3" in text
+    root = Path(__file__).parent.parent
+    for page in ("core.md", "conventions.md"):
+        flat = " ".join((root / "docs" / page).read_text().split())
+        assert "Sec. 6, Eq. (29)" in flat and "γ̄′V̄′ = −ε γ̄V̄" in flat and "not 0.3" in flat, page
+
+
+def test_every_event_a_caption_names_is_inside_its_steps_diagram() -> None:
+    """A student looks for the event a caption names on the step's exported diagram: its first view
+    (the step's own state, its layers: with the light signals, the window reaches their arrivals)
+    contains every coordinate pair the caption gives."""
+    from rigidrel_app.export.diagram_html import _panels  # pyright: ignore[reportPrivateUsage]
+    from rigidrel_app.view.state import resolve, settings_for
+
+    checked = 0
+    for step in lesson_from("paper").steps:
+        r = resolve(settings_for(step.resolved.scene, step.resolved.frame).with_layers(step.layers))
+        assert not isinstance(r, str)
+        ranges = _panels(r)[2]
+        (t0, t1), (x0, x1) = ranges["yaxis.range"], ranges["xaxis.range"]
+        for m in PAIR.finditer(" ".join(step.caption.split())):
+            if m["label"] is None:
+                continue
+            t, x = (float(v.replace("−", "-")) for v in (m["t"], m["x"]))
+            assert t0 <= t <= t1 and x0 <= x <= x1, f"step {step.title!r}: {m[0]} outside {ranges}"
+            checked += 1
+    assert checked >= 14
+
+
+def test_each_caption_states_what_its_numbers_depend_on() -> None:
+    """The wall crash names V and ε and gives T′_1, spelled as the paper does and tied once to the
+    command line's T_1'; the bounces and the collision say they are elastic; the collision's lengths
+    are L0 for both rods, as in the paper; Bell's s and a are given; the pole moves at −V; the
+    paper's primes are explained where the first one appears."""
+    steps = {s.title: (" ".join(s.caption.split()), s.resolved.scene) for s in lesson_from("paper").steps}
+    text, scene = steps["Born-rigid constant acceleration"]
+    assert "a′ is a proper acceleration, measured in the end's own momentary rest frame" in text
+    assert "t′ and x′ are another frame's coordinates" in text
+    text, scene = steps["The wall crash (Sec. 5)"]
+    v, eps = scene.parameters["v"], scene.parameters["eps"]
+    assert f"moving at −V = −{v:g}" in text and f"(ε = {eps:g}, a crash)" in text
+    t, x = scene.events["T_1'"]
+    assert f"From T′_1 (T_1' on the command line), (lab t, x) = ({t:.3g}, {x:.3g}), it is at rest" in text
+    assert sum("on the command line" in s[0] for s in steps.values()) == 1
+    assert "With ε = 1, an elastic bounce" in steps["An elastic bounce"][0]
+    text, scene = steps["Two rods collide: case I in the lab"]
+    assert f"elastically (ε = {scene.parameters['eps']:g})" in text
+    assert [r.motion.length for r in scene.rods] == [1.0, 1.0] and "(L1 = L2 = L0)" in text
+    assert "−γ1V1L0 = " in text and "L1 =" not in text.split("(L1 = L2 = L0)")[1]
+    text, scene = steps["Bell's spaceships"]
+    p = scene.parameters
+    assert (
+        f"rear ends start s = {p['separation']:g} apart in the lab, each with proper acceleration a = {p['a_back']:g}"
+        in text
+    )
+    text, scene = steps["The pole in the barn: a Born-rigid stop beside a stop by signals"]
+    assert f"moving at −V = −{scene.parameters['v']:g}" in text
+    assert scene.rods[0].motion.velocity_initial.value == -scene.parameters["v"]
+
+
+def test_a_caption_writes_every_negative_number_with_the_minus_sign() -> None:
+    """The prose writes −V and 1 − a′_F L0; a number filled in is written the same way, −0.75, never
+    -0.75 beside it (a command line in a code span is left as typed)."""
+    from rigidrel_app.lessons.captions import with_minus_signs
+
+    for step in lesson_from("paper").steps:
+        prose = "".join(part for k, part in enumerate(step.caption.split("`")) if k % 2 == 0)
+        assert re.search(r"(?<![\w′'.\])-])-\.?\d", prose) is None, step.title
+    assert "(lab t, x) = (−0.75, 1.25)" in " ".join(lesson_from("paper").steps[5].caption.split())
+    assert with_minus_signs("x = -0.3, 1e-5, Born-rigid, `--v -0.3`") == "x = −0.3, 1e-5, Born-rigid, `--v -0.3`"
+
+
+#: An end named by its place in the motion (front, back, rear) where the light and causality blocks
+#: name it by its side: the first time each body's end is named so in a scene's events, its side is
+#: given too, "the back (left) end", so one output never leaves two names for one end untied.
+END_BY_MOTION = re.compile(
+    r"(?:(?P<owner>[\w-]+(?: [\w-]+)?'s) |the )(?P<which>front|back|rear)(?P<side> \((?:left|right)\))? end"
+)
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_an_end_named_front_or_back_is_tied_to_its_side(kind: str) -> None:
+    tied: set[tuple[str, str]] = set()
+    for event in rr.describe(kind).events:
+        for m in END_BY_MOTION.finditer(event.meaning):
+            if (m["owner"] or "").endswith("string's"):
+                continue  # the string's rear end is the rear ship's front end, named beside it
+            key = (m["owner"] or "", m["which"])
+            assert m["side"] is not None or key in tied, (event.name, event.meaning)
+            tied.add(key)
+    scene = rr.describe(kind).build()
+    if scene.n_rods > 1 and all(r.name.endswith("pole") for r in scene.rods):
+        assert "each rod" not in signals_in(scene, rr.LAB).key_definition
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_none_is_said_to_give_what_each_help_says(kind: str, capsys: pytest.CaptureFixture[str]) -> None:
+    """'none' never omits a barn, a door or a ship: each optional parameter's help says what 'none'
+    gives (a default from the other parameters, the impulsive limit, a string that never breaks),
+    and the option's line points there; a summary that states a verdict of the defaults says so."""
+    d = rr.describe(kind)
+    with pytest.raises(SystemExit):
+        main(["events", kind, "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "omits it" not in text
+    for p in d.parameters:
+        if p.optional:
+            assert re.search(r"\bnone\b", d.help_for(p)), p.name
+    if kind == "pole-barn":
+        assert "With both defaults it closes on the Born-rigid pole" in d.summary
+
+
+def test_masses_the_scene_chooses_and_rest_energy_in_compression_are_said() -> None:
+    """Bell's ships and rod and the barn's poles have rest mass 1 because the scene has no mass option:
+    each system says so. The signal-limited pole ends compressed, so its new rest energy is not all
+    heat: part is the energy of its compression; a Born-rigid body's is never said to be."""
+    for kind in ("bell-spaceships", "pole-barn"):
+        d = rr.describe(kind)
+        assert "mass" not in d.parameter_map
+        for system in d.build().systems:
+            assert "rest mass M = 1" in system.name, system.name
+    budget = rr.build_scene("pole-barn").budget()
+    born, plastic = budget.systems
+    assert plastic.heat_where.startswith(
+        "in the signal-limited pole: not all heat, part is the energy of its compression"
+    )
+    assert "compression" not in born.heat_where
+    for values in ({"eps": 0.5}, {"eps": 0.0}):
+        for system in rr.build_scene("rod-collision", **values).budget().systems:
+            assert "compression" not in system.heat_where
+
+
+def test_the_frame_line_writes_beta_as_the_prose_does(capsys: pytest.CaptureFixture[str]) -> None:
+    """The frame's velocity is β in the header, as in every sentence below it (never "beta")."""
+    out = _events(["wall-collision", "--frame=rod before"], capsys)
+    assert "frame      rod before  (β = -0.6): every table below is in this frame" in out
+    assert "beta" not in out

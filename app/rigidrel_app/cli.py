@@ -178,8 +178,7 @@ def format_events(scene: rr.Scene, frame: rr.Frame) -> str:
     lines = [
         f"scene      {scene.kind}   ({d.title}, {d.source}; c = 1)",
         "parameters " + "  ".join(f"{k}={_g(v)}" for k, v in scene.parameters.items()),
-        f"frame      {frame.label()}  (beta = {_g(frame.beta)}): every table below is in this frame, "
-        "unless it says lab",
+        f"frame      {frame.label()}  (β = {_g(frame.beta)}): every table below is in this frame, unless it says lab",
         "",
         f"{'event':<12}{'t':>20}{'x':>20}   meaning",
     ]
@@ -230,7 +229,40 @@ def budget_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:
             lines.append(f"{indent}{label:<{44 - len(indent)}}{'':>12} {_g(e, size_e):>15} {_g(p, size_p):>15}")
         where = f", {system.heat_where}" if system.heat_where else ""
         lines.append(f"{indent}heat (rest energy created): {_g(system.heat)}{where}")
+        # a barrier the system pushes on (not a drive): its velocity in this frame
+        wall = _wall_speed(scene, frame) if system.external_source not in ("none", "drive") else 0.0
+        if wall != 0.0:  # a moving wall does work: say so, or its row reads as energy from nowhere
+            bodies = " and ".join(_the(budget.bodies[i]) for i in rods)
+            text = (
+                f"(the wall moves at {_g(wall)} in this frame: the row 'from the wall' is what it gives "
+                f"{bodies}, so its E is the work the wall does on {bodies} (negative: work done on the wall)"
+            )
+            if system.heat != 0.0:
+                if system.heat_where.startswith("all in the wall"):
+                    owner = "the wall's"
+                else:
+                    owner = f"{bodies}'s" if len(rods) == 1 else "the rods'"
+                heat = _g(system.heat)
+                text += f"; the heat, {heat}, the same in every frame, is still the growth of {owner} rest energy"
+            lines += textwrap.wrap(
+                text + ")", 100, initial_indent=indent, subsequent_indent=indent + " ", break_on_hyphens=False
+            )
     return lines
+
+
+def _the(name: str) -> str:
+    return name if name.startswith("rod ") else f"the {name}"
+
+
+def _wall_speed(scene: rr.Scene, frame: rr.Frame) -> float:
+    """The velocity of the scene's wall (its first barrier) in ``frame``, 0 where it is at rest there."""
+    for obj in scene.objects:
+        if obj.kind.role is rr.ObjectRole.BARRIER:
+            line = obj.worldlines[0]
+            if isinstance(line, rr.InertialWorldline):
+                v, b = line.velocity.value, frame.beta
+                return rr.shown((v - b) / (1.0 - v * b), 1.0)
+    return 0.0
 
 
 def note_lines(scene: rr.Scene, frame: rr.Frame) -> list[str]:

@@ -70,8 +70,10 @@ def _velocity_change_scene(
     mass: float,
     events: EventsBySign,
     origin_event: OriginEvent,
+    kick: str = "",
 ) -> Scene:
-    """One rod changing velocity once; ``near`` is the end nearer the Rindler horizon (the paper's B)."""
+    """One rod changing velocity once; ``near`` is the end nearer the Rindler horizon (the paper's B);
+    ``kick`` names the event where it is kicked, if that is not the origin (:attr:`Scene.kick`)."""
     motion = rigid_motion(v_initial, v_final, length, rho_near, 0.0)
     return checked_scene(
         Scene(
@@ -83,6 +85,7 @@ def _velocity_change_scene(
             external_source="drive",
             heat=0.0,
             origin_event=origin_event,
+            kick=kick,
         )
     )
 
@@ -131,8 +134,8 @@ CONSTANT_ACCELERATION = SceneDescription(
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod after",
     events=(
-        EventDescription("T_B", "the back end stops accelerating", "Sec. 3, Eq. (9)"),
-        EventDescription("T_F", "the front end stops accelerating", "Sec. 3, Eq. (9)"),
+        EventDescription("T_B", "the back (left) end stops accelerating", "Sec. 3, Eq. (9)"),
+        EventDescription("T_F", "the front (right) end stops accelerating", "Sec. 3, Eq. (9)"),
     ),
     presets=(ScenePreset("Fig. 1: acceleration to V = 0.6", FIG1_CONSTANT_ACCELERATION, overlay=True),),
     meanings=MappingProxyType({"v": "final speed V (c = 1): the rod starts at rest and ends moving at +V"}),
@@ -254,7 +257,13 @@ def velocity_change(
     params = {"v_initial": vi, "v_final": vf, "length": length, "mass": mass}
     if a_front is not None:
         params["a_front"] = float(a_front)
-    origin = OriginEvent.START if vi == 0.0 else (OriginEvent.REST if vf == 0.0 else OriginEvent.VERTEX)
+    # the impulsive limit kicks B: at the origin when the push is toward +x (B is the left end), at
+    # lab (0, L0) otherwise (B is the right end; the origin is then F's vertex)
+    impulsive = rho_near == IMPULSE
+    if impulsive and vf > vi:
+        origin = OriginEvent.KICK
+    else:
+        origin = OriginEvent.START if vi == 0.0 else (OriginEvent.REST if vf == 0.0 else OriginEvent.VERTEX)
     return _velocity_change_scene(
         VELOCITY_CHANGE.kind,
         params,
@@ -265,6 +274,7 @@ def velocity_change(
         mass,
         _VELOCITY_CHANGE_EVENTS,
         origin,
+        "T_B0" if impulsive and vf < vi else "",
     )
 
 
@@ -281,10 +291,14 @@ VELOCITY_CHANGE = SceneDescription(
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod after",
     events=(
-        EventDescription("T_B0", "the end nearer the horizon (B) starts changing velocity", "Sec. 3"),
-        EventDescription("T_F0", "the far end (F) starts changing velocity", "Sec. 3"),
-        EventDescription("T_B", "the end nearer the horizon (B) stops changing velocity", "Sec. 3, Eq. (9)"),
-        EventDescription("T_F", "the far end (F) stops changing velocity", "Sec. 3, Eq. (9)"),
+        EventDescription(
+            "T_B0",
+            "the end B (at the back, seen along the push: the larger proper acceleration) starts changing velocity",
+            "Sec. 3",
+        ),
+        EventDescription("T_F0", "the end F (at the front, seen along the push) starts changing velocity", "Sec. 3"),
+        EventDescription("T_B", "the end B stops changing velocity (at T_B0 itself when kicked)", "Sec. 3, Eq. (9)"),
+        EventDescription("T_F", "the end F stops changing velocity", "Sec. 3, Eq. (9)"),
     ),
     order=40,
 )

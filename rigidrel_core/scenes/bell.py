@@ -400,12 +400,18 @@ class BellScene(Scene):
         """Two physical systems, never summed: the two ships (and the massless string between them),
         and the Born-rigid rod that starts between the same two rear ends, which stands in their place (a comparison:
         it occupies the ships' places, so it is an alternative to them, not a third body)."""
+        m = self.rods[REAR_SHIP].mass_before
+        mass = f"{m:g}" + (", the scene's unit (it has no mass option)" if m == 1.0 else "")
         return (
             PhysicalSystem(
-                "the two ships (the string between them taken as massless)", (REAR_SHIP, FRONT_SHIP), "drive", 0.0
+                f"the two ships, each of rest mass M = {mass} (the string between them taken as massless)",
+                (REAR_SHIP, FRONT_SHIP),
+                "drive",
+                0.0,
             ),
             PhysicalSystem(
-                "the Born-rigid rod that starts between the same rear ends (instead of the ships, never beside them)",
+                f"the Born-rigid rod that starts between the same rear ends, given the same rest mass M = {m:g} "
+                "(instead of the ships, never beside them)",
                 (COMPARISON_ROD,),
                 "drive",
                 0.0,
@@ -576,9 +582,9 @@ BELL_SPACESHIPS = SceneDescription(
     summary=(
         "Two ships whose rear ends have the same proper acceleration stay a lab distance s apart; the string "
         "between them, its length measured in the rear ship's comoving frame, stretches towards γs − l (and "
-        "breaks first if its breaking strain is lower). A Born-rigid rod that starts between the same rear ends, "
-        "instead of the ships, its rear end moving with the rear ship's, keeps its rest length: its front "
-        "accelerates less and falls behind the front ship."
+        "breaks before it gets there if its breaking strain is lower). A Born-rigid rod that starts between "
+        "the same rear ends, instead of the ships, its rear end moving with the rear ship's, keeps its rest "
+        "length: its front accelerates less and falls behind the front ship."
     ),
     source="Sec. 1; Sec. 3",
     constructor=bell_spaceships,
@@ -586,12 +592,24 @@ BELL_SPACESHIPS = SceneDescription(
     frames=FRAMES,
     default_frame="ships after",
     events=(
-        EventDescription("T_B1", "the rear ship's rear end reaches V", "Sec. 3, Eq. (9)"),
-        EventDescription("T_F1", "the rear ship's front end (the string's rear end) reaches V", "Sec. 3, Eq. (9)"),
-        EventDescription("T_B2", "the front ship's rear end reaches V, at the lab time of T_B1", "Sec. 3, Eq. (9)"),
-        EventDescription("T_F2", "the front ship's front end reaches V", "Sec. 3, Eq. (9)"),
         EventDescription(
-            "T_Frod", "the Born-rigid rod's front end reaches V (it accelerates less)", "Sec. 3, Eqs. (9), (15)"
+            "T_B1", "the rear ship's rear (left) end reaches its final velocity (lab V)", "Sec. 3, Eq. (9)"
+        ),
+        EventDescription(
+            "T_F1",
+            "the rear ship's front (right) end, the string's rear end, reaches its final velocity",
+            "Sec. 3, Eq. (9)",
+        ),
+        EventDescription(
+            "T_B2",
+            "the front ship's rear (left) end reaches its final velocity, at the lab time of T_B1",
+            "Sec. 3, Eq. (9)",
+        ),
+        EventDescription("T_F2", "the front ship's front (right) end reaches its final velocity", "Sec. 3, Eq. (9)"),
+        EventDescription(
+            "T_Frod",
+            "the Born-rigid rod's front (right) end reaches its final velocity (it accelerates less)",
+            "Sec. 3, Eqs. (9), (15)",
         ),
     ),
     objects=(ObjectKind.STRING,),

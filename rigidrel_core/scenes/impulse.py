@@ -47,7 +47,7 @@ IMPULSIVE_START = SceneDescription(
     parameters=(V, LENGTH, MASS),
     frames=SINGLE_ROD_FRAMES,
     default_frame="rod after",
-    events=(EventDescription("T_F", "the front end reaches V", "Sec. 4, Eq. (21)"),),
+    events=(EventDescription("T_F", "the front (right) end reaches its final velocity (lab V)", "Sec. 4, Eq. (21)"),),
     meanings=MappingProxyType({"v": "final speed V (c = 1): the kicked back end jumps from rest to +V"}),
     order=30,
 )

@@ -199,7 +199,14 @@ class PoleBarnScene(Scene):
         """One physical system per model: a pole and the barn's wall that stops it (the two poles are
         two models of one pole, never in the barn together: their 4-momenta are never summed)."""
         return tuple(
-            PhysicalSystem(f"the {rod.name} and the barn's back wall (one model)", (i,), "wall", heat)
+            PhysicalSystem(
+                f"the {rod.name}, of rest mass M = {rod.mass_before:g} before the stop"
+                + (", the scene's unit (it has no mass option)," if rod.mass_before == 1.0 else ",")
+                + " and the barn's back wall (one model)",
+                (i,),
+                "wall",
+                heat,
+            )
             for i, (rod, heat) in enumerate(zip(self.rods, self.heats, strict=True))
         )
 
@@ -537,8 +544,9 @@ POLE_BARN = SceneDescription(
     summary=(
         "A pole moving at −V crashes into the back wall of a barn of length D (by default L0/γ, so that in the "
         "barn's frame the moving pole just fits), whose door closes, by default, when the unstopped pole's rear "
-        "end would pass it: it closes on the Born-rigid pole (Sec. 5), in every frame, and behind a pole stopped "
-        "by a signal from the contact."
+        "end would pass it. With both defaults it closes on the Born-rigid pole (Sec. 5), in every frame, and "
+        "behind a pole stopped by a signal from the contact (at light speed); other values can change either "
+        "verdict, and the notes say which holds."
     ),
     source="Sec. 5",
     constructor=_both,
@@ -550,7 +558,7 @@ POLE_BARN = SceneDescription(
         EventDescription(
             "T_1'", "the Born-rigid pole's rear end has its final velocity (at rest in the barn)", "Sec. 5, Eq. (24)"
         ),
-        EventDescription("T_s", "the stop front reaches the signal-limited pole's rear end", "Sec. 5"),
+        EventDescription("T_s", "the stop front reaches the signal-limited pole's rear (right) end", "Sec. 5"),
     ),
     objects=(ObjectKind.WALL, ObjectKind.BARN_DOOR),
     presets=(

@@ -45,7 +45,7 @@ def test_the_folder(site: Path) -> None:
         + [f"step-0{k}{suffix}.html" for k in (1, 2) for suffix in ("", "-lanes", "-diagram")]
     )
     page = (site / "step-01.html").read_text(encoding="utf-8")
-    assert "The back end starts braking at t = -0.75, <strong>before</strong> the contact." in page
+    assert "The back end starts braking at t = −0.75, <strong>before</strong> the contact." in page
     assert "src='plotly.min.js'" not in page  # the step page itself loads no plotly
     assert 'src="plotly.min.js"' in (site / "step-01-diagram.html").read_text(encoding="utf-8")
     assert not re.search(r"(src|href)=['\"]https?:", page)

@@ -169,7 +169,7 @@ def slider_axes(s: Settings) -> tuple[SliderAxis, SliderAxis]:
 def _panels(r: Resolved) -> tuple[list[dict[str, Any]], list[dict[str, Any]], dict[str, Any]]:
     """Traces, annotations and axis ranges of the diagram (in the resolved frame) and the length plot."""
     scene, frame = r.scene, r.frame
-    diagram = minkowski_in_frame(scene, frame, DIAGRAM_PX, r.overlay)
+    diagram = minkowski_in_frame(scene, frame, DIAGRAM_PX, r.overlay, layers=r.layers)
     lengths = length_static(scene, rr.LAB, frame, scene.time_window(frame=frame), LENGTH_PX)
     traces: list[dict[str, Any]] = []
     annotations: list[dict[str, Any]] = []

@@ -24,7 +24,7 @@ import plotly
 from markdown_it import MarkdownIt
 
 from ..lessons import Lesson, Step
-from ..view.scene_view import build_drawing
+from ..view.scene_view import CLOCK_RULE, build_drawing
 from ..view.state import settings_for
 from ..view.vocabulary import Shade
 from .diagram_html import diagram_html
@@ -74,6 +74,13 @@ document.addEventListener("keydown", function (e) {
 """
 
 
+#: Under the lanes: what their clocks read (each end's proper time, and where it is zero).
+CLOCKS_NOTE = (
+    f"The clocks on the rods' ends in the lanes read each end's proper time τ: {CLOCK_RULE} (so two ends, "
+    "or two bodies on the same worldline, can read differently at one instant)."
+)
+
+
 def step_name(k: int) -> str:
     """``step-01`` for the first step."""
     return f"step-{k + 1:02d}"
@@ -110,7 +117,7 @@ def _step_page(lesson: Lesson, k: int, step: Step, shade: Shade = "light") -> st
         "<div class='views'>"
         f"<iframe class='lanes' src='{name}-lanes.html' title='the rods, in the lab and in the chosen frame'></iframe>"
         f"<iframe class='diagram' src='{name}-diagram.html' title='Minkowski diagram with sliders'></iframe>"
-        f"</div><nav class='steps'>{nav}</nav></main>"
+        f"</div><p class='note'>{html.escape(CLOCKS_NOTE)}</p><nav class='steps'>{nav}</nav></main>"
     )
     return _page(f"{step.title} · {lesson.title}", body, next_href, prev_href if k > 0 else "index.html", shade)
 

@@ -24,10 +24,13 @@ scene in the step's frame (c = 1):
 ==========================  ===========================================================
 
 A format spec follows a colon as usual: ``{event[T_1].t:.3g}``. Write ``{{`` and ``}}`` for braces.
+A negative number is printed with the minus sign, −0.75, as the prose writes −V (in code spans,
+a command line, it stays as typed).
 """
 
 from __future__ import annotations
 
+import re
 import string
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -150,10 +153,21 @@ class _Formatter(string.Formatter):
             raise CaptionError(f"{{{field_name}}}: {exc.name!r} is not a value there") from None
 
 
+#: A hyphen-minus that is the sign of a number (not a hyphen, nor an exponent's sign).
+_SIGN = re.compile(r"(?<![\w′'.\])-])-(?=\.?\d)")
+
+
+def with_minus_signs(text: str) -> str:
+    """``text`` with each number's sign the minus sign, ``−0.75``, outside code spans (a command line
+    is left as typed)."""
+    parts = text.split("`")
+    return "`".join(part if k % 2 else _SIGN.sub("−", part) for k, part in enumerate(parts))
+
+
 def render_caption(template: str, scene: rr.Scene, frame: rr.Frame) -> str:
-    """The caption with every field filled in from the core."""
+    """The caption with every field filled in from the core, each negative number with its minus sign."""
     try:
-        return _Formatter().vformat(template, (), vocabulary(scene, frame))
+        return with_minus_signs(_Formatter().vformat(template, (), vocabulary(scene, frame)))
     except CaptionError:
         raise
     except (ValueError, KeyError, IndexError, TypeError) as exc:

@@ -29,7 +29,7 @@ from ..backends._viser import RecordingScene, SceneFold
 from ..backends.viser import SHARED_ROOT, PageRenderer
 from ..view.canvas import ChartFrame, PagePicture, legend_rows, still_picture
 from ..view.layout import LEGEND_ROWS, CanvasLayout, Theme, canvas_layout, titles_fit_one_line
-from ..view.scene_view import RULER_NAMES, Drawn, build_drawing
+from ..view.scene_view import Drawn, build_drawing
 from ..view.state import Resolved, Settings
 from .timeline import Mirror, as_u8, encode_payload, frame_pictures, room
 
@@ -76,7 +76,7 @@ class Painting:
             if shared.page is None:
                 recording = RecordingScene()
                 renderer = PageRenderer(recording.scene, recording.scene, still_root=SHARED_ROOT)
-                renderer.set_static(self.layout, self.still, RULER_NAMES)
+                renderer.set_static(self.layout, self.still, self.drawn.ruler_names)
                 fold = SceneFold()
                 for m in recording.take():
                     if getattr(m, "name", "").startswith(SHARED_ROOT):  # the still part alone
@@ -104,7 +104,7 @@ class Painting:
             if shared.mirror is None or shared.renderer is None:
                 shared.mirror = Mirror(f"paint-{self.id}")
                 shared.renderer = PageRenderer(RecordingScene().scene, shared.mirror.scene, still_root=SHARED_ROOT)
-                shared.renderer.set_static(self.layout, PagePicture(), RULER_NAMES)
+                shared.renderer.set_static(self.layout, PagePicture(), self.drawn.ruler_names)
             pictures = frame_pictures(self.drawn, self.layout, self.chart_frames, np.array([now]))
             shared.renderer.reserve(*room(pictures))
             shared.renderer.update(*pictures[0])

@@ -36,7 +36,7 @@ from ..view.layout import (
     canvas_layout,
 )
 from ..view.scenario import ScenarioError, format_scenario, parse_scenario
-from ..view.scene_view import PLOT_HZ, RULER_NAMES, Drawn, nice_step
+from ..view.scene_view import PLOT_HZ, Drawn, nice_step
 from ..view.scene_view import readout_markdown as readout
 from ..view.state import (
     Resolved,
@@ -651,7 +651,7 @@ class Session:
             if self._sent_page is not None:
                 self._to_runtime("page", "", 0.0)  # the shared page goes: the tab's own comes back
                 self._sent_page = None
-            self.renderer.set_static(layout, painting.still, RULER_NAMES)
+            self.renderer.set_static(layout, painting.still, painting.drawn.ruler_names)
         self.timeline, self.runtime_playing, self._pausing = None, False, False  # the runtime's were another state's
         if refit:
             self.fit_camera()

@@ -48,7 +48,7 @@ from ..backends.viser import PageRenderer
 from ..view.canvas import ChartFrame, PagePicture, moving_picture, still_picture
 from ..view.lanes import LanePicture
 from ..view.layout import CanvasLayout
-from ..view.scene_view import RULER_NAMES, Drawn, build_drawing
+from ..view.scene_view import Drawn, build_drawing
 from ..view.state import Resolved
 from ..view.state import resolve as resolve_settings
 from .playback import FRAME_RATE, PLAY_SECONDS
@@ -272,7 +272,7 @@ def record_timeline(
     chart_frames, picture = still_picture(drawn.charts, layout.charts, drawn.legend(), layout.legend, layout.theme)
     still, moving = RecordingScene(), RecordingScene()
     renderer = PageRenderer(still.scene, moving.scene)
-    renderer.set_static(layout, picture, RULER_NAMES)
+    renderer.set_static(layout, picture, drawn.ruler_names)
     times = frame_times(key.window, count)
     pictures = frame_pictures(drawn, layout, chart_frames, times)
     renderer.reserve(*room(pictures))  # before the first frame: no frame makes or removes a node

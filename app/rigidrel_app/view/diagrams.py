@@ -20,7 +20,7 @@ from .layout import MIN_TEXT_PX
 from .objects import object_style
 from .placement import place_labels
 from .sampling import ADAPTIVE, Sampled, Sampler
-from .signals import Signals, signal_items
+from .signals import Signals, signal_items, signals_in, signals_window_end
 from .vocabulary import (
     FRAME_COLOR,
     INK,
@@ -89,9 +89,10 @@ def typeset_prime(prime: str) -> str:
 
 
 def frame_title(frame: rr.Frame) -> str:
-    """``"lab"``, or the frame's name (``"custom"`` for an unnamed one) and its velocity."""
-    if frame.same_velocity(rr.LAB) and frame.name in (None, "lab"):
-        return "lab"
+    """``"lab"``, or the frame's name (``"custom"`` for an unnamed one) and its velocity; one at rest
+    in the lab says it is the lab: ``"custom (β = 0: the lab)"``."""
+    if frame.same_velocity(rr.LAB):
+        return "lab" if frame.name in (None, "lab") else f"{frame.name} (β = 0: the lab)"
     return f"{frame.name or 'custom'} (β = {frame.beta:.4g})"
 
 
@@ -134,16 +135,23 @@ def minkowski_in_frame(
     area_px: tuple[float, float],
     overlay: rr.Scene | None = None,
     density: float = 1.0,
+    layers: frozenset[Layer] = DEFAULT_LAYERS,
 ) -> Chart:
     """The diagram of one frame on its own (notebooks, exports): the frame's event window at equal
     scales in a plot area of ``area_px`` CSS pixels, compared with the lab; curves sampled to half
-    a pixel at ``density`` device pixels per CSS pixel."""
+    a pixel at ``density`` device pixels per CSS pixel. With the light-signal layer in ``layers``, the
+    signals are drawn and the window reaches their arrivals, as the app's (so an arrival a caption
+    names is on the page)."""
     window = scene.time_window(frame=frame)
+    signals = signals_in(scene, frame) if Layer.SIGNALS in layers else None
+    if signals is not None:
+        window = (window[0], signals_window_end(window[1], window[0], (signals,)))
     x_range, t_range = equal_scale_ranges(window_x_range(scene, (frame,), window), window, area_px)
     label = overlay_label(scene)
     return minkowski_static(
-        scene, View.alone(frame), t_range, x_range, density * area_px[0], overlay, ADAPTIVE, label, area_px
-    )
+        scene, View.alone(frame), t_range, x_range, density * area_px[0], overlay, ADAPTIVE, label, area_px,
+        layers, signals,
+    )  # fmt: skip
 
 
 def overlay_label(scene: rr.Scene) -> str:

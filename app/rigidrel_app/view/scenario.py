@@ -103,7 +103,11 @@ def parameter_value(parameter: rr.Parameter) -> Callable[[str], float | None]:
         try:
             return float(text)
         except ValueError:
-            takes = parameter.allowed() + ("; 'none' omits it" if parameter.optional else "")
+            # what 'none' gives, each optional parameter's help says (a default worked out from the
+            # others, the impulsive limit, a string that never breaks): never a value left out
+            takes = parameter.allowed() + (
+                ", or 'none' (its --help says what that gives)" if parameter.optional else ""
+            )
             raise argparse.ArgumentTypeError(f"not a number: {text!r}; {flag(parameter)} takes {takes}") from None
 
     value.__name__ = parameter.name
@@ -199,7 +203,7 @@ def add_scene_options(parser: argparse.ArgumentParser, description: rr.SceneDesc
             default=argparse.SUPPRESS,
             metavar=p.symbol.replace("′", "'"),
             help=f"{description.help_for(p)}{unit}; allowed: {p.allowed()}; default {format_value(p.default)}"
-            + ("; 'none' omits it" if p.optional else ""),
+            + ("; or 'none', which gives what the text above says" if p.optional else ""),
         )
     for old, new in description.renamed.items():  # a line written before a parameter was renamed
         parser.add_argument("--" + old.replace("_", "-"), action=_Renamed, new=new, help=argparse.SUPPRESS)

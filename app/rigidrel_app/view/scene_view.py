@@ -44,7 +44,7 @@ from .lanes import (
 from .layers import Layer
 from .layout import CanvasLayout
 from .sampling import ADAPTIVE, Sampler
-from .signals import Signals, event_cone_items, key_definition, signals_in, verdict_lines
+from .signals import Signals, event_cone_items, key_definition, signals_in, signals_window_end, verdict_lines
 from .state import Resolved, format_value
 from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style, signed
 
@@ -119,10 +119,15 @@ class Drawn:
         """A half-length beyond anything on screen: the diagrams' 'now' lines run this far."""
         return 4.0 * max(abs(v) for v in (*self.window, *self.x_range))
 
+    @property
+    def ruler_names(self) -> tuple[str, str]:
+        """The lanes' rulers' names: x in the lab, x′ in the chosen frame (x again where it is the lab)."""
+        return ruler_names(self.resolved)
+
     def lane_statics(self) -> list[tuple[Segments, tuple[Label, ...]]]:
         """Each lane's ruler (x in the lab, x′ in the chosen frame) and origin mark: drawn once per scene."""
         origin = self.resolved.scene.origin_event
-        return [lane_static(self.geometry, r, origin, axis) for r, axis in zip(self.lane_ranges, RULER_NAMES)]
+        return [lane_static(self.geometry, r, origin, axis) for r, axis in zip(self.lane_ranges, self.ruler_names)]
 
     @property
     def charts(self) -> tuple[Chart, Chart, Chart]:
@@ -250,12 +255,24 @@ def _now_items(items: tuple[Item, ...], x: FloatArray, y: FloatArray, now_lines:
     return tuple(out)
 
 
+def _is_lab(r: Resolved) -> bool:
+    """Whether the chosen frame is the lab's (a lab step, or a preset at rest in the lab), unridden."""
+    return r.ride is None and r.frame.same_velocity(_LAB)
+
+
+def ruler_names(r: Resolved) -> tuple[str, str]:
+    """The lanes' rulers' names: x in the lab, x′ in the chosen frame, x where that is the lab too."""
+    return ("x", "x") if _is_lab(r) else RULER_NAMES
+
+
 def lane_titles(r: Resolved, now: float, instant: ComovingInstant | None = None) -> tuple[str, str]:
     """The lanes' first lines: the frame and its time; riding, the point and its clock's reading
-    (``instant``: the ride at ``now``)."""
+    (``instant``: the ride at ``now``). The chosen frame's time is t′, and t where it is the lab."""
     lab = f"lab frame:   t = {signed(now)}"
     if r.ride is not None and instant is not None:
         return lab, f"riding: {r.ride.label(r.scene)}:   its clock τ = {signed(instant.proper_time)}"
+    if _is_lab(r):
+        return lab, f"{frame_title(r.frame)} frame (chosen):   t = {signed(now)}"
     return lab, f"{frame_title(r.frame)} frame:   t' = {signed(now)}"
 
 
@@ -282,7 +299,7 @@ def build_drawing(
     a0, a1 = scene.time_window(frame=lab)
     b0, b1 = scene.time_window(frame=frame)
     signals = (signals_in(scene, lab), signals_in(scene, frame)) if Layer.SIGNALS in resolved.layers else None
-    window = _round_outward(min(a0, b0), _signals_end(max(a1, b1), min(a0, b0), signals))
+    window = _round_outward(min(a0, b0), signals_window_end(max(a1, b1), min(a0, b0), signals))
     geometry = lane_geometry(scene)
 
     def lane_range(f: rr.Frame) -> tuple[float, float]:
@@ -383,23 +400,6 @@ def hidden_chart(title: str, note: str) -> Chart:
     """A panel that shows only ``title`` and ``note`` (no axes: its chart has no axis names)."""
     text = Label(0.5, 0.5, note, Style(INK), anchor="center", size=15.0)
     return Chart(items=(text,), x_title="", y_title="", x_range=(0.0, 1.0), y_range=(0.0, 1.0), title=title)
-
-
-#: The window grows to show the light reach the far ends only if that adds at most this many windows.
-SIGNAL_REACH = 1.5
-
-
-def _signals_end(end: float, start: float, signals: tuple[Signals, Signals] | None) -> float:
-    """The window's end, late enough for the light from the key event to reach every far end
-    (the arrivals ``S`` in both frames), unless that would squeeze the diagrams: then the rays run
-    off the top and the readout gives the arrival in numbers."""
-    if signals is None:
-        return end
-    arrivals = [leg.arrival[0] for sig in signals for leg in sig.legs if leg.name.startswith("S")]
-    late = max(arrivals, default=end)
-    if late <= end or late - end > SIGNAL_REACH * (end - start):
-        return end
-    return late + 0.05 * (late - start)
 
 
 def _round_outward(t0: float, t1: float) -> tuple[float, float]:

@@ -5,14 +5,17 @@ Every event comes from :mod:`rigidrel_core` (:meth:`rigidrel_core.Scene.signal_a
 closed form in the frame asked for, and :meth:`rigidrel_core.Scene.causal_verdicts`). This module
 only chooses what to show and lays it out (c = 1: light moves one unit of x per unit of t).
 
-The key event is the scene's origin event, ``(0, 0)`` in every frame: the start, the kick, the
-contact or the back end's stop. A general velocity change has no such event (its origin is the
-vertex of the hyperbolas, where nothing happens); its key event is where its left end starts to
-change velocity, the first thing that happens to the rod in every frame.
+The key event is the scene's cause (:meth:`rigidrel_core.Scene.cause`): its origin event, ``(0, 0)``
+in every frame (the start, the kick, the contact or the left end's stop), or a kick elsewhere. A
+general velocity change has no cause (nothing happens at its origin, the vertex of its left end's
+hyperbola); its key event is where an end starts to change velocity first in the lab. Whether that
+is first in another frame depends on the frame (the two starts are spacelike apart): the words say
+which, from the events of the frame shown.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -96,8 +99,9 @@ class Signals:
 
 def _key_event(scene: rr.Scene) -> tuple[str, str, tuple[float, float]]:
     """The key event as a source name for the core, its phrase, and its lab ``(t, x)``."""
-    if scene.origin_event is not rr.OriginEvent.VERTEX:
-        return scene.origin_event.value, scene.origin_event.phrase, (0.0, 0.0)
+    cause = scene.cause()
+    if cause is not None:
+        return cause
     events = scene.events_in(frame=rr.LAB)
     starts = [s.name for s in scene.event_specs if s.phase == "start"]
     first = min(starts, key=lambda name: events[name][0])
@@ -115,25 +119,82 @@ def end_words(scene: rr.Scene, rod: int, fraction: float) -> str:
     return f"the {side} end" + (f" of {_the(scene.rods[rod].name)}" if scene.n_rods > 1 else "")
 
 
-def key_definition(scene: rr.Scene) -> str:
-    """What the key event is (:func:`_key_event`), in words, for the reader of "light from the start"."""
-    phrase = _key_event(scene)[1]
+def _spec(scene: rr.Scene, name: str) -> rr.EventSpec:
+    return next(s for s in scene.event_specs if s.name == name)
+
+
+def _side(end: int) -> str:
+    return "left" if end == 0 else "right"
+
+
+def _letter(scene: rr.Scene, end: int) -> str:
+    """The paper's name of a one-rod change's end: B is behind, seen along the push (it changes harder)."""
+    return "B" if (end == 0) == (scene.rods[0].motion.sign == 1) else "F"
+
+
+def time_order(a: tuple[float, float], b: tuple[float, float], frame: rr.Frame) -> int:
+    """The sign of ``t'_b - t'_a`` in ``frame`` for two lab events: 1 when ``a`` comes first there,
+    0 when they are simultaneous there (to rounding of the terms), -1 when ``b`` comes first."""
+    dt, dx = b[0] - a[0], b[1] - a[1]
+    d = rr.shown(dt - frame.beta * dx, abs(dt) + abs(frame.beta * dx))
+    return (d > 0.0) - (d < 0.0)
+
+
+def _first_start_words(scene: rr.Scene, first: str, frame: rr.Frame) -> str:
+    """Which end of a general velocity change starts first: in the lab (where ``first`` does), in the
+    rod's frame before (together) and in ``frame``, from the events of each."""
+    lab = scene.events_in(frame=rr.LAB)
+    other = next(s.name for s in scene.event_specs if s.phase == "start" and s.name != first)
+    other_side = _side(_spec(scene, other).end)
+    words = "in the lab it is the first thing that happens to the rod"
+    before = scene.frames.get("rod before")
+    if before is not None and time_order(lab[first], lab[other], before) == 0:
+        words += "; in the frame 'rod before' both ends start together"
+    if not frame.same_velocity(rr.LAB) and (before is None or not frame.same_velocity(before)):
+        order = time_order(lab[first], lab[other], frame)
+        here = rr.frame_in_words(frame)
+        if order > 0:
+            words += f"; in {here} it is first too"
+        elif order == 0:
+            words += f"; in {here} both ends start together"
+        else:
+            words += f"; in {here} the {other_side} end starts first"
+    return words
+
+
+def key_definition(scene: rr.Scene, frame: rr.Frame = rr.LAB) -> str:
+    """What the key event is (:func:`_key_event`), in words, for the reader of "light from the start";
+    an order of events it names is the lab's and says so, or that of ``frame``, found from its events."""
+    source, phrase, _ = _key_event(scene)
     first = _the(scene.rods[0].name)
     walls = [o.name for o in scene.objects if o.role is rr.ObjectRole.BARRIER]
     origin = "the event at the origin of every frame"
+    if scene.kick:
+        spec = _spec(scene, scene.kick)
+        stop = next(s.name for s in scene.event_specs if (s.rod, s.end, s.phase) == (spec.rod, spec.end, "stop"))
+        side, letter = _side(spec.end), _letter(scene, spec.end)
+        return (
+            f"{phrase}: the event {scene.kick} (= {stop}), where {first}'s {side} end ({letter}) is kicked: it "
+            "jumps to its final velocity at once"
+        )
+    if scene.cause() is None:
+        spec = _spec(scene, source)
+        side, letter = _side(spec.end), _letter(scene, spec.end)
+        where = f"the event {source}, where {first}'s {side} end ({letter}) starts changing velocity"
+        return f"{phrase}: {where}; {_first_start_words(scene, source, frame)}"
     if scene.origin_event is rr.OriginEvent.START:
         what = f"where {first}'s left end starts accelerating"
     elif scene.origin_event is rr.OriginEvent.KICK:
-        what = f"where {first}'s left end is kicked"
+        what = f"where {first}'s left end is kicked: it jumps to its final velocity at once"
     elif scene.origin_event is rr.OriginEvent.REST:
-        what = f"where {first}'s left end comes to rest in the lab"
-    elif scene.origin_event is rr.OriginEvent.CONTACT and walls:
-        ends = "the left end of each rod" if scene.n_rods > 1 else f"{first}'s left end"
+        lead = "leading" if scene.rods[0].motion.velocity_initial.value < 0.0 else "trailing"
+        what = f"where {first}'s left end ({_letter(scene, 0)}, {lead} in the lab) comes to rest in the lab"
+    elif walls:
+        noun = "pole" if all(r.name.endswith("pole") for r in scene.rods) else "rod"
+        ends = f"the left end of each {noun}" if scene.n_rods > 1 else f"{first}'s left end"
         what = f"where {ends} hits the {walls[0]}"
-    elif scene.origin_event is rr.OriginEvent.CONTACT:
-        what = "where the rods' facing ends touch"
     else:
-        return f"{phrase}: where the left end starts to change velocity, the first thing that happens to the rod"
+        what = "where the rods' facing ends touch"
     return f"{phrase}: {origin}, {what}"
 
 
@@ -166,7 +227,24 @@ def signals_in(scene: rr.Scene, frame: rr.Frame) -> Signals:
         back = scene.signal_arrival(arrival, rod, near, frame=frame)
         if back is not None:
             legs.append(SignalLeg(arrival, back, f"R{suffix}", f"its echo is back at {end_words(scene, rod, near)}"))
-    return Signals(key_here, phrase, tuple(legs), key_definition(scene))
+    return Signals(key_here, phrase, tuple(legs), key_definition(scene, frame))
+
+
+#: The window grows to show the light reach the far ends only if that adds at most this many windows.
+SIGNAL_REACH = 1.5
+
+
+def signals_window_end(end: float, start: float, signals: Sequence[Signals] | None) -> float:
+    """The window's end, late enough for the light from the key event to reach every far end (the
+    arrivals ``S`` in each frame of ``signals``), unless that would squeeze the diagrams: then the
+    rays run off the top and the readout gives the arrival in numbers."""
+    if signals is None:
+        return end
+    arrivals = [leg.arrival[0] for sig in signals for leg in sig.legs if leg.name.startswith("S")]
+    late = max(arrivals, default=end)
+    if late <= end or late - end > SIGNAL_REACH * (end - start):
+        return end
+    return late + 0.05 * (late - start)
 
 
 def _clip(poly: FloatArray, x_range: tuple[float, float], y_range: tuple[float, float]) -> FloatArray:
@@ -226,13 +304,28 @@ def signal_items(signals: Signals, x_range: tuple[float, float], t_range: tuple[
 
 def verdict_lines(scene: rr.Scene, frame: rr.Frame = rr.LAB) -> tuple[str, ...]:
     """The core's causal verdicts in words, one per rod end that changes away from the key event, each
-    event named or given as ``(t, x)`` of ``frame`` and labelled so (``"(lab t, x) = ..."`` in the lab)."""
+    event named or given as ``(t, x)`` of ``frame`` and labelled so (``"(lab t, x) = ..."`` in the lab);
+    for a change without a cause (a general velocity change), why it has none."""
     verdicts = scene.causal_verdicts(frame=frame)
     if verdicts:
         return tuple(v.text[:1].upper() + v.text[1:] for v in verdicts)
+    if scene.cause() is not None:
+        return ()
+    motion = scene.rods[0].motion
+    key = _spec(scene, _key_event(scene)[0])
+    if motion.velocity_initial.value * motion.velocity_final.value < 0.0:
+        origin = (
+            "The scene's origin is where the left end, midway through its change, is momentarily at rest in "
+            "the lab (the vertex of its hyperbola): nothing happens there that could cause the change."
+        )
+    else:
+        origin = (
+            "Nothing happens at the scene's origin: it is where the left end would be at rest in the lab if "
+            "its hyperbola were continued (its vertex), and the rod never passes through it."
+        )
     return (
-        "A general velocity change has no single cause: its origin is the vertex of the hyperbolas, "
-        "where nothing happens. The signal shown leaves where the left end starts to change.",
+        f"{origin} A general velocity change has no single cause: its ends start changing velocity at "
+        f"spacelike-separated events. The light shown leaves where the {_side(key.end)} end starts.",
     )
 
 

@@ -154,10 +154,11 @@ class Chart:
 
 
 def event_label(name: str) -> str:
-    """The paper's notation: ``T_1'`` -> ``T'<sub>1</sub>``, ``-T_F`` -> ``−T<sub>F</sub>``."""
+    """The paper's notation: ``T_1'`` -> ``T′<sub>1</sub>`` (the prime as the lesson writes it),
+    ``-T_F`` -> ``−T<sub>F</sub>``."""
     sign = "−" if name.startswith("-") else ""
     core = name.lstrip("-")
-    prime = "'" if core.endswith("'") else ""
+    prime = "′" if core.endswith("'") else ""
     core = core.rstrip("'")
     if "_" in core:
         head, sub = core.split("_", 1)
