@@ -68,7 +68,7 @@ def bench_rebuild() -> dict[str, float]:
         for kind in rr.scene_descriptions():
             session.change(Settings(kind))
             times = []
-            for new in sweep_settings(session.settings):
+            for new in sweep_settings(session.state.settings):
                 t0 = time.perf_counter()
                 session.change(new)  # what a slider's callback does
                 times.append(time.perf_counter() - t0)
@@ -124,7 +124,7 @@ def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
             session = tab.session
             for kind in kinds or tuple(rr.scene_descriptions()):
                 session.change(Settings(kind))
-                sweep = sweep_settings(session.settings)
+                sweep = sweep_settings(session.state.settings)
                 for new in sweep:
                     session.change(new)
                 session.change(Settings(kind))
@@ -176,7 +176,7 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15, runtime: bool = False)
     redraws: list[float] = []
     with App(port=0) as app, light_tab(app, RuntimeClient if runtime else LightClient) as tab:
         session, client, loop = tab.session, tab.client, tab.loop
-        wait_until(lambda: "V" in client.gui_uuid and session.runtime_ready == runtime, timeout=60)
+        wait_until(lambda: "V" in client.gui_uuid and session.player.ready == runtime, timeout=60)
         connection = app.server._websock_server._live_connections[session.client.client_id]
         clock = SocketClock(connection)
         handled = session.messages_handled
@@ -208,7 +208,7 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15, runtime: bool = False)
             loop.run(client.send_raw(message))
             wait_until(lambda h=handled: session.messages_handled > h, interval=0.005)
             session.change = change  # type: ignore[method-assign]
-            assert session.settings == v.settings, (session.settings, v.settings)
+            assert session.state.settings == v.settings, (session.state.settings, v.settings)
             t_in = clock.received[n_in]
 
             def answered(t: float = t_in) -> bool:  # sent, then quiet for ``quiet`` s

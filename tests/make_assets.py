@@ -49,7 +49,7 @@ class _Tab:
         self.page.goto(app.url)
         self.page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
         self.session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
-        wait_until(lambda: self.session.drawn is not None, timeout=60)
+        wait_until(lambda: self.session.painter.drawn is not None, timeout=60)
         for button in self.page.locator(".mantine-Notification-root button").all():
             button.click()  # the headless browser's "software WebGL" notice
 
@@ -57,7 +57,7 @@ class _Tab:
         """``settings`` paused at ``now`` (by default halfway between the scene's first and last event)."""
         with self.session.lock:
             self.session.change(settings, refit=True)
-            drawn = self.session.drawn
+            drawn = self.session.painter.drawn
             assert drawn is not None and drawn.resolved.scene.kind == settings.scene, settings
             if now is None:
                 times = [t for t, _ in drawn.resolved.scene.events_in(frame=drawn.resolved.frame).values()]
@@ -65,20 +65,20 @@ class _Tab:
             self.session.seek(now)
 
     def presenter(self, on: bool) -> None:
-        if self.session.presenter != on:
+        if self.session.state.presenter != on:
             self.page.evaluate("() => document.activeElement && document.activeElement.blur()")
             self.page.keyboard.press("f")
-            wait_until(lambda: self.session.presenter == on, timeout=60)
+            wait_until(lambda: self.session.state.presenter == on, timeout=60)
 
     def photograph(self, path: Path) -> None:
         """Once laid out for the canvas as it is now and no longer changing."""
 
         def laid_out() -> bool:  # for the canvas as the page has it: the panel docked, or minimised
-            layout, size = self.session.layout, self.session.canvas_size
+            layout, size = self.session.painter.layout, self.session.painter.canvas_size
             if layout is None or (layout.width, layout.height) != (size.width, size.height):
                 return False
             wide = layout.width > 0.9 * self.viewport["width"]
-            return wide if self.session.presenter else size.measured and not wide
+            return wide if self.session.state.presenter else size.measured and not wide
 
         wait_until(laid_out, timeout=60)
         shots: list[bytes] = [b""]
@@ -180,7 +180,7 @@ def lesson_screenshot(path: Path, step: int = LESSON_STEP, now: float = LESSON_N
         tab.session.go_to_step(step)
         tab.presenter(True)
         with tab.session.lock:
-            if tab.session.playback.playing:
+            if tab.session.state.playback.playing:
                 tab.session.perform(Action.TOGGLE_PLAY)
             tab.session.seek(now)
         tab.photograph(path)
@@ -203,7 +203,7 @@ def dark_screenshot(path: Path, viewport: dict[str, int] = SCREENSHOT) -> None:
         tab.show(presets()["Fig. 3: collision, M2 = 2 M1"], 0.15)
         tab.presenter(True)
         tab.page.keyboard.press("t")
-        wait_until(lambda: tab.session.shade == "dark", timeout=60)
+        wait_until(lambda: tab.session.state.shade == "dark", timeout=60)
         tab.photograph(path)
         browser.close()
 

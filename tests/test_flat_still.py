@@ -119,18 +119,18 @@ def test_a_canvas_that_keeps_up_never_gets_the_image(tab: tuple[Session, Recorde
     wait_until(lambda: sum(t > image_due for t in client.stats.lane_times) >= 10, timeout=30)
     with session.lock:
         session.toggle_play()
-        assert session.renderer.flat_version is None and session.renderer.vectors_shown
+        assert session.painter.renderer.flat_version is None and session.painter.renderer.vectors_shown
     assert not any(m.get("name") == "/page/flat" for m in client.messages)
 
 
 @pytest.mark.slow  # a served tab
 def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: tuple[Session, Recorder]) -> None:
     session, client = tab
-    r = session.renderer
+    r = session.painter.renderer
     with session.lock:
         # the browser lowered its resolution: its frames come slow
-        session.canvas_size = replace(session.canvas_size, resolution=0.75)
-        session.still_image.slow_canvas = True
+        session.painter.canvas_size = replace(session.painter.canvas_size, resolution=0.75)
+        session.painter.still_image.slow_canvas = True
         session.toggle_play()
     roots = ("/page/static", "/page/static_dots", "/page/text")
     wait_until(lambda: all(_visibility(client.messages, root)[-1:] == [False] for root in roots), timeout=30)
@@ -139,7 +139,7 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
     images = [m for m in client.messages if m["type"] == "ImageMessage" and m["name"] == "/page/flat"]
     assert len(images) == 1
     png = Image.open(io.BytesIO(images[0]["props"]["_data"]))
-    layout = session.layout
+    layout = session.painter.layout
     assert layout is not None
     # drawn at the canvas' rendered pixels: 0.75 image px per page px, the diagrams' width or so
     assert 0.5 * 0.75 * layout.width < png.size[0] <= 0.75 * layout.width + 1
@@ -167,12 +167,12 @@ def test_the_same_canvas_at_a_lower_resolution_marks_it_slow(tab: tuple[Session,
     a canvas slow; a new size at another resolution (a window moved to another screen) is not."""
     session, _ = tab
     with session.lock:
-        w, h = session.canvas_size.width, session.canvas_size.height
+        w, h = session.painter.canvas_size.width, session.painter.canvas_size.height
         session._resize(CanvasSize.measured_by_page(w + 10, h, 1.0))  # pyright: ignore[reportPrivateUsage]
         session._resize(CanvasSize.measured_by_page(w, h, 2.0))  # pyright: ignore[reportPrivateUsage]
-        assert not session.still_image.slow_canvas
+        assert not session.painter.still_image.slow_canvas
         session._resize(CanvasSize.measured_by_page(w, h, 1.5))  # pyright: ignore[reportPrivateUsage]
-        assert session.still_image.slow_canvas
+        assert session.painter.still_image.slow_canvas
 
 
 def test_the_off_switch_keeps_a_slow_canvas_drawing_its_lines() -> None:

@@ -114,21 +114,21 @@ def test_followers_share_one_painting_per_canvas_and_get_their_own_back() -> Non
                 loop.start(c.run(3600))
                 wait_until(lambda c=c: c.report_uuid is not None and c.still_frames, timeout=60)
             sessions = wait_until(lambda: list(app.sessions.values()) if len(app.sessions) == 3 else None)
-            wait_until(lambda: all(s.runtime_ready for s in sessions), timeout=60)
+            wait_until(lambda: all(s.player.ready for s in sessions), timeout=60)
             made = app.paintings.made
             before = [len(c.still_frames) for c in clients]
             loop.run(clients[0].set_value("Next step", True))
             followers = sessions[1:]
-            wait_until(lambda: all(s.step_index == 1 and s.painting is not None for s in followers), timeout=60)
+            wait_until(lambda: all(s.state.step == 1 and s.painter.painting is not None for s in followers), timeout=60)
             wait_until(lambda: all(len(c.still_frames) > b for c, b in zip(clients, before, strict=True)), timeout=60)
             assert app.paintings.made == made + 1  # the leader's, then every follower's (one canvas size)
-            assert followers[0].painting is followers[1].painting
-            assert all(s.renderer.still_lent for s in followers) and not sessions[0].renderer.still_lent
+            assert followers[0].painter.painting is followers[1].painter.painting
+            assert all(s.painter.renderer.still_lent for s in followers) and not sessions[0].painter.renderer.still_lent
             assert all(c.pages and c.pages[-1][1] for c in clients[1:]) and not clients[0].pages
             # a follower's own move (a layer): its own picture comes back, the shared page goes
-            followers[0].set_layer(Layer.SIGNALS, Layer.SIGNALS not in followers[0].settings.layers)
+            followers[0].set_layer(Layer.SIGNALS, Layer.SIGNALS not in followers[0].state.settings.layers)
             wait_until(lambda: clients[1].pages[-1] == (clients[1].pages[-1][0], False), timeout=30)
-            assert followers[0].painting is None and not followers[0].renderer.still_lent
+            assert followers[0].painter.painting is None and not followers[0].painter.renderer.still_lent
             errors: list[Any] = [e for c in clients for e in c.stats.errors]
             assert not errors and app.errors == 0
             for c in clients:

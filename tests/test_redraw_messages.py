@@ -120,20 +120,22 @@ def test_a_redraw_with_auto_fit_sends_no_camera_when_it_fits_and_a_reset_always_
 ) -> None:
     session, client = tab
     assert session.controls.fit.value  # "Auto-fit view" is on
-    layout = session.layout
+    layout = session.painter.layout
     assert layout is not None
-    pose = session.renderer.pose(layout)
+    pose = session.painter.renderer.pose(layout)
     camera = session.client.camera
     np.testing.assert_allclose(camera.position, pose.position, atol=1e-9)
     # a slider's redraw: the camera is where the page fits, nothing to send
-    assert camera_messages_of(session, client, lambda: session.change(session.settings.with_value("v", 0.5))) == []
+    assert (
+        camera_messages_of(session, client, lambda: session.change(session.state.settings.with_value("v", 0.5))) == []
+    )
     # key R: the pose is sent whatever the server last heard (the browser may have moved since)
     reset = camera_messages_of(session, client, lambda: session.perform(Action.RESET_VIEW))
     assert "SetCameraPositionMessage" in reset and "SetCameraLookAtMessage" in reset
     # the browser reports an orbit away: the next redraw brings the camera back
     with session.lock:
         camera.position = np.asarray(pose.position) + np.array([50.0, 0.0, 0.0])
-    back = camera_messages_of(session, client, lambda: session.change(session.settings.with_value("v", 0.7)))
+    back = camera_messages_of(session, client, lambda: session.change(session.state.settings.with_value("v", 0.7)))
     assert "SetCameraPositionMessage" in back
     np.testing.assert_allclose(camera.position, pose.position, atol=1e-9)
     np.testing.assert_allclose(camera.look_at, pose.look_at, atol=1e-9)

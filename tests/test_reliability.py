@@ -145,29 +145,29 @@ def test_hostile_slider_values_are_refused_on_the_server(harness: Harness, label
         harness.connect()
     client = harness.clients[0]
     session = next(s for s in harness.app.sessions.values() if not s.closed)
-    scene_before = session.drawn.resolved.scene  # type: ignore[union-attr]
-    settings_before = session.settings
+    scene_before = session.painter.drawn.resolved.scene  # type: ignore[union-attr]
+    settings_before = session.state.settings
     message = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid[label], "updates": {"value": value}}
     with session.lock:  # a refused number left in a box by the example before is put back, the notice cleared
         for p, control in session.controls.parameters.items():
-            v = session.settings.parameters().get(p.name, p.default)
+            v = session.state.settings.parameters().get(p.name, p.default)
             control.slider.value = control.entry.to_slider(v if v is not None else control.entry.lo)
             if control.box is not None:
                 control.box.value = control.entry.text(v if v is not None else control.entry.lo)
-        session.controls.speed.show(session.playback.speed)
-        session.controls.beta.show(session.settings.beta)
+        session.controls.speed.show(session.state.playback.speed)
+        session.controls.beta.show(session.state.settings.beta)
         session.refuse("")
     handled = session.messages_handled
     answered(harness, session, client.send_raw(message))
-    assert session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
-    assert session.settings == settings_before
+    assert session.painter.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
+    assert session.state.settings == settings_before
     if session.messages_handled > handled:  # the session checked it (viser could cast it): a notice names it
-        assert session.notice.startswith(f"{ENTRIES[label].label} = "), session.notice
+        assert session.state.notice.text.startswith(f"{ENTRIES[label].label} = "), session.state.notice.text
     for control in session.controls.parameters.values():
         assert isinstance(control.slider.value, float) and math.isfinite(control.slider.value)
         assert control.box is None or isinstance(control.box.value, str)
-    for name, value_now in session.settings.values:
-        control = session.controls.control_for(session.settings, name)
+    for name, value_now in session.state.settings.values:
+        control = session.controls.control_for(session.state.settings, name)
         if control is None or value_now is None:
             continue
         typed = control.slider.label == label and not control.entry.is_log and math.isfinite(as_viser_casts(value))
@@ -181,8 +181,8 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
     _, bystander = harness.connect()
     client, session = harness.connect()
     # a custom frame: a refused Frame value must put the dropdown back on it
-    session.change(replace(session.settings, frame=CUSTOM_FRAME, beta=0.3))
-    scene_before = session.drawn.resolved.scene  # type: ignore[union-attr]
+    session.change(replace(session.state.settings, frame=CUSTOM_FRAME, beta=0.3))
+    scene_before = session.painter.drawn.resolved.scene  # type: ignore[union-attr]
     for label, value in (
         ("Scene", "Warp drive"),
         ("Frame", "../../etc/passwd"),
@@ -190,19 +190,19 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
     ):
         message = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid[label], "updates": {"value": value}}
         answered(harness, session, client.send_raw(message))
-        assert session.notice.startswith(f"{label} = {value!r} refused"), session.notice
+        assert session.state.notice.text.startswith(f"{label} = {value!r} refused"), session.state.notice.text
     # viser makes whatever a checkbox gets a bool ("" is False): nothing to refuse, the loop is off
     message = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Loop"], "updates": {"value": ""}}
     answered(harness, session, client.send_raw(message))
-    assert session.playback.loop is False
+    assert session.state.playback.loop is False
     # an update of a property that is not a value: viser refuses it (one line in the log, counted)
     nope = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid["V"], "updates": {"nope": 1}}
     answered(harness, session, client.send_raw(nope))
     probe = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"], "updates": {"value": 1.7}}
     answered(harness, session, client.send_raw(probe))
-    assert session.playback.speed == 1.7
+    assert session.state.playback.speed == 1.7
     assert not session.closed  # refused values leave the tab connected, with its last valid scene
-    assert session.controls.frame.value == CUSTOM_FRAME and session.drawn.resolved.frame.beta == 0.3  # type: ignore[union-attr]
+    assert session.controls.frame.value == CUSTOM_FRAME and session.painter.drawn.resolved.frame.beta == 0.3  # type: ignore[union-attr]
     # Message types the server does not know (an upload with a path in its name: this app has no
     # upload control; a made-up type) make viser drop that one connection. Each is the last
     # message on its connection: the server may close the socket before another could be sent.
@@ -228,7 +228,7 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
     # each dropped connection is one line in the server's log, never a traceback
     assert len(dropped()) >= 2 and all(r.exc_info is None and "\n" not in r.getMessage() for r in dropped())
     assert any("KeyError: 'NoSuchMessage'" in r.getMessage() for r in dropped())
-    assert session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
+    assert session.painter.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
     assert session.controls.scene.value in session.controls.scene.options
     assert session.controls.frame.value in session.controls.frame.options
     # where "../../pwned.txt" could land relative to the server's working directory (not a walk of
@@ -239,13 +239,13 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
     # everyone else is served: the tab that was open all along, and a new one
     assert not bystander.closed and bystander in harness.app.sessions.values()
     _, other = harness.connect()
-    assert other.drawn is not None
+    assert other.painter.drawn is not None
 
 
 def test_a_client_cannot_reach_another_session(harness: Harness) -> None:
     a, session_a = harness.connect()
     b, session_b = harness.connect()
-    v_b = session_b.settings.value("v")
+    v_b = session_b.state.settings.value("v")
     uuid_of_b = b.gui_uuid["V"]  # learnt by the attacker somehow
     assert uuid_of_b != a.gui_uuid["V"]
     harness.run(a.send_raw({"type": "GuiUpdateMessage", "uuid": uuid_of_b, "updates": {"value": 0.31}}))
@@ -253,15 +253,15 @@ def test_a_client_cannot_reach_another_session(harness: Harness) -> None:
     # message before it has been dispatched too (to nobody)
     probe = {"type": "GuiUpdateMessage", "uuid": a.gui_uuid["Speed"], "updates": {"value": 2.5}}
     answered(harness, session_a, a.send_raw(probe))
-    assert session_b.settings.value("v") == v_b and session_b.messages_handled == 0
-    assert session_a.settings.value("v") != 0.31
+    assert session_b.state.settings.value("v") == v_b and session_b.messages_handled == 0
+    assert session_a.state.settings.value("v") != 0.31
     # nor press another tab's keys: b's play key, triggered by a, plays nothing; a's own plays a
     play = "Play / pause"
     assert b.command_uuid[play] != a.command_uuid[play]
     harness.run(a.send_raw({"type": "CommandTriggerMessage", "uuid": b.command_uuid[play]}))
     harness.run(a.send_raw({"type": "CommandTriggerMessage", "uuid": a.command_uuid[play]}))
-    wait_until(lambda: session_a.playback.playing)
-    assert not session_b.playback.playing
+    wait_until(lambda: session_a.state.playback.playing)
+    assert not session_b.state.playback.playing
     session_a.perform(Action.TOGGLE_PLAY)
 
 
@@ -366,7 +366,7 @@ def test_a_flooding_client_is_dropped_and_the_others_keep_playing() -> None:
         assert all(not s.closed for _, s in readers) and all(c.stats.errors == [] for c, _ in readers)
         h.clients.remove(flooder)
         _, newcomer = h.connect()  # the room still takes new tabs
-        assert newcomer.drawn is not None
+        assert newcomer.painter.drawn is not None
         assert h.app.errors == 0
     finally:
         h.close()
@@ -394,7 +394,7 @@ def test_a_browser_paced_client_is_not_dropped() -> None:
         h.run(drag_and_orbit())
         probe = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"], "updates": {"value": 2.25}}
         answered(h, session, client.send_raw(probe))
-        assert session.playback.speed == 2.25
+        assert session.state.playback.speed == 2.25
         assert h.app.floods == 0 and not session.closed
     finally:
         h.close()

@@ -175,12 +175,12 @@ def test_serve_with_a_scene_opens_every_tab_on_that_state() -> None:
     assert start is not None and args.port == 0
     assert start == parse_scenario(" ".join(line))  # the app's scenario box reads the same line
     with App(port=0, start=start) as app, light_tab(app) as tab:
-        session, drawn = tab.session, tab.session.drawn
-        assert session.settings == start.settings and drawn is not None
+        session, drawn = tab.session, tab.session.painter.drawn
+        assert session.state.settings == start.settings and drawn is not None
         assert drawn.resolved.scene.parameters["mass2"] == 3.0
         assert drawn.resolved.frame.beta == 0.4
-        assert session.settings.layers == frozenset(Layer)
-        assert session.playback.now == 0.25 and not session.playback.playing
+        assert session.state.settings.layers == frozenset(Layer)
+        assert session.state.playback.now == 0.25 and not session.state.playback.playing
 
 
 def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -200,11 +200,11 @@ def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) 
         with session.lock:
             session._resize(CanvasSize.measured_by_page(1240, 560, 1.0))  # pyright: ignore[reportPrivateUsage]
         session.change(Settings("pole-barn"))
-        layout = session.layout
-        assert layout is not None and layout.lanes[0].title_lines == 2 and session.legend_rows != LEGEND_ROWS
+        layout = session.painter.layout
+        assert layout is not None and layout.lanes[0].title_lines == 2 and session.painter.legend_rows != LEGEND_ROWS
         builds, placements = [], []
         build, place = painting_module.build_drawing, canvas.place_labels
         monkeypatch.setattr(painting_module, "build_drawing", lambda *a, **k: builds.append(1) or build(*a, **k))
         monkeypatch.setattr(canvas, "place_labels", lambda *a, **k: placements.append(1) or place(*a, **k))
-        session.change(session.settings.with_value("v", 0.7))
+        session.change(session.state.settings.with_value("v", 0.7))
         assert (len(builds), len(placements)) == (1, 0)

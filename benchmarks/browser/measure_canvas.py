@@ -47,7 +47,7 @@ COUNTS = """() => [
 
 def _width(session: Any) -> float:
     """The width the tab's page is laid out for (0 before it is)."""
-    return 0.0 if session.layout is None else float(session.layout.width)
+    return 0.0 if session.painter.layout is None else float(session.painter.layout.width)
 
 
 def measure(
@@ -69,7 +69,7 @@ def measure(
             page.goto(app.url)
             page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
             session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
-            wait_until(lambda: session.drawn is not None, timeout=60)
+            wait_until(lambda: session.painter.drawn is not None, timeout=60)
 
             def quiet() -> bool:
                 return bool(received) and time.monotonic() - received[-1][0] > 1.0
@@ -81,12 +81,12 @@ def measure(
             if presenter:
                 page.evaluate("() => document.activeElement && document.activeElement.blur()")
                 page.keyboard.press("f")
-                wait_until(lambda: session.presenter and _width(session) > 0.9 * width, timeout=60)
+                wait_until(lambda: session.state.presenter and _width(session) > 0.9 * width, timeout=60)
             with session.lock:
                 session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
-                layout = session.layout
+                layout = session.painter.layout
                 assert layout is not None
-                smallest = min([t.px for t in session.renderer.still.texts] + [layout.theme.text_px])
+                smallest = min([t.px for t in session.painter.renderer.still.texts] + [layout.theme.text_px])
                 session.toggle_play()
             time.sleep(warm)  # warm (viser's adaptive resolution steps every 2.5 s at most)
             f0, k0, m0 = page.evaluate(COUNTS)
@@ -97,7 +97,7 @@ def measure(
             if presenter:
                 page.evaluate("() => document.activeElement && document.activeElement.blur()")
                 page.keyboard.press("f")
-                wait_until(lambda: not session.presenter and _width(session) < 0.9 * width, timeout=60)
+                wait_until(lambda: not session.state.presenter and _width(session) < 0.9 * width, timeout=60)
             time.sleep(1.0)
             redraws = []
             uid = page.locator('label:text-is("V1")').get_attribute("for")

@@ -73,9 +73,11 @@ class AppPage:
         self.page.wait_for_selector("label:text-is('Scene')", timeout=60_000)
         new = wait_until(lambda: set(app.sessions) - before)
         self.session: Session = app.sessions[min(new)]
-        wait_until(lambda: self.session.drawn is not None and self.session.layout is not None, timeout=60)
+        wait_until(
+            lambda: self.session.painter.drawn is not None and self.session.painter.layout is not None, timeout=60
+        )
         # the page's playback runtime draws the moving parts (the server only its answers' frames)
-        wait_until(lambda: self.session.runtime_ready, timeout=60)
+        wait_until(lambda: self.session.player.ready, timeout=60)
         for button in self.page.locator(".mantine-Notification-root button").all():
             button.click()
 
@@ -123,12 +125,12 @@ class AppPage:
     # ---------------------------------------------------------------- reading the page
     def texts(self) -> list[str]:
         """Every text the canvas shows (the diagrams' titles, numbers, event names, legend)."""
-        r = self.session.renderer
+        r = self.session.painter.renderer
         return [t[0] for t in (*r.static_texts.shown, *r.axis_names.shown, *r.titles.shown)]
 
     def page_to_pixel(self, x: float, z: float) -> tuple[float, float]:
         """A page point (px, z up) as a canvas pixel (column, row): the camera makes one page px one CSS px."""
-        layout = self.session.layout
+        layout = self.session.painter.layout
         assert layout is not None
         return x, layout.height - z
 
@@ -185,10 +187,10 @@ def rod_runs(row: np.ndarray, color: str) -> list[tuple[int, int]]:
 def measured_rods(tab: AppPage, img: np.ndarray) -> list[list[tuple[int, int]]]:
     """Each lane's rods as drawn: [lane][rod] = (left, right) pixel columns, found on the row of
     the lane's rod axis (ticks and the origin mark drawn over a rod split it: runs are joined)."""
-    layout = tab.session.layout
+    layout = tab.session.painter.layout
     assert layout is not None
     out = []
-    for place, lane in zip(layout.lanes, tab.session.renderer_lanes, strict=True):
+    for place, lane in zip(layout.lanes, tab.session.painter.renderer_lanes, strict=True):
         _, row = tab.page_to_pixel(0.0, place.rod_z + 0.25 * place.rod_px)
         found = []
         for r, color in zip(range(lane.ends.shape[0]), ("blue", "orange"), strict=False):
@@ -242,13 +244,13 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     now = 0.4
     default_scene = tab.canvas()
     show(tab, settings, now)
-    scene = tab.session.drawn.resolved.scene  # type: ignore[union-attr]
-    frame = tab.session.drawn.resolved.frame  # type: ignore[union-attr]
+    scene = tab.session.painter.drawn.resolved.scene  # type: ignore[union-attr]
+    frame = tab.session.painter.drawn.resolved.frame  # type: ignore[union-attr]
     img = tab.canvas_after(default_scene)
     tab.page.screenshot(path=str(shots / "collision_beta_0.8_t_0.4.png"))
     found = measured_rods(tab, img)
     separation = []
-    for lane, runs, lane_frame in zip(tab.session.renderer_lanes, found, (rr.LAB, frame), strict=True):
+    for lane, runs, lane_frame in zip(tab.session.painter.renderer_lanes, found, (rr.LAB, frame), strict=True):
         x = scene.positions(np.array([now]), frame=lane_frame)[:, :, 0]
         x_lab = scene.positions(np.array([now]), frame=rr.LAB)[:, :, 0]
         for r in range(2):
@@ -288,7 +290,7 @@ def test_rods_stay_large_at_the_sliders_extremes(
     show(tab, settings, now)
     img = tab.canvas_after(before)
     tab.page.screenshot(path=str(shots / f"{name}.png"))
-    layout = tab.session.layout
+    layout = tab.session.painter.layout
     assert layout is not None
     rest = np.array([rod.motion.length for rod in d.resolved.scene.rods])
     for place, runs in zip(layout.lanes, measured_rods(tab, img), strict=True):
@@ -307,16 +309,16 @@ def build_drawing_for(settings: Settings) -> Any:
 
 
 def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
-    before_charts = tab.session.drawn.charts  # type: ignore[union-attr]
-    before_velocity = tab.session.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
+    before_charts = tab.session.painter.drawn.charts  # type: ignore[union-attr]
+    before_velocity = tab.session.painter.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
     img = tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.type_into_slider("V", 0.85)
-    wait_until(lambda: tab.session.settings.value("v") == 0.85)
+    wait_until(lambda: tab.session.state.settings.value("v") == 0.85)
     after = tab.canvas_after(img)
-    assert tab.session.drawn.resolved.scene.final_velocities != before_velocity  # type: ignore[union-attr]
-    assert all(a is not b for a, b in zip(tab.session.drawn.charts, before_charts, strict=True))  # type: ignore[union-attr]
+    assert tab.session.painter.drawn.resolved.scene.final_velocities != before_velocity  # type: ignore[union-attr]
+    assert all(a is not b for a, b in zip(tab.session.painter.drawn.charts, before_charts, strict=True))  # type: ignore[union-attr]
     # the diagrams' area of the canvas changed (the curves follow V), not only the lanes
-    layout = tab.session.layout
+    layout = tab.session.painter.layout
     assert layout is not None
     top = round(layout.height - layout.charts[0].outer.z1)
     assert _changed_fraction(after[top:], img[top:]) > 1e-3
@@ -334,10 +336,14 @@ def test_a_high_density_screen_gets_the_page_laid_out_in_css_px(browser: Any, ap
             "() => { const c = document.querySelector('canvas[data-engine]'); return [c.clientWidth, c.clientHeight]; }"
         )
         s = tab.session
-        wait_until(lambda: s.layout is not None and (s.layout.width, s.layout.height) == (css[0], css[1]))
+        wait_until(
+            lambda: (
+                s.painter.layout is not None and (s.painter.layout.width, s.painter.layout.height) == (css[0], css[1])
+            )
+        )
         camera = s.client.camera
         assert abs(camera.image_height - density * css[1]) <= 1.5  # what viser alone would have laid out in
-        assert s.canvas_size.measured
+        assert s.painter.canvas_size.measured
         assert not tab.page.locator(f'label:text-is("{CANVAS_REPORT_LABEL}")').is_visible()  # the box is hidden
         assert tab.errors == []
     finally:
@@ -349,10 +355,10 @@ def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) 
     show(tab, Settings("rod-collision", frame="lab"), 0.2)
     img0 = tab.canvas_after(default_scene)
     tab.choose("Frame", "rod 2 after")
-    wait_until(lambda: tab.session.drawn.resolved.frame.name == "rod 2 after")  # type: ignore[union-attr]
+    wait_until(lambda: tab.session.painter.drawn.resolved.frame.name == "rod 2 after")  # type: ignore[union-attr]
     img1 = tab.canvas_after(img0)
     tab.page.screenshot(path=str(shots / "frame_rod2_after.png"))
-    layout = tab.session.layout
+    layout = tab.session.painter.layout
     assert layout is not None
     lab, frame = layout.lanes
     lab_rows = slice(round(layout.height - lab.band.z1), round(layout.height - lab.band.z0))
@@ -401,14 +407,14 @@ def test_every_text_is_at_least_14_px(tab: AppPage, shots: Path) -> None:
     from rigidrel_app.backends.viser import LABEL_EM_PX
 
     tab.page.set_viewport_size({"width": 1280, "height": 720})
-    wait_until(lambda: tab.session.layout is not None and tab.session.layout.height == 720)
-    r = tab.session.renderer
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.height == 720)
+    r = tab.session.painter.renderer
     sizes = [t[2] * LABEL_EM_PX for t in (*r.static_texts.shown, *r.axis_names.shown, *r.titles.shown)]
     assert min(sizes) >= 14.0, min(sizes)
     show(tab, Settings(), 0.3)
     img = tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.page.screenshot(path=str(shots / "text_1280x720.png"))
-    layout = tab.session.layout
+    layout = tab.session.painter.layout
     assert layout is not None
     place = layout.lanes[0]
     _, top = tab.page_to_pixel(0.0, place.ruler_z - place.tick_px - 1.0)
@@ -425,8 +431,8 @@ def test_playback_keeps_lanes_and_diagrams_at_one_instant(tab: AppPage, shots: P
     """While playing, the lanes' clock and the diagrams' now-lines are one update; paused, the lab
     diagram's now-line is on the canvas at the lanes' t."""
     tab.page.click("button:has-text('Play')")
-    wait_until(lambda: tab.session.runtime_playing)  # the browser plays the state's timeline
-    f = tab.session.chart_frames[0]
+    wait_until(lambda: tab.session.player.playing)  # the browser plays the state's timeline
+    f = tab.session.painter.chart_frames[0]
     seen = set()
     for _ in range(20):  # during playback, the page as the browser holds it: both from one frame
         title, zs = tab.title_and_now_lines()
@@ -442,10 +448,10 @@ def test_playback_keeps_lanes_and_diagrams_at_one_instant(tab: AppPage, shots: P
     assert len(seen) > 5  # it played
     tab.page.click("button:has-text('Pause')")
     wait_until(lambda: tab.session.playback_settled)
-    now = tab.session.playback.now
+    now = tab.session.state.playback.now
     img = tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.page.screenshot(path=str(shots / "paused.png"))
-    f = tab.session.chart_frames[0]
+    f = tab.session.painter.chart_frames[0]
     _, z_now = f.px(np.array([0.0]), np.array([now]))
     _, row = tab.page_to_pixel(0.0, float(z_now[0]))
     x0, _ = tab.page_to_pixel(f.plot.x0 + 2, 0.0)
@@ -461,18 +467,20 @@ def test_a_play_without_loop_stops_exactly_at_the_end(tab: AppPage) -> None:
     with s.lock:
         s.set_playback(
             replace(
-                s.playback.seek(s.playback.window[1] - 0.05 * (s.playback.window[1] - s.playback.window[0])),
+                s.state.playback.seek(
+                    s.state.playback.window[1] - 0.05 * (s.state.playback.window[1] - s.state.playback.window[0])
+                ),
                 loop=False,
                 speed=4.0,
             )
         )
     tab.page.click("button:has-text('Play')")
-    wait_until(lambda: s.runtime_playing)
-    wait_until(lambda: not s.playback.playing, timeout=30)
+    wait_until(lambda: s.player.playing)
+    wait_until(lambda: not s.state.playback.playing, timeout=30)
     wait_until(lambda: s.playback_settled)
-    end = s.playback.window[1]
+    end = s.state.playback.window[1]
     with s.lock:  # the browser's last frame, the window's end, is where the clock stopped
-        assert s.playback.now == end
+        assert s.state.playback.now == end
     # the page shows it once viser has drawn the runtime's last frame
     wait_until(lambda: (tab.nodes("/page/title/0")[0] or {}).get("props", {}).get("text", "").startswith(
         f"lab frame:   t = {end:+.3f}"))  # fmt: skip
@@ -481,20 +489,20 @@ def test_a_play_without_loop_stops_exactly_at_the_end(tab: AppPage) -> None:
 
 def test_f_toggles_presenter_mode(tab: AppPage, shots: Path) -> None:
     tab.page.set_viewport_size({"width": 1280, "height": 720})
-    wait_until(lambda: tab.session.layout is not None and tab.session.layout.height == 720)
-    normal = tab.session.layout
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.height == 720)
+    normal = tab.session.painter.layout
     assert normal is not None and normal.width < 1000  # the control panel takes its side
     tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
     tab.page.keyboard.press("f")
-    wait_until(lambda: tab.session.presenter)
-    wait_until(lambda: tab.session.layout is not None and tab.session.layout.width > 1200, timeout=30)
-    wide = tab.session.layout
+    wait_until(lambda: tab.session.state.presenter)
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.width > 1200, timeout=30)
+    wide = tab.session.painter.layout
     assert wide is not None and wide.theme.text_px > normal.theme.text_px and wide.theme.line_px > normal.theme.line_px
     tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.page.screenshot(path=str(shots / "presenter_1280x720.png"))
     tab.page.keyboard.press("f")
-    wait_until(lambda: not tab.session.presenter)
-    wait_until(lambda: tab.session.layout is not None and tab.session.layout.width < 1000, timeout=30)
+    wait_until(lambda: not tab.session.state.presenter)
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.width < 1000, timeout=30)
     assert tab.page.locator("label:text-is('Scene')").is_visible()
 
 
@@ -503,9 +511,9 @@ def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
     b = AppPage(browser, app_server)
     try:
         a.type_into_slider("V", 0.3)
-        wait_until(lambda: a.session.settings.value("v") == 0.3)
+        wait_until(lambda: a.session.state.settings.value("v") == 0.3)
         # a's change is complete; b's session has had no control's value at all and still shows the default
-        assert b.session.settings.value("v") == Settings().value("v") and b.session.messages_handled == 0
+        assert b.session.state.settings.value("v") == Settings().value("v") and b.session.messages_handled == 0
         assert a.session is not b.session
         value = b.control("V").locator("[role=slider]").get_attribute("aria-valuenow")
         assert float(value) == pytest.approx(Settings().value("v"))
@@ -516,15 +524,15 @@ def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
 
 def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, shots: Path) -> None:
     tab.choose("Scene", "Rod-rod collision")
-    wait_until(lambda: tab.session.drawn.resolved.scene.kind == "rod-collision")  # type: ignore[union-attr]
-    scene_before = tab.session.drawn.resolved.scene  # type: ignore[union-attr]
+    wait_until(lambda: tab.session.painter.drawn.resolved.scene.kind == "rod-collision")  # type: ignore[union-attr]
+    scene_before = tab.session.painter.drawn.resolved.scene  # type: ignore[union-attr]
     tab.type_into_slider("V2", 0.9)  # faster than V1 = 0.6: the rods never meet
     tab.page.wait_for_selector("text=so that the rods collide", timeout=20_000)
-    assert tab.session.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
+    assert tab.session.painter.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
     tab.page.screenshot(path=str(shots / "notice.png"))
-    assert all(np.isfinite(ln.points).all() for ln in tab.session.renderer.still.lines)  # no NaN drawn
+    assert all(np.isfinite(ln.points).all() for ln in tab.session.painter.renderer.still.lines)  # no NaN drawn
     tab.type_into_slider("V2", -0.3)
-    wait_until(lambda: tab.session.drawn.resolved.scene is not scene_before)  # type: ignore[union-attr]
+    wait_until(lambda: tab.session.painter.drawn.resolved.scene is not scene_before)  # type: ignore[union-attr]
     wait_until(lambda: not tab.page.locator("text=so that the rods collide").is_visible())
 
 
@@ -574,7 +582,7 @@ def test_every_registered_scene_is_in_the_menu_and_draws(tab: AppPage, shots: Pa
     for kind, d in rr.scene_descriptions().items():
         before = tab.canvas()
         tab.choose("Scene", d.title)
-        wait_until(lambda kind=kind: tab.session.drawn.resolved.scene.kind == kind)  # type: ignore[union-attr]
+        wait_until(lambda kind=kind: tab.session.painter.drawn.resolved.scene.kind == kind)  # type: ignore[union-attr]
         for p in d.parameters:
             if p.slider is not None:  # this scene's controls are shown
                 label = tab.page.locator("label").filter(has_text=re.compile(f"^{re.escape(p.label)}$"))

@@ -79,28 +79,28 @@ def test_space_plays_and_pauses_and_the_clock_readout_follows(tab: AppPage, shot
     clock = box(tab, "t, t'")
     start = clock.input_value()
     press(tab, " ")
-    wait_until(lambda: tab.session.playback.playing)
+    wait_until(lambda: tab.session.state.playback.playing)
     wait_until(lambda: clock.input_value() != start)  # the time readout runs
     press(tab, " ")
     wait_until(lambda: tab.session.playback_settled)  # paused where the browser's frame was
-    stopped = tab.session.playback.now
+    stopped = tab.session.state.playback.now
     # paused: the readout shows the clock the rods stopped at, and stays there
     wait_until(lambda: float(clock.input_value()) == pytest.approx(stopped, abs=1e-6))
     tab.page.screenshot(path=str(shots / "paused_by_space.png"))
-    assert tab.session.playback.now == stopped and not tab.session.playback.playing
+    assert tab.session.state.playback.now == stopped and not tab.session.state.playback.playing
 
 
 def test_arrows_step_one_frame(tab: AppPage) -> None:
-    p = tab.session.playback
+    p = tab.session.state.playback
     frame = (p.window[1] - p.window[0]) * p.speed / (PLAY_SECONDS * FRAME_RATE)
     clock = box(tab, "t, t'")
     press(tab, "ArrowRight")
-    wait_until(lambda: tab.session.playback.now == pytest.approx(p.now + frame, abs=1e-12))
+    wait_until(lambda: tab.session.state.playback.now == pytest.approx(p.now + frame, abs=1e-12))
     wait_until(lambda: float(clock.input_value()) == pytest.approx(round(p.now + frame, 6), abs=1e-6))
     press(tab, "ArrowLeft")
     press(tab, "ArrowLeft")
-    wait_until(lambda: tab.session.playback.now == pytest.approx(p.now - frame, abs=1e-12))
-    assert not tab.session.playback.playing
+    wait_until(lambda: tab.session.state.playback.now == pytest.approx(p.now - frame, abs=1e-12))
+    assert not tab.session.state.playback.playing
 
 
 def test_arrows_on_a_focused_slider_move_only_that_slider(tab: AppPage) -> None:
@@ -108,14 +108,14 @@ def test_arrows_on_a_focused_slider_move_only_that_slider(tab: AppPage) -> None:
     playback; the clicker's PageDown still goes to the next figure."""
     uid = tab.control("V").get_attribute("id")
     tab.page.locator(f"[id='{uid}'] [role=slider]").focus()
-    now = tab.session.playback.now
+    now = tab.session.state.playback.now
     tab.page.keyboard.press("ArrowRight")
-    wait_until(lambda: tab.session.settings.value("v") == pytest.approx(0.61))
+    wait_until(lambda: tab.session.state.settings.value("v") == pytest.approx(0.61))
     tab.page.keyboard.press("PageDown")  # the scene's first figure (Fig. 1): V back to 0.6
-    wait_until(lambda: tab.session.settings.overlay and tab.session.settings.value("v") == 0.6)
-    assert tab.session.playback.now == now  # no frame was stepped
+    wait_until(lambda: tab.session.state.settings.overlay and tab.session.state.settings.value("v") == 0.6)
+    assert tab.session.state.playback.now == now  # no frame was stepped
     press(tab, "ArrowRight")  # with nothing focused, → steps
-    wait_until(lambda: tab.session.playback.now > now)
+    wait_until(lambda: tab.session.state.playback.now > now)
 
 
 def test_page_down_and_up_walk_the_scenes_figures(collision: AppPage, shots: Path) -> None:
@@ -123,14 +123,14 @@ def test_page_down_and_up_walk_the_scenes_figures(collision: AppPage, shots: Pat
     wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
     press(tab, "PageDown")  # a clicker's "next"
     wait_until(lambda: tab.control("Paper figure").input_value() == FIG4)
-    assert tab.session.settings.value("mass2") == 0.5
+    assert tab.session.state.settings.value("mass2") == 0.5
     wait_until(lambda: box(tab, "M2/M1").input_value() == "0.5")  # the ratio, not its log
     tab.page.screenshot(path=str(shots / "fig4_by_page_down.png"))
     press(tab, "PageDown")  # past the last figure: nothing happens
     press(tab, "PageUp")
     wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
     wait_until(lambda: box(tab, "M2/M1").input_value() == "2")
-    assert tab.session.settings.value("mass2") == 2.0
+    assert tab.session.state.settings.value("mass2") == 2.0
 
 
 def rod_bounds(img: np.ndarray, lanes: bool = False) -> np.ndarray:
@@ -145,7 +145,7 @@ def rod_bounds(img: np.ndarray, lanes: bool = False) -> np.ndarray:
 
 
 def test_r_and_the_button_reset_the_view(tab: AppPage, shots: Path) -> None:
-    wait_until(lambda: tab.session.drawn is not None)
+    wait_until(lambda: tab.session.painter.drawn is not None)
     home = tab.canvas_after(np.zeros_like(tab.canvas()))  # the default view, settled
     canvas = tab.page.locator("canvas[data-engine]")
     b = canvas.bounding_box()
@@ -174,8 +174,8 @@ def test_r_and_the_button_reset_the_view(tab: AppPage, shots: Path) -> None:
 def test_keys_typed_into_a_box_stay_in_the_box(collision: AppPage) -> None:
     tab = collision
     type_keys(tab, "M2/M1", "r 2")  # a space and an r, typed: neither plays nor resets anything
-    wait_until(lambda: "M2/M1 = 'r 2' refused" in tab.session.notice)
-    assert not tab.session.playback.playing
+    wait_until(lambda: "M2/M1 = 'r 2' refused" in tab.session.state.notice.text)
+    assert not tab.session.state.playback.playing
     assert box(tab, "M2/M1").input_value() == "r 2"
 
 
@@ -193,7 +193,7 @@ def test_the_mass_ratio_is_typed_and_shown_as_a_ratio(collision: AppPage, shots:
     assert not tab.page.locator(f"[id='{uid}'] + .mantine-NumberInput-root").is_visible()  # no box of log10
     for typed, ratio in (("0.01", 0.01), ("100", 100.0), ("0.5", 0.5)):
         type_keys(tab, "M2/M1", typed)
-        wait_until(lambda ratio=ratio: tab.session.drawn.resolved.scene.parameters["mass2"] == ratio)  # type: ignore[union-attr]
+        wait_until(lambda ratio=ratio: tab.session.painter.drawn.resolved.scene.parameters["mass2"] == ratio)  # type: ignore[union-attr]
         wait_until(lambda ratio=ratio: thumb_at(np.log10(ratio)))
         assert box(tab, "M2/M1").input_value() == typed
         wait_until(lambda: notice(tab) == "")  # "0" and "0.0" were refused on the way to 0.01; 0.01 is not
@@ -209,13 +209,13 @@ def test_abc_gives_a_notice_and_a_valid_value_clears_it(collision: AppPage, shot
     assert "[0.01, 100]" in notice(tab) and "rods collide" not in notice(tab)  # the older notice is gone
     tab.page.screenshot(path=str(shots / "abc_refused.png"))
     type_keys(tab, "M2/M1", "3")
-    wait_until(lambda: tab.session.settings.value("mass2") == 3.0)
+    wait_until(lambda: tab.session.state.settings.value("mass2") == 3.0)
     # V2 = 0.9 is still asked for, so the scene still refuses it: its notice is back, not the abc one
     wait_until(lambda: "so that the rods collide" in notice(tab))
     type_keys(tab, "V2", "0")
     # the scene drawn before V2 = 0.9 had V2 = 0 too: wait for the new one, which keeps M2/M1 = 3
-    wait_until(lambda: tab.session.drawn.resolved.scene.parameters["mass2"] == 3.0)  # type: ignore[union-attr]
-    assert tab.session.drawn.resolved.scene.parameters["v2"] == 0.0  # type: ignore[union-attr]
+    wait_until(lambda: tab.session.painter.drawn.resolved.scene.parameters["mass2"] == 3.0)  # type: ignore[union-attr]
+    assert tab.session.painter.drawn.resolved.scene.parameters["v2"] == 0.0  # type: ignore[union-attr]
     wait_until(lambda: notice(tab) == "")
 
 
@@ -240,7 +240,7 @@ def test_typing_key_by_key_gives_the_typed_value(tab: AppPage) -> None:
     """0 is out of V's range [0.01, 0.99]: typing 0.5 must still give 0.5 (a refused keystroke that is
     put back under the typist's fingers turns it into 0.65 or the like), and 1.2 a notice."""
     type_keys(tab, "V", "0.5")
-    wait_until(lambda: tab.session.settings.value("v") == 0.5)
+    wait_until(lambda: tab.session.state.settings.value("v") == 0.5)
     tab.page.keyboard.press("Tab")
     wait_until(lambda: notice(tab) == "")
     assert box(tab, "V").input_value() == "0.5"
@@ -248,14 +248,14 @@ def test_typing_key_by_key_gives_the_typed_value(tab: AppPage) -> None:
     wait_until(lambda: "V = 1.2 refused" in notice(tab) and "[0.01, 0.99]" in notice(tab))
     tab.page.keyboard.press("Tab")
     wait_until(lambda: box(tab, "V").input_value() == "0.5")  # back on the last valid value
-    assert tab.session.settings.value("v") == 0.5 and "V = 1.2 refused" in notice(tab)
+    assert tab.session.state.settings.value("v") == 0.5 and "V = 1.2 refused" in notice(tab)
 
 
 def test_the_figure_menu_follows_the_scene(collision: AppPage, shots: Path) -> None:
     tab = collision
     wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
     tab.choose("Scene", "Constant acceleration")
-    wait_until(lambda: tab.session.settings.scene == "constant-acceleration")
+    wait_until(lambda: tab.session.state.settings.scene == "constant-acceleration")
     wait_until(lambda: tab.control("Paper figure").input_value() == NO_PRESET)
     tab.control("Paper figure").click()
     options = tab.page.locator("[role=option]:visible").all_inner_texts()

@@ -33,18 +33,23 @@ def test_the_image_shows_the_picture_its_nodes_draw(browser: Any, app_server: Ap
         s = tab.session
         show(tab, presets()["Fig. 3: collision, M2 = 2 M1"], 0.0)
         lines = tab.canvas_after(np.zeros_like(tab.canvas()))
-        s.still_image.slow_canvas = True  # as when the browser has lowered its resolution
+        s.painter.still_image.slow_canvas = True  # as when the browser has lowered its resolution
         with s.lock:
             s.toggle_play()
-        wait_until(lambda: s.renderer.flat_version == s.renderer.version and not s.renderer.vectors_shown, timeout=30)
+        wait_until(
+            lambda: (
+                s.painter.renderer.flat_version == s.painter.renderer.version and not s.painter.renderer.vectors_shown
+            ),
+            timeout=30,
+        )
         with s.lock:
             s.toggle_play()
             s.seek(0.0)
-        assert not s.renderer.vectors_shown
+        assert not s.painter.renderer.vectors_shown
         flat = tab.canvas_after(np.zeros_like(lines))
         Image.fromarray(lines.astype(np.uint8)).save(shots / "lines.png")
         Image.fromarray(flat.astype(np.uint8)).save(shots / "image.png")
-        layout = s.layout
+        layout = s.painter.layout
         assert layout is not None
         # the diagrams and the legend: the page below the lanes
         top = round(layout.height - layout.lanes[-1].band.z0)

@@ -93,10 +93,10 @@ def canvas_showing(tab: AppPage, before: np.ndarray, check: Check, timeout: floa
 def pulse_problems(tab: AppPage, img: np.ndarray, now: float) -> list[str]:
     """Each lane's pulse: a bar of the light's colour at the page x where the core's signal is at ``now``."""
     s = tab.session
-    layout, d = s.layout, s.drawn
+    layout, d = s.painter.layout, s.painter.drawn
     assert layout is not None and d is not None and d.signals is not None
     problems = []
-    for k, (place, lane, sig) in enumerate(zip(layout.lanes, s.renderer_lanes, d.signals, strict=True)):
+    for k, (place, lane, sig) in enumerate(zip(layout.lanes, s.painter.renderer_lanes, d.signals, strict=True)):
         cols = np.flatnonzero(light(region(img, tab, place.band, inset=0.0)).any(axis=0))
         x = sig.pulse_positions(now)
         if x.size != 1:
@@ -112,7 +112,7 @@ def test_signals_are_drawn_in_the_diagrams_and_lanes_only_when_asked_for(tab: Ap
     s = tab.session
     first = tab.canvas()
     show(tab, crash(BASE), 0.5)
-    layout = s.layout
+    layout = s.painter.layout
     assert layout is not None
     regions = [layout.charts[0].plot, layout.charts[1].plot, *(lane.band for lane in layout.lanes)]
 
@@ -135,7 +135,7 @@ def test_signals_are_drawn_in_the_diagrams_and_lanes_only_when_asked_for(tab: Ap
         return problems
 
     show(tab, crash(BASE | {Layer.SIGNALS}), 0.5)
-    layout = s.layout  # the legend may take another row
+    layout = s.painter.layout  # the legend may take another row
     assert layout is not None
     on = canvas_showing(tab, off, lambda img: diagrams_lit(img) + pulse_problems(tab, img, 0.5))
     save(on, shots / "signals_on.png")
@@ -155,7 +155,7 @@ def test_hiding_the_world_tubes_and_the_length_panel_empties_their_regions(tab: 
     s = tab.session
     first = tab.canvas()
     show(tab, crash(DEFAULT_LAYERS), 0.5)
-    layout = s.layout
+    layout = s.painter.layout
     assert layout is not None
     plot = layout.charts[2].plot
     middle = slice(round(0.35 * plot.height), round(0.65 * plot.height))  # the hidden panel's note
@@ -191,7 +191,7 @@ def test_hiding_the_world_tubes_and_the_length_panel_empties_their_regions(tab: 
         return problems
 
     show(tab, crash(DEFAULT_LAYERS - {Layer.WORLD_TUBE, Layer.INTERIOR_LINES, Layer.LENGTH_PANEL}), 0.5)
-    assert s.layout == layout  # the panels keep their places (the legend its rows)
+    assert s.painter.layout == layout  # the panels keep their places (the legend its rows)
     bare = canvas_showing(tab, full, hidden)
     save(bare, shots / "no_tubes_no_lengths.png")
     texts = tab.texts()
@@ -202,6 +202,6 @@ def test_hiding_the_world_tubes_and_the_length_panel_empties_their_regions(tab: 
 def test_layers_reach_the_session(tab: AppPage) -> None:
     """The drawing the session keeps is built with the layers asked for (the pixel tests' premise)."""
     show(tab, crash(frozenset(Layer)), 0.2)
-    d: Any = tab.session.drawn
+    d: Any = tab.session.painter.drawn
     assert d.resolved.layers == frozenset(Layer)
     assert d.signals is not None

@@ -55,7 +55,7 @@ class LessonTab:
         self.page.wait_for_selector("label:text-is('Step')", timeout=120_000)  # a busy machine is slow
         new = wait_until(lambda: set(app.sessions) - before, timeout=60)
         self.session: Session = app.sessions[min(new)]
-        wait_until(lambda: self.session.drawn is not None, timeout=60)
+        wait_until(lambda: self.session.painter.drawn is not None, timeout=60)
         for button in self.page.locator(".mantine-Notification-root button").all():
             button.click()
 
@@ -80,7 +80,7 @@ class LessonTab:
 
     def screenshot(self, path: Path) -> None:
         """The page once paused and drawn (two canvases half a second apart the same), for a person to look at."""
-        if self.session.playback.playing:
+        if self.session.state.playback.playing:
             self.session.perform(Action.TOGGLE_PLAY)
         shots = [self.canvas()]
 
@@ -139,22 +139,22 @@ def test_keyboard_walk_through_the_paper_lesson(open_tab: OpenTab, lesson_app: A
     tab = open_tab(lesson_app)
     s = tab.session
     tab.wait_caption(PAPER.steps[0].title)
-    assert s.step_index == 0 and "a′_F = 0.5" in tab.caption()  # a number the core filled in
+    assert s.state.step == 0 and "a′_F = 0.5" in tab.caption()  # a number the core filled in
     tab.screenshot(shots / "step-1-1280.png")
     walk = [("PageDown", 1), ("PageDown", 2), ("ArrowRight", 3), ("PageUp", 2), ("ArrowLeft", 1), ("PageUp", 0)]
     for key, step in walk:
         tab.press(key)
         tab.wait_caption(PAPER.steps[step].title)
-        assert s.step_index == step
+        assert s.state.step == step
         expected = PAPER.steps[step].scenario.settings
-        wait_until(lambda expected=expected: s.settings.values == expected.values, timeout=30)
+        wait_until(lambda expected=expected: s.state.settings.values == expected.values, timeout=30)
     tab.press("PageUp")  # at the first step: stays
-    assert s.step_index == 0
+    assert s.state.step == 0
     # the step list in the panel
     tab.control("Step").click()
     tab.page.locator('[role=option]:has-text("4/15")').first.click()
     tab.wait_caption(PAPER.steps[3].title)
-    assert s.settings.scene == "impulsive-start" and Layer.SIGNALS in s.settings.layers
+    assert s.state.settings.scene == "impulsive-start" and Layer.SIGNALS in s.state.settings.layers
     assert tab.page.locator("label:text-is('Light signals')").count() == 1
     # keys typed into a box stay in the box
     field = tab.text_box("Load")
@@ -162,7 +162,7 @@ def test_keyboard_walk_through_the_paper_lesson(open_tab: OpenTab, lesson_app: A
     field.press("PageDown")
     field.press("ArrowRight")
     field.type("abc")
-    assert field.input_value() == "abc" and s.step_index == 3
+    assert field.input_value() == "abc" and s.state.step == 3
     # presenter mode keeps the caption, larger
     tab.press("f")
     wait_until(lambda: tab.page.locator("#rigidrel-caption .rr-caption-presenter").count() == 1, timeout=30)
@@ -194,7 +194,7 @@ def test_presenter_caption_at_1920(open_tab: OpenTab, lesson_app: App, shots: Pa
     def laid_out_for_the_canvas() -> bool:  # as the page measured it, once the panel has folded away
         box = tab.page.locator("canvas[data-engine]").bounding_box()
         band = tab.page.locator("#rigidrel-caption").bounding_box()
-        size, layout = tab.session.canvas_size, tab.session.layout
+        size, layout = tab.session.painter.canvas_size, tab.session.painter.layout
         return (
             box is not None and band is not None and layout is not None and size.measured
             and box["width"] > 1800 and box["height"] < 1080 - band["height"] + 2
@@ -217,10 +217,13 @@ def test_the_riding_step_rides_its_point(open_tab: OpenTab, lesson_app: App, sho
     tab.page.locator(f'[role=option]:has-text("{k + 1}/{len(PAPER.steps)}")').first.click()
     tab.wait_caption(PAPER.steps[k].title)
     s = tab.session
-    wait_until(lambda: s.drawn is not None and s.drawn.resolved.ride == PAPER.steps[k].ride, timeout=30)
-    wait_until(lambda: len(s.renderer_lanes) == 2 and s.renderer_lanes[1].title.startswith("riding:"), timeout=30)
-    lane = s.renderer_lanes[1]
-    rest = s.drawn.resolved.scene.rods[0].motion.length  # type: ignore[union-attr]
+    wait_until(lambda: s.painter.drawn is not None and s.painter.drawn.resolved.ride == PAPER.steps[k].ride, timeout=30)
+    wait_until(
+        lambda: len(s.painter.renderer_lanes) == 2 and s.painter.renderer_lanes[1].title.startswith("riding:"),
+        timeout=30,
+    )
+    lane = s.painter.renderer_lanes[1]
+    rest = s.painter.drawn.resolved.scene.rods[0].motion.length  # type: ignore[union-attr]
     assert float(np.diff(lane.ends[0])[0]) == pytest.approx(rest, rel=1e-12)
     assert "default frame" not in tab.caption()
     tab.screenshot(shots / f"riding-step-{k + 1}-1280.png")
@@ -237,7 +240,7 @@ def test_follow_the_leading_tab(open_tab: OpenTab, shots: Path) -> None:
         lead.press("PageDown")
         lead.wait_caption(PAPER.steps[2].title)
         other.wait_caption(PAPER.steps[2].title)
-        assert other.session.step_index == 2
+        assert other.session.state.step == 2
         wait_until(lambda: "follow" in other.session.controls.lesson.status.content.lower(), timeout=30)  # type: ignore[union-attr]
 
         def node(tab: Any, name: str) -> dict[str, Any] | None:
@@ -246,12 +249,12 @@ def test_follow_the_leading_tab(open_tab: OpenTab, shots: Path) -> None:
         # the follower shows the step's shared page (its own still picture hidden), the leader its own
         wait_until(lambda: (node(other, "/shared/text/0") or {}).get("visible"), timeout=30)
         assert not (node(other, "/page/static") or {}).get("visible", True)
-        assert node(lead, "/shared") is None and not lead.session.renderer.still_lent
+        assert node(lead, "/shared") is None and not lead.session.painter.renderer.still_lent
         labels = other.page.evaluate(
             "() => Array.from({length: 40}, (_, k) => window.__rigidrelPlayback.node('/shared/text/' + k))"
             ".filter((n) => n && n.visible).map((n) => n.props.text)"
         )
-        assert sorted(labels) == sorted(t.text for t in other.session.painting.still.texts if t.text.strip())  # type: ignore[union-attr]
+        assert sorted(labels) == sorted(t.text for t in other.session.painter.painting.still.texts if t.text.strip())  # type: ignore[union-attr]
         other.page.screenshot(path=str(shots / "follower-shared-page.png"))
         # the other tab moves on its own; then it takes the lead with L
         other.press("L")
@@ -260,7 +263,7 @@ def test_follow_the_leading_tab(open_tab: OpenTab, shots: Path) -> None:
         lead.wait_caption(PAPER.steps[3].title)
         # the new leader draws its own picture again; the shared page is gone from its canvas
         wait_until(lambda: node(other, "/shared") is None, timeout=30)
-        assert not other.session.renderer.still_lent  # its own picture (lines, or their image on a slow canvas)
+        assert not other.session.painter.renderer.still_lent  # its own picture (lines, or their image on a slow canvas)
         other.page.screenshot(path=str(shots / "follower-now-leads.png"))
         assert lead.errors == [] and other.errors == []
     finally:
@@ -282,8 +285,8 @@ def test_a_locked_control_is_disabled_and_says_why(open_tab: OpenTab, shots: Pat
         tab.page.screenshot(path=str(shots / "locked.png"))
         # a value sent for the locked control anyway is refused on the server
         with tab.session.lock:
-            tab.session.change(tab.session.settings.with_value("v", 0.9))
-        assert tab.session.settings.value("v") == 0.6 and "locked by step 1" in tab.session.notice
+            tab.session.change(tab.session.state.settings.with_value("v", 0.9))
+        assert tab.session.state.settings.value("v") == 0.6 and "locked by step 1" in tab.session.state.notice.text
         tab.press("PageDown")
         tab.wait_caption("Free")
         wait_until(lambda: v_thumb.get_attribute("aria-disabled") != "true", timeout=30)
@@ -304,12 +307,12 @@ def test_scenario_box_round_trip_and_a_bad_one(open_tab: OpenTab, lesson_app: Ap
     box.fill(line)
     wait_until(lambda: s.controls.scenario_box.value == line, timeout=30)
     tab.page.locator("button:has-text('Load scenario')").click()
-    wait_until(lambda: s.settings.scene == "rod-collision" and abs(s.playback.now - 0.3) < 1e-9, timeout=30)
-    assert s.settings.layers == {Layer.WORLD_TUBE, Layer.SIGNALS} and s.notice == ""
+    wait_until(lambda: s.state.settings.scene == "rod-collision" and abs(s.state.playback.now - 0.3) < 1e-9, timeout=30)
+    assert s.state.settings.layers == {Layer.WORLD_TUBE, Layer.SIGNALS} and s.state.notice.text == ""
     wait_until(lambda: "now shows another scene" in tab.caption(), timeout=30)  # the step's caption says so
     shown = tab.page.locator("code.rigidrel-scenario")
     wait_until(lambda: shown.inner_text() == line, timeout=30)  # the same line comes back
-    assert parse_scenario(shown.inner_text()).settings == s.settings
+    assert parse_scenario(shown.inner_text()).settings == s.state.settings
     assert not s.controls.layers[Layer.LIGHT_CONE].value and s.controls.layers[Layer.SIGNALS].value
     # a bad line: a notice naming the flag and its range, the state unchanged
     box.fill("rod-collision --v1 1.6")
@@ -318,6 +321,6 @@ def test_scenario_box_round_trip_and_a_bad_one(open_tab: OpenTab, lesson_app: Ap
     notice = tab.page.locator("text=Scenario refused")
     wait_until(lambda: notice.count() == 1 and notice.is_visible(), timeout=30)
     assert "--v1" in notice.inner_text() and "(-1, 1)" in notice.inner_text()
-    assert s.settings.value("v1") == 0.6
+    assert s.state.settings.value("v1") == 0.6
     tab.page.screenshot(path=str(shots / "scenario-refused.png"))
     assert tab.errors == []

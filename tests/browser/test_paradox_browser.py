@@ -40,7 +40,7 @@ def test_pole_barn_shows_both_poles_one_above_the_other(tab: AppPage, shots: Pat
     show(tab, Settings("pole-barn"), 0.5)
     img = tab.canvas_after(before)
     tab.page.screenshot(path=str(shots / "pole_barn_t_0.5.png"))
-    for lane in tab.session.renderer_lanes:
+    for lane in tab.session.painter.renderer_lanes:
         born, signal = lane.boxes[:2]
         upper, lower = _row(tab, img, born.z), _row(tab, img, signal.z)
         assert _covers(rod_runs(upper, "blue"), born.x0, born.x1), rod_runs(upper, "blue")
@@ -59,7 +59,7 @@ def test_bell_string_darkens_with_strain_and_the_comparison_rod_has_its_own_row(
         show(tab, settings, now)
         img = tab.canvas_after(before)
         tab.page.screenshot(path=str(shots / f"bell_t_{now}.png"))
-        lane = tab.session.renderer_lanes[0]
+        lane = tab.session.painter.renderer_lanes[0]
         rear, front, rod, string = lane.boxes[:4]
         middle = round(0.5 * (string.x0 + string.x1))
         ships_row, rod_row = _row(tab, img, string.z), _row(tab, img, rod.z)

@@ -26,7 +26,7 @@ def test_the_browser_plays_and_the_server_sends_nothing_per_frame(tab: AppPage, 
     with s.lock:
         s.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
     tab.page.click("button:has-text('Play')")
-    wait_until(lambda: s.runtime_playing, timeout=60)
+    wait_until(lambda: s.player.playing, timeout=60)
     wait_until(lambda: runtime_frames(tab) > 5)
     count0, frames0, t0 = len(tab.received), runtime_frames(tab), time.monotonic()
     time.sleep(3.0)
@@ -39,9 +39,9 @@ def test_the_browser_plays_and_the_server_sends_nothing_per_frame(tab: AppPage, 
     assert count1 - count0 <= 2 * span, tab.received[count0:count1]
     tab.page.click("button:has-text('Pause')")
     wait_until(lambda: s.playback_settled)
-    timeline = s.timeline
+    timeline = s.player.timeline
     assert timeline is not None
-    frame = timeline.frame_of(s.playback.now)
+    frame = timeline.frame_of(s.state.playback.now)
     assert frame is not None  # paused on a frame the browser showed: the clock is that frame's time
     state = tab.page.evaluate("() => [window.__rigidrelPlayback.applied, window.__rigidrelPlayback.playing]")
     assert state == [frame, False]
@@ -54,10 +54,10 @@ def test_every_tab_in_a_state_gets_the_one_timeline(browser: Any, app_server: An
             with tab.session.lock:
                 tab.session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
             tab.page.click("button:has-text('Play')")
-        wait_until(lambda: a.session.runtime_playing and b.session.runtime_playing, timeout=60)
-        assert a.session.timeline is b.session.timeline  # made once, for both
+        wait_until(lambda: a.session.player.playing and b.session.player.playing, timeout=60)
+        assert a.session.player.timeline is b.session.player.timeline  # made once, for both
         assert app_server.timelines.recorded == 1
-        assert np.isfinite(a.session.timeline.times).all()  # type: ignore[union-attr]
+        assert np.isfinite(a.session.player.timeline.times).all()  # type: ignore[union-attr]
     finally:
         a.close()
         b.close()

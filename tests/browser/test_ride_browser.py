@@ -24,24 +24,27 @@ pytestmark = pytest.mark.browser
 def test_the_riding_lane_keeps_the_rod_at_rest_length(tab: AppPage, shots: Path) -> None:
     before = tab.canvas()
     tab.choose("Frame", RIDE_FRAME)  # as a person would: the menu, then the point's box
-    wait_until(lambda: tab.session.drawn is not None and tab.session.drawn.resolved.ride is not None, timeout=60)
+    wait_until(
+        lambda: tab.session.painter.drawn is not None and tab.session.painter.drawn.resolved.ride is not None,
+        timeout=60,
+    )
     img = tab.canvas_after(before)
     tab.type_into_slider("Ride: point f", 0.0)
-    wait_until(lambda: tab.session.drawn.resolved.ride == RidePoint(0, 0.0), timeout=60)  # type: ignore[union-attr]
+    wait_until(lambda: tab.session.painter.drawn.resolved.ride == RidePoint(0, 0.0), timeout=60)  # type: ignore[union-attr]
     img = tab.canvas_after(img)
-    assert "riding: comoving with rod at f = 0" in tab.session.renderer_lanes[1].title
-    layout = tab.session.layout
+    assert "riding: comoving with rod at f = 0" in tab.session.painter.renderer_lanes[1].title
+    layout = tab.session.painter.layout
     assert layout is not None
     place = layout.lanes[1]
     centre = 0.5 * (place.track.x0 + place.track.x1)
     lab_px, ride_px = [], []
     for now in (-0.5, 1.5):  # at rest, then at V = 0.6 (lab length 0.8 L0)
         tab.type_into_slider("t, t'", now)
-        wait_until(lambda now=now: abs(tab.session.playback.now - now) < 1e-9, timeout=60)
+        wait_until(lambda now=now: abs(tab.session.state.playback.now - now) < 1e-9, timeout=60)
         img = tab.canvas_after(img)
         tab.page.screenshot(path=str(shots / f"riding_back_end_t_{now}.png"))
         lab, riding = measured_rods(tab, img)
-        lane = tab.session.renderer_lanes[1]
+        lane = tab.session.painter.renderer_lanes[1]
         expected = 1.0 * lane.scale  # the rest length, L0 = 1, in this lane's pixels
         (a, b) = riding[0]
         assert abs((b - a) - expected) <= 2 * PIXEL_TOLERANCE, (now, b - a, expected)
@@ -63,12 +66,12 @@ def test_an_event_chosen_from_the_list_gets_its_light_cone_on_both_diagrams(tab:
     default_scene = tab.canvas()
     show(tab, Settings.of("wall-collision", v=0.6, eps=0.0), 0.5)
     img = tab.canvas_after(default_scene)
-    layout = tab.session.layout
+    layout = tab.session.painter.layout
     assert layout is not None
     top = round(layout.height - layout.charts[0].outer.z1)  # the diagrams' part of the canvas
     before = [_light_pixels(img[top:, round(c.outer.x0) : round(c.outer.x1)], LIGHT_COLOR) for c in layout.charts[:2]]
     tab.choose("Light cone of", "T_1")
-    wait_until(lambda: tab.session.drawn.resolved.cone == "T_1", timeout=60)  # type: ignore[union-attr]
+    wait_until(lambda: tab.session.painter.drawn.resolved.cone == "T_1", timeout=60)  # type: ignore[union-attr]
     img = tab.canvas_after(img)
     tab.page.screenshot(path=str(shots / "light_cone_of_T1.png"))
     after = [_light_pixels(img[top:, round(c.outer.x0) : round(c.outer.x1)], LIGHT_COLOR) for c in layout.charts[:2]]

@@ -67,20 +67,20 @@ def color_scheme(tab: AppPage) -> str:
 
 def test_t_turns_the_dark_theme_on_and_off(tab: AppPage, shots: Path) -> None:
     tab.page.set_viewport_size({"width": 1280, "height": 720})
-    wait_until(lambda: tab.session.layout is not None and tab.session.layout.height == 720)
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.height == 720)
     light = tab.canvas_after(np.zeros_like(tab.canvas()))
     assert_light(light)
     tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
     tab.page.keyboard.press("t")
-    wait_until(lambda: tab.session.shade == "dark")
+    wait_until(lambda: tab.session.state.shade == "dark")
     dark = tab.canvas_after(light)
     assert_dark(dark)
     wait_until(lambda: color_scheme(tab) == "dark")
     assert tab.control("Dark theme").is_checked()
-    assert tab.session.layout is not None and tab.session.layout.theme.shade == "dark"
+    assert tab.session.painter.layout is not None and tab.session.painter.layout.theme.shade == "dark"
     tab.page.screenshot(path=str(shots / "dark_1280x720.png"))
     tab.page.keyboard.press("t")
-    wait_until(lambda: tab.session.shade == "light")
+    wait_until(lambda: tab.session.state.shade == "light")
     assert_light(tab.canvas_after(dark))
     wait_until(lambda: color_scheme(tab) == "light")
     assert tab.errors == []
@@ -90,15 +90,15 @@ def test_the_checkbox_and_presenter_mode_keep_the_theme(tab: AppPage, shots: Pat
     tab.page.set_viewport_size({"width": 1280, "height": 720})
     before = tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.control("Dark theme").click()
-    wait_until(lambda: tab.session.shade == "dark")
+    wait_until(lambda: tab.session.state.shade == "dark")
     assert_dark(tab.canvas_after(before))
     tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
     tab.page.keyboard.press("f")
-    wait_until(lambda: tab.session.presenter)
-    wait_until(lambda: tab.session.layout is not None and tab.session.layout.width > 1200, timeout=30)
+    wait_until(lambda: tab.session.state.presenter)
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.width > 1200, timeout=30)
     presenter = tab.canvas_after(np.zeros_like(tab.canvas()))  # a new canvas size: nothing to compare with
     assert_dark(presenter)
-    assert tab.session.layout is not None and tab.session.layout.theme.name == "presenter"
+    assert tab.session.painter.layout is not None and tab.session.painter.layout.theme.name == "presenter"
     tab.page.screenshot(path=str(shots / "dark_presenter_1280x720.png"))
     assert tab.errors == []
 
@@ -131,16 +131,16 @@ def test_a_lesson_caption_follows_the_theme(browser: Any, shots: Path) -> None:
         )
         assert background == css_rgb(shaded(CAPTION_GROUND, "dark"))  # the band's colour, lightness flipped
         session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=30)
-        wait_until(lambda: session.layout is not None and session.canvas_size.measured, timeout=30)
+        wait_until(lambda: session.painter.layout is not None and session.painter.canvas_size.measured, timeout=30)
         page.evaluate("() => document.activeElement && document.activeElement.blur()")
-        if session.playback.playing:  # the step plays on arrival: paused, to be photographed still
+        if session.state.playback.playing:  # the step plays on arrival: paused, to be photographed still
             page.keyboard.press(" ")
-            wait_until(lambda: not session.playback.playing)
+            wait_until(lambda: not session.state.playback.playing)
         wait_until(lambda: still(page), timeout=60, interval=0.5)
         page.screenshot(path=str(shots / "lesson_dark.png"))
         page.evaluate("() => document.activeElement && document.activeElement.blur()")
         page.keyboard.press("t")
-        wait_until(lambda: session.shade == "light")
+        wait_until(lambda: session.state.shade == "light")
         wait_until(
             lambda: (
                 page.evaluate("() => getComputedStyle(document.getElementById('rigidrel-caption')).backgroundColor")

@@ -18,7 +18,7 @@ import itertools
 import json
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
-from typing import Any, Literal, Protocol, TypeVar
+from typing import Any, Protocol, TypeVar
 
 import viser
 
@@ -30,18 +30,18 @@ from ..lessons import Lesson
 from ..lessons.tour import LAYER_LABELS, step_labels
 from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, control_value, refusal
 from ..view.layers import Layer
-from ..view.scene_view import CONTROL_PX
-from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, preset_menu
-from ..view.vocabulary import ROD_COLORS, Shade, shaded
+from ..view.notice import Notice, Place, notice_markup
+from ..view.scenario import format_scenario
+from ..view.scene_view import CONTROL_PX, Drawn, nice_step
+from ..view.scene_view import readout_markdown as readout
+from ..view.state import CUSTOM_BETA, CUSTOM_FRAME, Settings, cone_events, frame_choice, frame_choices, preset_menu
+from ..view.vocabulary import ROD_COLORS, Shade, markdown_literal, shaded
 from .keys import HOTKEYS, LESSON_HOTKEYS, Action, Hotkey, key_line
 from .playback import Playback
 from .runtime import page_asset
+from .tab_state import TabState
 
 T = TypeVar("T")
-
-Place = Literal["lesson", "scene", "frame", "playback", "scenario"]
-"""The folder a notice shows in: the one holding the control whose value was refused, so it is read
-where the lecturer is looking even when the panel is scrolled."""
 
 #: A log slider's label (it sits under the box that carries the number's name).
 LOG_SLIDER_LABEL = "log scale"
@@ -53,9 +53,7 @@ TYPED_DECIMALS = 6
 class Actions(Protocol):
     """What the controls ask of a session (:class:`~rigidrel_app.live.session.Session`)."""
 
-    settings: Settings
-    playback: Playback
-    shade: Shade
+    state: TabState
 
     def change(self, new: Settings, refit: bool | None = None) -> None: ...
     def set_parameter(self, parameter: rr.Parameter, value: float) -> None: ...
@@ -312,8 +310,9 @@ RIDE_POINT = NumberEntry("Ride: point f", 0.0, 1.0, 0.05, noun="a share of the r
 
 @dataclass
 class Controls:
-    """Every handle of one tab, built once; the session wires and updates them."""
+    """Every handle of one tab, built once; the session wires them, and they show its state (:meth:`show`)."""
 
+    gui: viser.GuiApi
     preset: viser.GuiDropdownHandle[str]
     scene: viser.GuiDropdownHandle[str]
     parameters: dict[rr.Parameter, NumberControl]
@@ -354,6 +353,14 @@ class Controls:
     """The controls the lesson's current step fixes (disabled)."""
     lock_css: viser.GuiHtmlHandle | None = None
     """Style rules that grey out the number boxes of locked sliders (viser disables only the slider)."""
+    look: tuple[Shade, bool] = ("light", False)
+    """The theme and presenter mode the panel shows."""
+    settings_of: Settings | None = None
+    """The settings the controls show."""
+    scenario_of: tuple[Settings, float | None] | None = None
+    """What the scenario line names (the settings on screen, and the time while paused)."""
+    readout_of: Drawn | None = None
+    """The drawing the readout describes."""
 
     def control_for(self, settings: Settings, name: str) -> NumberControl | None:
         return self.parameters.get(settings.description.parameter(name))
@@ -363,7 +370,7 @@ class Controls:
         for param, control in self.parameters.items():
             control.wire(
                 a,
-                current=lambda p=param: control_value(p, a.settings.parameters().get(p.name)),
+                current=lambda p=param: control_value(p, a.state.settings.parameters().get(p.name)),
                 act=lambda v, p=param: a.set_parameter(p, v),
                 place="scene",
             )
@@ -372,53 +379,159 @@ class Controls:
         in_playback = functools.partial(guard_choice, a=a, place="playback")
         titles = scene_titles()
         in_scene(self.scene, label="Scene", allowed="one of the listed scenes", legal=one_of(list(titles)),
-                 current=lambda: a.settings.description.title,
-                 act=lambda title: a.change(a.settings.with_scene(titles[title])))  # fmt: skip
+                 current=lambda: a.state.settings.description.title,
+                 act=lambda title: a.change(a.state.settings.with_scene(titles[title])))  # fmt: skip
         in_scene(self.preset, label="Paper figure", allowed="one of the listed figures",
-                 legal=lambda v: one_of(preset_menu(a.settings).options)(v),
-                 current=lambda: preset_menu(a.settings).value, act=a.choose_preset)  # fmt: skip
+                 legal=lambda v: one_of(preset_menu(a.state.settings).options)(v),
+                 current=lambda: preset_menu(a.state.settings).value, act=a.choose_preset)  # fmt: skip
         in_scene(self.overlay, label="Overlay", allowed="on or off", legal=on_or_off,
-                 current=lambda: a.settings.overlay,
-                 act=lambda v: a.change(replace(a.settings, overlay=v)))  # fmt: skip
+                 current=lambda: a.state.settings.overlay,
+                 act=lambda v: a.change(replace(a.state.settings, overlay=v)))  # fmt: skip
         in_frame(self.frame, label="Frame", allowed="one of the listed frames",
                  legal=lambda v: v in self.frame.options, current=a.frame_choice,
-                 act=lambda v: a.change(replace(a.settings, frame=v)))  # fmt: skip
-        self.beta.wire(a, current=lambda: a.settings.beta, place="frame",
-                       act=lambda b: a.change(replace(a.settings, frame=CUSTOM_FRAME, beta=b)))  # fmt: skip
-        self.ride_point.wire(a, current=lambda: a.settings.ride.fraction, place="frame",
-                             act=lambda f: a.change(a.settings.riding(fraction=f)))  # fmt: skip
+                 act=lambda v: a.change(replace(a.state.settings, frame=v)))  # fmt: skip
+        self.beta.wire(a, current=lambda: a.state.settings.beta, place="frame",
+                       act=lambda b: a.change(replace(a.state.settings, frame=CUSTOM_FRAME, beta=b)))  # fmt: skip
+        self.ride_point.wire(a, current=lambda: a.state.settings.ride.fraction, place="frame",
+                             act=lambda f: a.change(a.state.settings.riding(fraction=f)))  # fmt: skip
         in_frame(self.ride_rod, label="Ride: rod", allowed="one of the scene's rods",
                  legal=lambda v: v in self.ride_rod.options,
-                 current=lambda: self.ride_rod.options[min(a.settings.ride.rod, len(self.ride_rod.options) - 1)],
-                 act=lambda v: a.change(a.settings.riding(rod=list(self.ride_rod.options).index(v))))  # fmt: skip
-        self.time.wire(a, current=lambda: round(a.playback.now, 6), act=a.seek, place="playback")
-        self.speed.wire(a, current=lambda: a.playback.speed, place="playback",
-                        act=lambda v: a.set_playback(replace(a.playback, speed=v)))  # fmt: skip
-        in_playback(self.loop, label="Loop", allowed="on or off", legal=on_or_off, current=lambda: a.playback.loop,
-                    act=lambda v: a.set_playback(replace(a.playback, loop=v)))  # fmt: skip
+                 current=lambda: self.ride_rod.options[min(a.state.settings.ride.rod, len(self.ride_rod.options) - 1)],
+                 act=lambda v: a.change(a.state.settings.riding(rod=list(self.ride_rod.options).index(v))))  # fmt: skip
+        self.time.wire(a, current=lambda: round(a.state.playback.now, 6), act=a.seek, place="playback")
+        self.speed.wire(a, current=lambda: a.state.playback.speed, place="playback",
+                        act=lambda v: a.set_playback(replace(a.state.playback, speed=v)))  # fmt: skip
+        in_playback(self.loop, label="Loop", allowed="on or off", legal=on_or_off,
+                    current=lambda: a.state.playback.loop,
+                    act=lambda v: a.set_playback(replace(a.state.playback, loop=v)))  # fmt: skip
         self.play.on_click(lambda _: a.perform(Action.TOGGLE_PLAY))
         self.reset_view.on_click(lambda _: a.perform(Action.RESET_VIEW))
         self.presenter.on_click(lambda _: a.perform(Action.TOGGLE_PRESENTER))
         in_playback(self.dark, label="Dark theme", allowed="on or off", legal=on_or_off,
-                    current=lambda: a.shade == "dark", act=lambda v: a.set_shade("dark" if v else "light"))  # fmt: skip
+                    current=lambda: a.state.shade == "dark",
+                    act=lambda v: a.set_shade("dark" if v else "light"))  # fmt: skip
         for hotkey, command in self.commands:
             command.on_trigger(lambda _, action=hotkey.action: a.perform(action))
         for layer, box in self.layers.items():
             in_scene_layers = functools.partial(guard_choice, a=a, place="scenario")
             in_scene_layers(box, label=LAYER_LABELS[layer], allowed="on or off", legal=on_or_off,
-                            current=lambda layer=layer: layer in a.settings.layers,
+                            current=lambda layer=layer: layer in a.state.settings.layers,
                             act=lambda v, layer=layer: a.set_layer(layer, v))  # fmt: skip
         in_layers = functools.partial(guard_choice, a=a, place="scenario")
 
         def show_cone(v: str) -> None:
-            a.change(replace(a.settings, cone=None if v == NO_CONE else v), refit=False)
+            a.change(replace(a.state.settings, cone=None if v == NO_CONE else v), refit=False)
 
         in_layers(self.cone, label="Light cone of", allowed="none or one of the scene's events",
-                  legal=lambda v: v in self.cone.options, current=lambda: a.settings.cone or NO_CONE,
+                  legal=lambda v: v in self.cone.options, current=lambda: a.state.settings.cone or NO_CONE,
                   act=show_cone)  # fmt: skip
         self.scenario_load.on_click(lambda _: a.checked(lambda: a.load_scenario(self.scenario_box.value)))
         if self.lesson is not None:
             self.lesson.wire(a)
+
+    def show(self, state: TabState, drawn: Drawn | None = None, lock_reason: str = "", put_back: bool = False) -> None:
+        """Show ``state``: the settings asked for (a refused one too) when they change, or when
+        ``put_back`` (a client moved a locked control), what the step locks and why, Play or Pause,
+        the look, the notice; with ``drawn`` (the picture just put on screen) also the menus that
+        follow its scene, the time slider's range and the readout. Each handle is written only if it
+        shows something else (each write is a message to the browser). A refusal alone leaves the
+        controls as the client moved them: typed text stays beside its notice."""
+        if put_back or state.settings != self.settings_of or state.locked != self.fixed:
+            self.settings_of = state.settings
+            self.lock(state.settings, state.locked)
+        if drawn is not None:
+            self._show_drawn(state, drawn)
+        self.show_play(state.playback.playing)
+        self._show_look(state.shade, state.presenter)
+        self._show_notice(state.notice, state.shade)
+        if self.locks is not None:
+            if self.locks.content != lock_reason:
+                self.locks.content = lock_reason
+            if self.locks.visible != bool(lock_reason):
+                self.locks.visible = bool(lock_reason)
+        if self.lesson is not None:
+            self.lesson.show_step(state.step)
+
+    def _show_drawn(self, state: TabState, drawn: Drawn) -> None:
+        r = drawn.resolved
+        choices = frame_choices(r.scene)
+        if tuple(self.frame.options) != choices:
+            self.frame.options = choices
+        chosen = frame_choice(r.scene, r.frame, r.ride)
+        if self.frame.value != chosen:
+            self.frame.value = chosen
+        rods = tuple(rod.name for rod in r.scene.rods)
+        if tuple(self.ride_rod.options) != rods:
+            self.ride_rod.options = rods
+        if self.ride_rod.visible != (len(rods) > 1):
+            self.ride_rod.visible = len(rods) > 1
+        ridden = rods[min(state.settings.ride.rod, len(rods) - 1)]
+        if self.ride_rod.value != ridden:
+            self.ride_rod.value = ridden
+        cones = (NO_CONE, *cone_events(r.scene))
+        if tuple(self.cone.options) != cones:
+            self.cone.options = cones
+        if self.cone.value != (r.cone or NO_CONE):
+            self.cone.value = r.cone or NO_CONE
+        t0, t1 = state.playback.window
+        self.time.retarget(time_entry((t0, t1), nice_step(t1 - t0)))
+        if drawn is not self.readout_of:
+            self.readout_of = drawn
+            self.readout.content = readout(r)
+
+    def show_play(self, playing: bool) -> None:
+        """The play button: Pause while playing, else Play."""
+        label = "Pause" if playing else "Play"
+        if self.play.label != label:
+            self.play.label = label
+            self.play.icon = viser.Icon.PLAYER_PAUSE if playing else viser.Icon.PLAYER_PLAY
+
+    def show_clock(self, state: TabState) -> None:
+        """The playback clock's box, and the scenario line of what is on screen (with its time
+        while paused)."""
+        now = round(state.playback.now, 6)
+        self.time.show(now)
+        t = None if state.playback.playing else now
+        if state.shown is not None and (state.shown, t) != self.scenario_of:
+            self.scenario_of = (state.shown, t)
+            self.show_scenario(format_scenario(state.shown, t))
+
+    def _show_look(self, shade: Shade, presenter: bool) -> None:
+        """The panel's theme, the dark-theme box, and the panel minimized in presenter mode."""
+        old_shade, old_presenter = self.look
+        self.look = (shade, presenter)
+        if self.dark.value != (shade == "dark"):
+            self.dark.value = shade == "dark"
+        if shade != old_shade:
+            configure_panel(self.gui, shade)
+        if presenter != old_presenter:
+            if presenter:
+                self.gui.main_panel.minimize()
+            else:
+                self.gui.main_panel.expand()
+
+    def _show_notice(self, notice: Notice, shade: Shade) -> None:
+        """The one notice, in its folder (any older one, wherever it was, goes)."""
+        content = notice_markup(markdown_literal(notice.text), shade)
+        for where, handle in self.notices.items():
+            shown = bool(notice) and where == notice.place
+            if shown and handle.content != content:
+                handle.content = content
+            if handle.visible != shown:
+                handle.visible = shown
+
+    def show_leader(self, leads: bool | None) -> None:
+        """The Lesson folder's line on who leads (``None``: no tab leads)."""
+        if self.lesson is None:
+            return
+        if leads:
+            text = "**This tab leads**: the other tabs follow its step."
+        elif leads is None:
+            text = "No tab leads: press L (or the button) to lead."
+        else:
+            text = "Following the leading tab's step (L here to lead instead)."
+        if self.lesson.status.content != text:
+            self.lesson.status.content = text
 
     def show_settings(self, s: Settings) -> None:
         """Show the controls of ``s``'s scene with its values, in its description's order; hide the
@@ -724,10 +837,10 @@ def build_controls(
     gui.main_panel.set_width(CONTROL_PX)
     commands = tuple((h, gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}")) for h in table)
     controls = Controls(
-        preset, scene, params, overlay, notices, frame, beta, ride_rod, ride_point, play, time, speed, loop, fit,
+        gui, preset, scene, params, overlay, notices, frame, beta, ride_rod, ride_point, play, time, speed, loop, fit,
         reset_view, presenter, dark, readout, commands, layers, cone, scenario_shown, scenario_box, scenario_load,
         lesson_controls, locks,
-        lock_css=gui.add_html("", order=5.1) if lesson is not None else None,
+        lock_css=gui.add_html("", order=5.1) if lesson is not None else None, look=(shade, False),
     )  # fmt: skip
     return controls
 

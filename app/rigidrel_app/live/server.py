@@ -274,7 +274,7 @@ class App:
                     self.sessions[client.client_id] = session
                     if self.follow:
                         if self.leader is None:
-                            self.leader, self.leader_step = client.client_id, session.step_index
+                            self.leader, self.leader_step = client.client_id, session.state.step
                         self._followed += 1
         assert session is not None  # Session() returned (else its exception went on up)
         if gone:
@@ -314,7 +314,7 @@ class App:
         """Key L: this tab leads from now on, at its own step."""
         with self._lock:
             if self.follow:
-                self.leader, self.leader_step = session.client.client_id, session.step_index
+                self.leader, self.leader_step = session.client.client_id, session.state.step
                 self._followed += 1
 
     def _pass_on_steps(self) -> None:
@@ -325,7 +325,7 @@ class App:
             self._followed = 0
             leader, step = self.leader, self.leader_step
             sessions = list(self.sessions.items())
-        moving = [s for client_id, s in sessions if leader is not None and client_id != leader and s.step_index != step]
+        moving = [s for client_id, s in sessions if leader is not None and client_id != leader and s.state.step != step]
         for s in moving:  # the new step's picture first, to every tab (made once per canvas size) ...
             s.preview_step(step)
         for client_id, s in sessions:  # ... then its controls, locks and playback

@@ -16,6 +16,7 @@ import ipywidgets as w
 import plotly.graph_objects as go
 
 from ..view.entry import NumberEntry
+from ..view.notice import notice_markup
 from ..view.vocabulary import Shade
 from .live_state import (
     BETA_ENTRY,
@@ -32,8 +33,6 @@ from .live_state import (
     with_parameter,
 )
 
-#: The notice's colour (the app's).
-NOTICE_COLOR = "#b00020"
 #: Width of a slider's label (CSS): the longest registry label ("a′_F L0", "ε (restitution)") fits.
 LABEL_WIDTH = "150px"
 _STYLE = {"description_width": LABEL_WIDTH}
@@ -185,7 +184,7 @@ class LiveView(w.VBox):
         finally:
             self._syncing = False
         text = html_lib.escape(s.notice)
-        self.notice.value = f'<span style="color: {NOTICE_COLOR}"><b>⚠ {text}</b></span>' if s.notice else ""
+        self.notice.value = notice_markup(text, "light") if s.notice else ""
         self.readout.value = s.readout_html()
 
 
