@@ -80,15 +80,15 @@ def bench_rebuild() -> dict[str, float]:
 #: The steps of a slider's redraw timed by :func:`bench_phases`: (label, module, attribute). Each is
 #: a function the session calls (by its own module's name for it, or as a method).
 PHASES = (
-    ("drawing", "rigidrel_app.live.session", "build_drawing"),
+    ("drawing", "rigidrel_app.live.painting", "build_drawing"),
     ("  its label placement", "rigidrel_app.view.diagrams", "place_labels"),
-    ("charts' pictures", "rigidrel_app.live.session", "chart_picture"),
-    ("legend's picture", "rigidrel_app.live.session", "legend_picture"),
+    ("still picture", "rigidrel_app.live.painting", "still_picture"),
     ("static layer sent", "rigidrel_app.backends.viser", "PageRenderer.set_static"),
     ("instant drawn", "rigidrel_app.live.session", "Session.draw_now"),
     ("  its lanes and moving parts sent", "rigidrel_app.backends.viser", "PageRenderer.update"),
-    ("controls shown", "rigidrel_app.live.controls", "Controls.show_settings"),
-    ("camera", "rigidrel_app.live.session", "Session.fit_camera"),
+    ("  its frame to the runtime", "rigidrel_app.live.timeline", "Mirror.frame"),
+    ("controls shown", "rigidrel_app.live.controls", "Controls.show"),
+    ("camera", "rigidrel_app.live.painter", "Painter.fit_camera"),
 )
 
 

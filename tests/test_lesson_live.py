@@ -20,7 +20,7 @@ from rigidrel_app.lessons.tour import (
 )
 from rigidrel_app.live.controls import caption_message, scenario_html
 from rigidrel_app.live.keys import LESSON_HOTKEYS, Action, action_for, key_line
-from rigidrel_app.live.session import scenario_problem
+from rigidrel_app.live.tab_state import scenario_problem
 from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.scenario import ScenarioError, parse_scenario
 

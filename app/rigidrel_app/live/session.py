@@ -22,13 +22,11 @@ import rigidrel_core as rr
 
 from ..backends._viser import handle_uuid, run_javascript, scene_owner
 from ..lessons import Lesson
-from ..lessons.tour import locked_changes
 from ..view.layers import Layer
 from ..view.layout import CanvasSize
 from ..view.notice import Place
-from ..view.scenario import ScenarioError, parse_scenario
 from ..view.scene_view import PLOT_HZ, Drawn
-from ..view.state import Resolved, Settings, beta_problem, preset_step, scene_presets
+from ..view.state import Resolved, Settings, preset_step, scene_presets
 from ..view.state import frame_choice as frame_choice_of
 from ..view.state import resolve as resolve_settings
 from ..view.vocabulary import Shade
@@ -41,11 +39,8 @@ from .painter import Painter
 from .painting import PaintingCache
 from .playback import Playback
 from .runtime import RuntimeConfig, add_playback_report, clock_controls, parse_report, runtime_script
-from .tab_state import TabState
+from .tab_state import TabState, read_scenario
 from .timeline import Timeline, TimelineCache, TimelineKey
-
-#: What the scenario box also accepts in front of a scenario string (copied from a command line).
-SERVE_PREFIXES = ("rigidrel serve ", "serve ")
 
 
 class LessonHooks(Protocol):
@@ -58,12 +53,6 @@ class LessonHooks(Protocol):
     def lead(self, session: Session) -> None:
         """This tab asks to lead (key L)."""
         ...
-
-
-def scenario_problem(exc: ScenarioError) -> str:
-    """A scenario string's mistake, led by the flag at fault (``--v1: v1 must be ... in (-1, 1); got 1.6``)."""
-    text, flag = str(exc), f"--{exc.parameter}"
-    return text if exc.parameter == "scene" or text.startswith(flag) else f"{flag}: {text}"
 
 
 class Session:
@@ -97,11 +86,16 @@ class Session:
         """Values a client sent that the session checked and acted on or refused (in any order)."""
         self.lesson: LessonPart = NoLesson()
         if lesson is not None:
-            told = hooks if hooks is not None else _Unheard()
-            self.lesson = GivenLesson(lesson, lambda index: told.step_changed(self, index), lambda: told.lead(self))
+            told = hooks
+            self.lesson = GivenLesson(
+                lesson,
+                lambda index: None if told is None else told.step_changed(self, index),
+                lambda: None if told is None else told.lead(self),
+            )
         self.caption_key = f"rigidrel_caption_{uuid.uuid4().hex}"
         """This tab's localStorage key for the caption band and the page's style (:mod:`.controls`)."""
         self._caption_sent = BLANK_CAPTION
+        self._keys = self._key_actions()
         self._last_clock = 0.0
         asked, notice = settings or Settings(), ""
         resolved = resolve_settings(asked)
@@ -221,7 +215,7 @@ class Session:
         """Try ``new``; a change of a control the lesson's step fixes is refused (the GUI disables
         those; a client may send anything)."""
         with self.lock:
-            changed = locked_changes(self.state.locked, self.state.settings, new)
+            changed = self.state.locks_against(new)
             if not changed:
                 self._ask(new, refit)
                 return
@@ -267,36 +261,44 @@ class Session:
     def perform(self, action: Action) -> None:
         """What a key, the clicker or a button asks (:mod:`.keys`)."""
         with self.lock, self.client.atomic():
-            if self.closed:
-                return
-            s = self.state
-            if action is Action.TOGGLE_PLAY:
-                self.toggle_play()
-                if not self.state.playback.playing:  # paused: the diagrams and readouts catch up with the rods
-                    self.draw_now(force_plots=True)
-            elif action in (Action.STEP_BACK, Action.STEP_FORWARD):
-                self.set_playback(s.playback.stepped(-1 if action is Action.STEP_BACK else 1))
+            if not self.closed:
+                self._keys[action]()
+
+    def _key_actions(self) -> dict[Action, Callable[[], None]]:
+        s = lambda: self.state  # noqa: E731  (the state when the key is pressed)
+
+        def step(by: int) -> None:  # past either end of the lesson nothing happens
+            index = self.lesson.step(s().step + by)
+            if index is not None and index != s().step:
+                self.go_to_step(index)
+
+        def toggle_play() -> None:
+            self.toggle_play()
+            if not s().playback.playing:  # paused: the diagrams and readouts catch up with the rods
                 self.draw_now(force_plots=True)
-            elif action in (Action.PREVIOUS_FIGURE, Action.NEXT_FIGURE):
-                figure = preset_step(s.settings, -1 if action is Action.PREVIOUS_FIGURE else 1)
-                if figure is not None:
-                    self.change(figure, refit=True)
-            elif action is Action.RESET_VIEW:
-                self.painter.fit_camera(force=True)
-            elif action is Action.TOGGLE_PRESENTER:
-                self.set_presenter(not s.presenter)
-            elif action is Action.TOGGLE_THEME:
-                self.set_shade("light" if s.shade == "dark" else "dark")
-            elif action in (Action.PREVIOUS_STEP, Action.NEXT_STEP):
-                index = self.lesson.step(s.step + (-1 if action is Action.PREVIOUS_STEP else 1))
-                if index is not None and index != s.step:  # past either end nothing happens
-                    self.go_to_step(index)
-            elif action is Action.TOGGLE_CAPTION:
-                self._show(s.with_caption(not s.caption_shown))
-            elif action is Action.LEAD:
-                self.lesson.lead()
-            else:  # a new Action must be handled here
-                raise AssertionError(action)
+
+        def frames(by: int) -> None:
+            self.set_playback(s().playback.stepped(by))
+            self.draw_now(force_plots=True)
+
+        def figure(by: int) -> None:
+            if (chosen := preset_step(s().settings, by)) is not None:
+                self.change(chosen, refit=True)
+
+        return {
+            Action.TOGGLE_PLAY: toggle_play,
+            Action.STEP_BACK: lambda: frames(-1),
+            Action.STEP_FORWARD: lambda: frames(1),
+            Action.PREVIOUS_FIGURE: lambda: figure(-1),
+            Action.NEXT_FIGURE: lambda: figure(1),
+            Action.RESET_VIEW: lambda: self.painter.fit_camera(force=True),
+            Action.TOGGLE_PRESENTER: lambda: self.set_presenter(not s().presenter),
+            Action.TOGGLE_THEME: lambda: self.set_shade("light" if s().shade == "dark" else "dark"),
+            Action.PREVIOUS_STEP: lambda: step(-1),
+            Action.NEXT_STEP: lambda: step(1),
+            Action.TOGGLE_CAPTION: lambda: self._show(s().with_caption(not s().caption_shown)),
+            Action.LEAD: lambda: self.lesson.lead(),
+        }
 
     def set_presenter(self, on: bool) -> None:
         """Presenter mode: the panel minimized, the projector theme on the canvas (the canvas' new
@@ -316,30 +318,18 @@ class Session:
                 self._apply(self.painter.drawn.resolved, refit=refit)
 
     def load_scenario(self, text: str) -> None:
-        """Show the state a scenario string names (as ``rigidrel serve SCENE ...`` takes it); one
-        that names none is refused with a notice naming the flag and what it allows."""
+        """Show the state a scenario string names (:func:`read_scenario`), or say why it names none."""
         with self.lock:
-            line = text.strip()
-            for prefix in SERVE_PREFIXES:
-                line = line.removeprefix(prefix)
-            try:
-                scenario = parse_scenario(line)
-            except ScenarioError as exc:
-                self.refuse(f"Scenario refused: {scenario_problem(exc)}", "scenario")
-                return
-            s = scenario.settings
-            if (problem := beta_problem(s)) is not None:
-                self.refuse(f"Scenario refused: {problem}", "scenario")
-                return
-            changed = locked_changes(self.state.locked, self.state.settings, s)
-            changed += ("time",) if scenario.t is not None and "time" in self.state.locked else ()
-            if changed:
+            scenario = read_scenario(text)
+            if isinstance(scenario, str):
+                self.refuse(scenario, "scenario")
+            elif changed := self.state.locks_against(scenario.settings, scenario.t is not None):
                 self.refuse(self.lesson.lock_notice(self.state, changed), "scenario")
-                return
-            self._ask(s, refit=True)
-            if scenario.t is not None and not self.state.notice:
-                self.set_playback(self.state.playback.seek(scenario.t))
-                self.draw_now(force_plots=True)
+            else:
+                self._ask(scenario.settings, refit=True)
+                if scenario.t is not None and not self.state.notice:
+                    self.set_playback(self.state.playback.seek(scenario.t))
+                    self.draw_now(force_plots=True)
 
     def set_layer(self, layer: Layer, on: bool) -> None:
         """A layer toggle: the settings' layers with ``layer`` added (``on``) or removed."""
@@ -477,13 +467,3 @@ class Session:
             with self.client.atomic():
                 show()
         self.client.flush()
-
-
-class _Unheard:
-    """Hooks for a tab whose lesson no server hears (a tab made by itself, as in a test)."""
-
-    def step_changed(self, session: Session, index: int) -> None:
-        pass
-
-    def lead(self, session: Session) -> None:
-        pass

@@ -12,11 +12,35 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-from ..lessons.tour import Arrival
+from ..lessons.tour import Arrival, locked_changes
 from ..view.notice import Notice, Place
-from ..view.state import Settings
+from ..view.scenario import Scenario, ScenarioError, parse_scenario
+from ..view.state import Settings, beta_problem
 from ..view.vocabulary import Shade
 from .playback import Playback
+
+#: What the scenario box also accepts in front of a scenario string (copied from a command line).
+SERVE_PREFIXES = ("rigidrel serve ", "serve ")
+
+
+def scenario_problem(exc: ScenarioError) -> str:
+    """A scenario string's mistake, led by the flag at fault (``--v1: v1 must be ... in (-1, 1); got 1.6``)."""
+    text, flag = str(exc), f"--{exc.parameter}"
+    return text if exc.parameter == "scene" or text.startswith(flag) else f"{flag}: {text}"
+
+
+def read_scenario(text: str) -> Scenario | str:
+    """The state a scenario box's ``text`` names (as ``rigidrel serve SCENE ...`` takes it, that
+    prefix allowed), or why it names none: the flag at fault and what it allows."""
+    line = text.strip()
+    for prefix in SERVE_PREFIXES:
+        line = line.removeprefix(prefix)
+    try:
+        scenario = parse_scenario(line)
+    except ScenarioError as exc:
+        return f"Scenario refused: {scenario_problem(exc)}"
+    problem = beta_problem(scenario.settings)
+    return scenario if problem is None else f"Scenario refused: {problem}"
 
 
 @dataclass(frozen=True)
@@ -63,6 +87,10 @@ class TabState:
         if self.step_window is not None and self.step_window[0] == shown.scene:
             window = self.step_window[1]
         return replace(self, shown=shown, playback=self.playback.with_window(window))
+
+    def locks_against(self, new: Settings, time: bool = False) -> tuple[str, ...]:
+        """The controls the step locks that ``new`` (and a new time, if ``time``) would change."""
+        return locked_changes(self.locked, self.settings, new) + (("time",) if time and "time" in self.locked else ())
 
     def refused(self, text: str, place: Place = "scene") -> TabState:
         """The notice ``text`` in folder ``place`` (it replaces any older one); nothing else changes."""
