@@ -22,7 +22,8 @@ client, errors (client disconnects plus server-side errors), the server's CPU sh
 and resident memory (the timeline recorder's process included), the received bytes per second
 per client, and how long after the first press every tab was playing.
 
-``--follow``: the app gives the built-in lesson with ``--follow``; the first tab leads, and the
+``--follow``: the app gives the built-in lesson with ``--follow``; the first tab, opened at the
+lecturer's lead address, leads, and the
 others follow its step (its first step autoplays). Over the window: every tab's frames per second,
 the server's CPU and memory (the timeline recorder's process counted in both, and its memory also
 on its own); then the leader presses Next step, and the line reports the time
@@ -129,7 +130,7 @@ def hall(clients: int, seconds: float, fps: float, follow: bool, same: bool = Fa
     lesson = lesson_from("paper") if follow else None
     with (
         App(port=0, animation_hz=fps, lesson=lesson, follow=follow) as app,
-        hall_clients(app.url, clients, seconds, follow, same) as child,
+        hall_clients(app.lead_url or app.url, clients, seconds, follow, same) as child,
     ):
         joined = read_line(child, timeout=1200.0)
         wait_until(lambda: len(app.sessions) >= clients, timeout=120.0)

@@ -108,8 +108,8 @@ def test_followers_share_one_painting_per_canvas_and_get_their_own_back() -> Non
     with App(port=0, lesson=lesson_from("paper"), follow=True) as app:
         loop = ClientLoop()
         try:
-            clients = [RuntimeClient(app.url) for _ in range(3)]
-            for c in clients:  # the first leads
+            clients = [RuntimeClient(app.lead_url or "")] + [RuntimeClient(app.url) for _ in range(2)]
+            for c in clients:  # the first, at the lecturer's address, leads
                 loop.run(c.connect())
                 loop.start(c.run(3600))
                 wait_until(lambda c=c: c.report_uuid is not None and c.still_frames, timeout=60)

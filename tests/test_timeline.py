@@ -237,3 +237,11 @@ def test_settings_and_layout_make_the_key(fig3: tuple[TimelineKey, Resolved]) ->
     key, _ = fig3
     other = TimelineKey(Settings("rod-collision").with_value("v1", 0.7), key.layout, key.window)
     assert key != other and hash(key) == hash(TimelineKey(key.resolved, key.layout, key.window))
+
+
+def test_a_ready_report_carries_a_lead_token_only_of_a_sane_length() -> None:
+    """The lecturer's lead token rides on the runtime's ready report; anything but a short string is dropped."""
+    assert parse_report('{"event": "ready", "lead": "abc"}') == Report("ready", lead="abc")
+    assert parse_report('{"event": "ready", "lead": ""}') == Report("ready")
+    assert parse_report('{"event": "ready", "lead": 5}') == Report("ready")
+    assert parse_report(json.dumps({"event": "ready", "lead": "x" * 65})) == Report("ready")

@@ -17,6 +17,7 @@ import subprocess
 import sys
 import threading
 import time
+import urllib.parse
 from collections.abc import Callable, Coroutine, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -523,7 +524,11 @@ class RuntimeClient(LightClient):
     arrived, and one per still frame the server sent."""
 
     def __init__(self, url: str, read: bool = True) -> None:
-        super().__init__(url, read)
+        """``url``: the app's address; with ``?lead=TOKEN`` (the lecturer's) the runtime's ready
+        report carries the token, as the browser's does."""
+        base, _, query = url.partition("?")
+        super().__init__(base, read)
+        self.lead = urllib.parse.parse_qs(query).get("lead", [None])[0]
         self.report_uuid: str | None = None
         self.frame_rate = 40.0
         self.blocks: dict[str, dict[int, float]] = {}
@@ -545,7 +550,7 @@ class RuntimeClient(LightClient):
                 start = source.index(mark) + len(mark)
                 config = json.loads(source[start : source.index(";\n", start)])
                 self.report_uuid, self.frame_rate = config["report"], float(config["frameRate"])
-                self._report({"event": "ready"})
+                self._report({"event": "ready", "lead": self.lead} if self.lead else {"event": "ready"})
             elif kind == "PlaybackMessage":
                 self._act(m["action"], m["timeline"], float(m["value"]), now)
         super()._consume(data)
@@ -624,9 +629,10 @@ def hall_state(k: int) -> tuple[float, float]:
 
 async def _hall(url: str, n: int, seconds: float, follow: bool, same: bool = False) -> None:
     """The hall (see :func:`hall_main`)."""
-    clients = [RuntimeClient(url) for _ in range(n)]
+    base = url.partition("?")[0]
+    clients = [RuntimeClient(url)] + [RuntimeClient(base) for _ in range(n - 1)]
     readers = []
-    # the first to connect leads (--follow); the others join together
+    # the first to connect leads (--follow: ``url`` is the lead address); the others join together
     await clients[0].connect()
     readers.append(asyncio.ensure_future(clients[0].run(3600)))
     await _ready_runtime(clients[0])

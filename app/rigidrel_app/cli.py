@@ -389,7 +389,9 @@ def build_parser() -> OneLineParser:
     )
     sv.add_argument("--lesson", help="give a lesson: a lesson file (TOML) or a built-in lesson's name (paper)")
     sv.add_argument(
-        "--follow", action="store_true", help="with --lesson: every tab follows the leading tab's step (key L leads)"
+        "--follow",
+        action="store_true",
+        help="with --lesson: every tab follows the lecturer's step (whose tab opens the printed lead address)",
     )
     add_scene_subparsers(
         sv,

@@ -46,12 +46,13 @@ caption = "Anything goes."
 class LessonTab:
     """One tab giving the lesson, with the session behind it."""
 
-    def __init__(self, page: Any, app: App) -> None:
+    def __init__(self, page: Any, app: App, url: str | None = None) -> None:
+        """``url``: the address opened (the app's own by default; its lead address for the lecturer)."""
         before = set(app.sessions)
         self.page = page
         self.errors: list[str] = []
         self.page.on("pageerror", lambda e: self.errors.append(str(e)))
-        self.page.goto(app.url)
+        self.page.goto(url or app.url)
         self.page.wait_for_selector("label:text-is('Step')", timeout=120_000)  # a busy machine is slow
         new = wait_until(lambda: set(app.sessions) - before, timeout=60)
         self.session: Session = app.sessions[min(new)]
@@ -115,9 +116,9 @@ def open_tab(browser: Any) -> Iterator[OpenTab]:
     drawing, and the software renderer's time is the whole suite's)."""
     pages: list[Any] = []
 
-    def open_one(app: App, width: int = 1280, height: int = 720) -> LessonTab:
+    def open_one(app: App, width: int = 1280, height: int = 720, url: str | None = None) -> LessonTab:
         pages.append(browser.new_page(viewport={"width": width, "height": height}))
-        return LessonTab(pages[-1], app)
+        return LessonTab(pages[-1], app, url)
 
     try:
         yield open_one
@@ -230,42 +231,57 @@ def test_the_riding_step_rides_its_point(open_tab: OpenTab, lesson_app: App, sho
     assert tab.errors == []
 
 
-def test_follow_the_leading_tab(open_tab: OpenTab, shots: Path) -> None:
+def test_follow_the_lecturers_tab(open_tab: OpenTab, shots: Path) -> None:
+    """The lecturer's tab, opened at the lead address the server printed, leads; a student's tab
+    follows, has no Lead button, and its L is refused with a notice while the lecturer's tab stays."""
     app = App(host="127.0.0.1", port=0, lesson=PAPER, follow=True)
     try:
-        lead = open_tab(app)
-        other = open_tab(app)
-        assert app.leader == lead.session.client.client_id
+        student = open_tab(app)
+        assert app.leader is None  # a student's tab, first to come, does not lead
+        wait_until(lambda: "lecturer" in student.session.controls.lesson.status.content, timeout=30)  # type: ignore[union-attr]
+        assert app.lead_url is not None and app.lead_token is not None
+        lead = open_tab(app, url=app.lead_url)
+        wait_until(lambda: app.leader == lead.session.client.client_id, timeout=30)
+        assert lead.session.state.lecturer and not student.session.state.lecturer
+        # the token leaves the lecturer's address bar (a projector shows it); a reload keeps the lead
+        assert app.lead_token not in lead.page.url
+        assert lead.page.get_by_role("button", name="Lead the other tabs").count() == 1
+        assert student.page.get_by_role("button", name="Lead the other tabs").count() == 0
         lead.press("PageDown")
         lead.press("PageDown")
         lead.wait_caption(PAPER.steps[2].title)
-        other.wait_caption(PAPER.steps[2].title)
-        assert other.session.state.step == 2
-        wait_until(lambda: "follow" in other.session.controls.lesson.status.content.lower(), timeout=30)  # type: ignore[union-attr]
+        student.wait_caption(PAPER.steps[2].title)
+        assert student.session.state.step == 2
+        wait_until(lambda: "lecturer's step" in student.session.controls.lesson.status.content, timeout=30)  # type: ignore[union-attr]
 
         def node(tab: Any, name: str) -> dict[str, Any] | None:
             return tab.page.evaluate("(n) => window.__rigidrelPlayback.node(n)", name)
 
         # the follower shows the step's shared page (its own still picture hidden), the leader its own
-        wait_until(lambda: (node(other, "/shared/text/0") or {}).get("visible"), timeout=30)
-        assert not (node(other, "/page/static") or {}).get("visible", True)
+        wait_until(lambda: (node(student, "/shared/text/0") or {}).get("visible"), timeout=30)
+        assert not (node(student, "/page/static") or {}).get("visible", True)
         assert node(lead, "/shared") is None and not lead.session.painter.renderer.still_lent
-        labels = other.page.evaluate(
+        labels = student.page.evaluate(
             "() => Array.from({length: 40}, (_, k) => window.__rigidrelPlayback.node('/shared/text/' + k))"
             ".filter((n) => n && n.visible).map((n) => n.props.text)"
         )
-        assert sorted(labels) == sorted(t.text for t in other.session.painter.painting.still.texts if t.text.strip())  # type: ignore[union-attr]
-        other.page.screenshot(path=str(shots / "follower-shared-page.png"))
-        # the other tab moves on its own; then it takes the lead with L
-        other.press("L")
-        wait_until(lambda: app.leader == other.session.client.client_id, timeout=30)
-        other.press("PageDown")
-        lead.wait_caption(PAPER.steps[3].title)
-        # the new leader draws its own picture again; the shared page is gone from its canvas
-        wait_until(lambda: node(other, "/shared") is None, timeout=30)
-        assert not other.session.painter.renderer.still_lent  # its own picture (lines, or their image on a slow canvas)
-        other.page.screenshot(path=str(shots / "follower-now-leads.png"))
-        assert lead.errors == [] and other.errors == []
+        assert sorted(labels) == sorted(t.text for t in student.session.painter.painting.still.texts if t.text.strip())  # type: ignore[union-attr]
+        student.page.screenshot(path=str(shots / "follower-shared-page.png"))
+        # a student's L: refused, said in the Lesson folder; the lecturer's tab does not move
+        student.press("L")
+        notice = student.session.controls.notices["lesson"]
+        wait_until(lambda: notice.visible and "Only the lecturer's tab leads" in notice.content, timeout=30)
+        assert app.leader == lead.session.client.client_id and lead.session.state.step == 2
+        student.press("PageDown")  # the student's own move: the lecturer's tab stays where it is
+        student.wait_caption(PAPER.steps[3].title)
+        assert lead.session.state.step == 2 and app.leader_step == 2
+        student.page.screenshot(path=str(shots / "student-lead-refused.png"))
+        # the lecturer reloads: the address without the token still leads (the tab kept it)
+        lead.page.reload()
+        lead.page.wait_for_selector("label:text-is('Step')", timeout=120_000)
+        wait_until(lambda: app.leader is not None and app.leader != lead.session.client.client_id, timeout=60)
+        assert app.leader in app.lecturers
+        assert lead.errors == [] and student.errors == []
     finally:
         app.stop()
 

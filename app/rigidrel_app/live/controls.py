@@ -451,6 +451,8 @@ class Controls:
                 self.locks.visible = bool(lock_reason)
         if self.lesson is not None:
             self.lesson.show_step(state.step)
+            if self.lesson.lead.visible != state.lecturer:  # only the lecturer's tab leads
+                self.lesson.lead.visible = state.lecturer
 
     def _show_drawn(self, state: TabState, drawn: Drawn) -> None:
         r = drawn.resolved
@@ -520,16 +522,19 @@ class Controls:
             if handle.visible != shown:
                 handle.visible = shown
 
-    def show_leader(self, leads: bool | None) -> None:
-        """The Lesson folder's line on who leads (``None``: no tab leads)."""
+    def show_leader(self, leads: bool | None, lecturer: bool) -> None:
+        """The Lesson folder's line on who leads (``None``: no tab leads); ``lecturer``: this tab
+        was opened at the lead address and may lead."""
         if self.lesson is None:
             return
         if leads:
             text = "**This tab leads**: the other tabs follow its step."
-        elif leads is None:
-            text = "No tab leads: press L (or the button) to lead."
+        elif lecturer:
+            text = "No tab leads: press L (or the button) to lead." if leads is None else (
+                "Following your other tab's step (L here to lead instead).")  # fmt: skip
         else:
-            text = "Following the leading tab's step (L here to lead instead)."
+            text = "Waiting for the lecturer's tab, which leads the steps." if leads is None else (
+                "Following the lecturer's step.")  # fmt: skip
         if self.lesson.status.content != text:
             self.lesson.status.content = text
 
@@ -723,9 +728,9 @@ def build_lesson_controls(gui: viser.GuiApi, lesson: Lesson, follow: bool) -> Le
         step = gui.add_dropdown("Step", labels, initial_value=labels[0], hint="Go to a step (PgUp / PgDn, ← / →)")
         previous = gui.add_button("Previous step", icon=viser.Icon.ARROW_LEFT, color="gray", hint="PgUp or ←")
         nxt = gui.add_button("Next step", icon=viser.Icon.ARROW_RIGHT, hint="PgDn or →")
-        hint = "With --follow, every other tab follows this tab's step (L)"
+        hint = "Every other tab follows this tab's step (L); shown in the lecturer's tab only"
         lead = gui.add_button("Lead the other tabs", icon=viser.Icon.PRESENTATION, color="gray", hint=hint,
-                              visible=follow)  # fmt: skip
+                              visible=False)  # fmt: skip
         status = gui.add_markdown("", visible=follow)
         notice = gui.add_markdown("", visible=False)
     return LessonControls(lesson, step, previous, nxt, lead, status, notice)

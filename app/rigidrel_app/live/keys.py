@@ -7,7 +7,7 @@ on a focused slider handle move only that slider (``controls.ARROWS_STAY_IN_SLID
 
 A tab giving a lesson (``rigidrel serve --lesson``) has its own table, :data:`LESSON_HOTKEYS`:
 PageDown and → go to the next step, PageUp and ← to the previous one, C hides or shows the
-caption and L makes this tab the presenter that ``--follow`` tabs follow.
+caption and L makes the lecturer's tab (opened at the lead address) the one ``--follow`` tabs follow.
 """
 
 from __future__ import annotations
@@ -72,7 +72,13 @@ LESSON_HOTKEYS: tuple[Hotkey, ...] = (
     _SHARED[Action.TOGGLE_PRESENTER],
     _SHARED[Action.TOGGLE_THEME],
     Hotkey("C", Action.TOGGLE_CAPTION, "Caption over the lanes hidden / shown", "C", "caption"),
-    Hotkey("L", Action.LEAD, "Lead: with --follow, every other tab follows this tab's step", "L", "lead"),
+    Hotkey(
+        "L",
+        Action.LEAD,
+        "Lead: with --follow, every other tab follows this tab's step (the lecturer's tab only)",
+        "L",
+        "lead",
+    ),
 )
 
 #: Keys kept free for what is planned but not built: no hotkey here may take them.

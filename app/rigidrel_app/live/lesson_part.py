@@ -48,8 +48,12 @@ class LessonPart(Protocol):
         """Tell the server the tab went to step ``index`` by itself."""
         ...
 
-    def lead(self) -> None:
-        """The tab asks to lead (key L)."""
+    def lead(self) -> str | None:
+        """The tab asks to lead (key L): None, or why it may not."""
+        ...
+
+    def claim(self, token: str) -> bool:
+        """The tab's address carried the lead token ``token``: True if it is the lecturer's."""
         ...
 
 
@@ -74,21 +78,26 @@ class NoLesson:
     def changed_step(self, index: int) -> None:
         pass
 
-    def lead(self) -> None:
-        pass
+    def lead(self) -> str | None:
+        return None
+
+    def claim(self, token: str) -> bool:
+        return False
 
 
-#: What the server is told: the tab went to a step by itself, or asks to lead (key L).
+#: What the server is told: the tab went to a step by itself; it asks to lead (key L), and is
+#: told None or why it may not; its address carried a lead token, and is told if it is the lecturer's.
 StepChanged = Callable[[int], None]
-Lead = Callable[[], None]
+Lead = Callable[[], "str | None"]
+Claim = Callable[[str], bool]
 
 
 class GivenLesson:
-    """A tab giving ``lesson``; ``step_changed`` and ``lead`` tell the server."""
+    """A tab giving ``lesson``; ``step_changed``, ``lead`` and ``claim`` ask the server."""
 
-    def __init__(self, lesson: Lesson, step_changed: StepChanged, lead: Lead) -> None:
+    def __init__(self, lesson: Lesson, step_changed: StepChanged, lead: Lead, claim: Claim) -> None:
         self.lesson = lesson
-        self._step_changed, self._lead = step_changed, lead
+        self._step_changed, self._lead, self._claim = step_changed, lead, claim
         self._captions: dict[tuple[object, ...], str] = {}
 
     def step(self, index: int) -> int | None:
@@ -116,5 +125,8 @@ class GivenLesson:
     def changed_step(self, index: int) -> None:
         self._step_changed(index)
 
-    def lead(self) -> None:
-        self._lead()
+    def lead(self) -> str | None:
+        return self._lead()
+
+    def claim(self, token: str) -> bool:
+        return self._claim(token)

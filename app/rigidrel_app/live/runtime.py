@@ -35,6 +35,12 @@ class Report:
     event: Event
     timeline: str | None = None
     frame: int | None = None
+    lead: str | None = None
+    """With ``ready``: the lead token the tab's address carried (``?lead=...``), if any."""
+
+
+#: The longest lead token a report may carry (the server's are 22 characters).
+LEAD_CHARS = 64
 
 
 def parse_report(text: str) -> Report | None:
@@ -49,7 +55,8 @@ def parse_report(text: str) -> Report | None:
     if event not in EVENTS:
         return None
     if event == "ready":
-        return Report("ready")
+        lead = raw.get("lead")
+        return Report("ready", lead=lead if isinstance(lead, str) and 0 < len(lead) <= LEAD_CHARS else None)
     if not isinstance(timeline, str) or not isinstance(frame, int) or isinstance(frame, bool) or frame < 0:
         return None
     return Report(event, timeline, frame)

@@ -5,7 +5,9 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import ctypes
+import hmac
 import logging
+import secrets
 import signal
 import sys
 import threading
@@ -127,6 +129,13 @@ _ONE_LINE = _OneLine()
 _WEBSOCKET_LOGGERS = ("websockets", "websockets.server")
 
 
+#: Said to a tab that presses L (or sends the Lead button's click) but was not opened at the lead address.
+LEAD_REFUSED = (
+    "Only the lecturer's tab leads: the one opened at the lead address that rigidrel serve --follow "
+    "printed. This tab follows its steps."
+)
+
+
 class App:
     """A running server. ``with App(...) as app:`` starts it; leaving the block stops it.
 
@@ -151,8 +160,9 @@ class App:
         first scene's defaults);
         ``budget``: how many messages a tab may send before it is dropped; ``lesson``: every tab gives
         it, from step 1 (``start`` is then not used); ``follow``: every tab follows the leading tab's
-        step (the first tab to connect leads, or the last to press L; a tab that joins opens on the
-        leader's step); ``shade``: the theme every new tab opens in (each tab's key T changes its own);
+        step (the lecturer's tab leads: one opened at :attr:`lead_url`, whose token only the server's
+        console shows; a tab that joins opens on the leader's step); ``shade``: the theme every new
+        tab opens in (each tab's key T changes its own);
         ``still_image``: a slow canvas plays with its still picture as one image (:mod:`.still_image`)."""
         limit_heap_growth()
         self.shade: Shade = shade
@@ -160,7 +170,11 @@ class App:
         self.lesson = lesson
         self.follow = follow and lesson is not None
         self.leader: int | None = None
-        """The client id of the tab the others follow (``follow``), None before any tab connects."""
+        """The client id of the tab the others follow (``follow``), None before a lecturer's tab connects."""
+        self.lead_token = secrets.token_urlsafe(16) if self.follow else None
+        """What a tab's address carries to lead (``?lead=...``, :attr:`lead_url`); None without ``follow``."""
+        self.lecturers: set[int] = set()
+        """The tabs opened at :attr:`lead_url`: only these lead (key L, the Lead button)."""
         self.leader_step = 0
         """The leading tab's step (from 0)."""
         self._followed = 0
@@ -273,9 +287,7 @@ class App:
                 if session is not None and not gone:
                     self.sessions[client.client_id] = session
                     if self.follow:
-                        if self.leader is None:
-                            self.leader, self.leader_step = client.client_id, session.state.step
-                        self._followed += 1
+                        self._followed += 1  # it is told who leads
         assert session is not None  # Session() returned (else its exception went on up)
         if gone:
             session.closed = True
@@ -297,8 +309,9 @@ class App:
         if session is not None:
             session.closed = True
             with self._lock:
+                self.lecturers.discard(client.client_id)
                 if self.leader == client.client_id:
-                    self.leader = None  # the next tab to connect, or to press L, leads
+                    self.leader = None  # the lecturer's next tab, or another of its tabs pressing L, leads
                     self._followed += 1
 
     # ------------------------------------------------------------------ --follow
@@ -310,12 +323,33 @@ class App:
                 self.leader_step = index
                 self._followed += 1
 
-    def lead(self, session: Session) -> None:
-        """Key L: this tab leads from now on, at its own step."""
+    @property
+    def lead_url(self) -> str | None:
+        """The address the lecturer opens to lead (``follow``), else None."""
+        return None if self.lead_token is None else f"{self.url}/?lead={self.lead_token}"
+
+    def lecturer(self, session: Session, token: str) -> bool:
+        """A tab's address carried ``token``: if it is this server's, the tab is the lecturer's and
+        leads from now on, at its own step."""
+        if self.lead_token is None or not hmac.compare_digest(token.encode(), self.lead_token.encode()):
+            return False
         with self._lock:
-            if self.follow:
-                self.leader, self.leader_step = session.client.client_id, session.state.step
-                self._followed += 1
+            self.lecturers.add(session.client.client_id)
+            self.leader, self.leader_step = session.client.client_id, session.state.step
+            self._followed += 1
+        return True
+
+    def lead(self, session: Session) -> str | None:
+        """Key L: a lecturer's tab leads from now on, at its own step; any other tab is refused (the
+        reason is returned)."""
+        with self._lock:
+            if not self.follow:
+                return None
+            if session.client.client_id not in self.lecturers:
+                return LEAD_REFUSED
+            self.leader, self.leader_step = session.client.client_id, session.state.step
+            self._followed += 1
+        return None
 
     def _pass_on_steps(self) -> None:
         """Bring every other tab to the leading tab's step and tell each tab who leads."""
@@ -396,9 +430,11 @@ def serve(
     signal.signal(signal.SIGTERM, _terminate)
     with App(host, port, start=start, lesson=lesson, follow=follow, shade=shade, still_image=still_image) as app:
         if lesson is not None:
-            followed = ", every tab following the leading one (key L leads)" if app.follow else ""
+            followed = ", every tab following the lecturer's" if app.follow else ""
             print(f"rigidrel: lesson {lesson.title!r}, {len(lesson.steps)} steps{followed}", flush=True)
         print(f"rigidrel: serving on {app.url}  (Ctrl-C to stop)", flush=True)
+        if app.lead_url is not None:
+            print(f"rigidrel: lead from {app.lead_url}  (the lecturer's address: do not show it)", flush=True)
         while not done.wait(0.5):
             pass
         print("rigidrel: shutting down", flush=True)

@@ -50,8 +50,12 @@ class LessonHooks(Protocol):
         """This tab went to step ``index`` (with ``--follow``, the leading tab's step is followed)."""
         ...
 
-    def lead(self, session: Session) -> None:
-        """This tab asks to lead (key L)."""
+    def lead(self, session: Session) -> str | None:
+        """This tab asks to lead (key L): None if it leads now (or nothing follows), else why not."""
+        ...
+
+    def lecturer(self, session: Session, token: str) -> bool:
+        """This tab's address carried the lead ``token``: True if it is the lecturer's (it leads)."""
         ...
 
 
@@ -91,6 +95,7 @@ class Session:
                 lesson,
                 lambda index: None if told is None else told.step_changed(self, index),
                 lambda: None if told is None else told.lead(self),
+                lambda token: told is not None and told.lecturer(self, token),
             )
         self.caption_key = f"rigidrel_caption_{uuid.uuid4().hex}"
         """This tab's localStorage key for the caption band and the page's style (:mod:`.controls`)."""
@@ -297,7 +302,7 @@ class Session:
             Action.PREVIOUS_STEP: lambda: step(-1),
             Action.NEXT_STEP: lambda: step(1),
             Action.TOGGLE_CAPTION: lambda: self._show(s().with_caption(not s().caption_shown)),
-            Action.LEAD: lambda: self.lesson.lead(),
+            Action.LEAD: self._lead,
         }
 
     def set_presenter(self, on: bool) -> None:
@@ -403,11 +408,17 @@ class Session:
                 self.client.local_storage.set_item(self.caption_key, self._caption_sent)
         self.client.flush()
 
+    def _lead(self) -> None:
+        """Key L or the Lead button: the lecturer's tab leads; any other is told why not."""
+        refusal = self.lesson.lead()
+        if refusal is not None:
+            self.refuse(refusal, "lesson")
+
     def show_leader(self, leads: bool | None) -> None:
         """Who leads, in the Lesson folder (``None``: no tab leads)."""
         with self.lock:
             if not self.closed:
-                self.controls.show_leader(leads)
+                self.controls.show_leader(leads, self.state.lecturer)
 
     # ------------------------------------------------------------------ playback in the browser
     @property
@@ -422,6 +433,8 @@ class Session:
             if report is None or self.closed:
                 return
             with self.client.atomic():
+                if report.event == "ready" and report.lead is not None and self.lesson.claim(report.lead):
+                    self._show(self.state.as_lecturer())
                 if report.event == "ready" and not self.player.ready:
                     self.painter.runtime_ready()
                     self.draw_now(force_plots=True)

@@ -68,6 +68,8 @@ class TabState:
     """The controls the step fixes: parameter names and any of ``scene``, ``frame``, ``time``."""
     step_window: tuple[str, tuple[float, float]] | None = None
     """The step's scene and its time window: the playback window while that scene shows."""
+    lecturer: bool = False
+    """The tab was opened at the lecturer's lead address (``--follow``): it may lead the others."""
 
     @classmethod
     def opening(cls, settings: Settings, shade: Shade = "light") -> TabState:
@@ -118,6 +120,9 @@ class TabState:
         return replace(self, caption_shown=shown)
 
     # ------------------------------------------------------------------ a lesson
+    def as_lecturer(self) -> TabState:
+        return replace(self, lecturer=True)
+
     def arriving(self, index: int, arrival: Arrival) -> TabState:
         """At a lesson's step ``index``: its locks and window (its settings are asked next)."""
         window = (arrival.settings.scene, arrival.window) if arrival.window is not None else None

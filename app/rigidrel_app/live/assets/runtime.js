@@ -132,6 +132,23 @@
   }
 
   // ------------------------------------------------------------------ the runtime
+  // The lecturer's lead token (rigidrel serve --follow prints the address with ?lead=...): kept
+  // for this tab's reloads, and taken out of the address bar, which a projector shows.
+  function leadToken() {
+    const params = new URLSearchParams(location.search);
+    let lead = params.get("lead");
+    try {
+      if (lead) sessionStorage.setItem("rigidrel-lead", lead);
+      else lead = sessionStorage.getItem("rigidrel-lead");
+    } catch (e) { /* storage refused: the address's token still counts */ }
+    if (params.has("lead")) {
+      params.delete("lead");
+      const rest = params.toString();
+      history.replaceState(history.state, "", location.pathname + (rest ? "?" + rest : "") + location.hash);
+    }
+    return lead;
+  }
+
   class Runtime {
     constructor() {
       this.viewer = null;
@@ -175,7 +192,8 @@
       };
       this.queue = queue;
       this.push = push;
-      this.report({ event: "ready" });
+      const lead = leadToken();
+      this.report(lead ? { event: "ready", lead } : { event: "ready" });
     }
     dispose() {
       this.disposed = true;
