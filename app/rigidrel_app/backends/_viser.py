@@ -41,6 +41,9 @@ The browser, private to viser's client (inventory; the scripts in ``live/assets/
   wire shapes of ``SceneNodeUpdateMessage``, ``SetPositionMessage``, ``SetOrientationMessage``,
   ``SetSceneNodeVisibilityMessage`` and the creation messages, ``owner`` included, and numpy
   fields as typed arrays of their dtype.
+- the same context value's ``interaction.cameraLocks.acquire(reason)`` (the lock viser's gizmo
+  drags take: its camera controls disabled, keyboard movement included) and
+  ``useDevSettings.setState({enableOrbitCrosshair})``: the picture kept still under the mouse.
 """
 
 from __future__ import annotations

@@ -192,11 +192,31 @@
       };
       this.queue = queue;
       this.push = push;
+      this.lockCamera(viewer);
       const lead = leadToken();
       this.report(lead ? { event: "ready", lead } : { event: "ready" });
     }
+    // The page is a flat picture the server keeps in view: a drag, the wheel, a touch or the arrow
+    // keys must not orbit, zoom or tilt it mid-lecture (the arrows step time, the server's keys).
+    // viser's own lock (the one its gizmo drags take) disables its camera controls, keyboard
+    // movement included; the server still sets the camera. The crosshair those keys would show goes.
+    lockCamera(viewer) {
+      const locks = viewer.interaction && viewer.interaction.cameraLocks;
+      if (!locks || typeof locks.acquire !== "function") {
+        console.error("rigidrel: viser's camera lock not found; the mouse can move the picture");
+        return;
+      }
+      this.releaseCamera = locks.acquire("rigidrel: the picture stays in view");
+      const dev = viewer.useDevSettings;
+      if (dev && typeof dev.setState === "function") dev.setState({ enableOrbitCrosshair: false });
+    }
+    cameraLocked() {
+      const control = this.viewer && this.viewer.mutable.current.cameraControl;
+      return !!control && control.enabled === false;
+    }
     dispose() {
       this.disposed = true;
+      if (this.releaseCamera) this.releaseCamera();
       if (this.raf !== null) cancelAnimationFrame(this.raf);
       if (this.queue && this.push) this.queue.push = this.push;
     }
