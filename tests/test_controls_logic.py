@@ -22,7 +22,16 @@ from rigidrel_app.live.controls import BETA, LOG_SLIDER_LABEL, SPEED, notice_pla
 from rigidrel_app.live.keys import HOTKEYS, LESSON_HOTKEYS, RESERVED, Action, action_for, key_line
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS, Playback
 from rigidrel_app.view.entry import NumberEntry, Refuse, Typing, Undo, Use, read_number, refusal
-from rigidrel_app.view.state import CUSTOM_FRAME, NO_PRESET, Settings, preset_menu, preset_step
+from rigidrel_app.view.state import (
+    CUSTOM_FRAME,
+    NO_PRESET,
+    Resolved,
+    Settings,
+    event_times,
+    preset_menu,
+    preset_step,
+    resolve,
+)
 
 #: Every parameter the app sets with a slider, from the registry.
 SLIDER_PARAMETERS = list(
@@ -202,6 +211,8 @@ def test_each_action_has_one_key_viser_knows() -> None:
         "space": Action.TOGGLE_PLAY,
         "arrowleft": Action.STEP_BACK,
         "arrowright": Action.STEP_FORWARD,
+        "P": Action.PREVIOUS_EVENT,
+        "N": Action.NEXT_EVENT,
         "pageup": Action.PREVIOUS_FIGURE,  # a presentation clicker's "back"
         "pagedown": Action.NEXT_FIGURE,  # and "next"
         "R": Action.RESET_VIEW,
@@ -210,6 +221,30 @@ def test_each_action_has_one_key_viser_knows() -> None:
     }
     assert action_for("Q") is None
     assert not set(RESERVED) & set(keys) and set(RESERVED) <= viser_keys
+
+
+def test_n_and_p_walk_the_named_events_of_the_lab_and_the_frame() -> None:
+    """N and P jump between the named events' times on the playback clock (lab t and the frame's
+    t′), each pressed again moving on, and stay put past the last or the first."""
+    resolved = resolve(Settings("rod-collision"))
+    assert isinstance(resolved, Resolved)
+    times = event_times(resolved)
+    lab = {t for t, _ in resolved.scene.events.values()}
+    framed = {t for t, _ in resolved.scene.events_in(frame=resolved.frame).values()}
+    assert set(times) == lab | framed and list(times) == sorted(set(times))
+    window = (min(times) - 0.5, max(times) + 0.5)
+    p = Playback(window, window[0])
+    seen = []
+    for _ in range(len(times) + 2):  # past the last: it stays there, paused
+        p = p.to_event(times, 1)
+        seen.append(p.now)
+    assert seen == [*times, times[-1], times[-1]] and not p.playing
+    for t in reversed(times[:-1]):
+        p = p.to_event(times, -1)
+        assert p.now == t
+    assert p.to_event(times, -1).now == times[0]
+    inside = Playback((times[1], times[-2]), times[1])  # times outside the window are skipped
+    assert inside.to_event(times, -1).now == times[1] and inside.to_event(times, 1).now == times[2]
 
 
 def test_the_key_line_lists_every_key() -> None:

@@ -19,7 +19,7 @@ from rigidrel_app.live.controls import LOG_SLIDER_LABEL
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS
 from rigidrel_app.live.server import App
 from rigidrel_app.view.scenario import Scenario
-from rigidrel_app.view.state import NO_PRESET, Settings, preset_menu
+from rigidrel_app.view.state import NO_PRESET, Settings, event_times, preset_menu
 from rigidrel_app.view.vocabulary import ROD_COLORS
 from tests.browser.test_app_browser import AppPage
 from tests.viser_client import wait_until
@@ -132,6 +132,23 @@ def test_a_drag_a_wheel_and_ten_arrows_leave_the_picture_upright(tab: AppPage, s
     wait_until(lambda: np.allclose(camera.position, pose[0]) and np.allclose(camera.look_at, pose[1]))
     assert np.allclose(camera.up_direction, pose[2])
     assert tab.page.evaluate("() => window.__rigidrelPlayback.cameraLocked()")
+
+
+def test_n_and_p_jump_to_the_named_events(collision: AppPage) -> None:
+    """N: the clock at the next named event's time (lab t or frame t′), the readout with it; P back."""
+    tab = collision
+    drawn = tab.session.painter.drawn
+    assert drawn is not None
+    p = tab.session.state.playback
+    ahead = [t for t in event_times(drawn.resolved) if p.now + 1e-9 < t <= p.window[1]]
+    press(tab, "n")
+    wait_until(lambda: tab.session.state.playback.now == ahead[0])
+    wait_until(lambda: float(box(tab, "t, t'").input_value()) == pytest.approx(round(ahead[0], 6), abs=1e-6))
+    press(tab, "n")
+    wait_until(lambda: tab.session.state.playback.now == ahead[1])
+    press(tab, "p")
+    wait_until(lambda: tab.session.state.playback.now == ahead[0])
+    assert not tab.session.state.playback.playing
 
 
 def test_arrows_on_a_focused_slider_move_only_that_slider(tab: AppPage) -> None:

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 #: The keys used here, as viser names them (a subset of its ``HotkeyKey``).
-Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "T", "C", "L"]
+Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "T", "C", "L", "N", "P"]
 
 
 class Action(enum.Enum):
@@ -26,6 +26,8 @@ class Action(enum.Enum):
     TOGGLE_PLAY = "toggle play"
     STEP_BACK = "step back"
     STEP_FORWARD = "step forward"
+    PREVIOUS_EVENT = "previous event"
+    NEXT_EVENT = "next event"
     PREVIOUS_FIGURE = "previous figure"
     NEXT_FIGURE = "next figure"
     RESET_VIEW = "reset view"
@@ -53,6 +55,8 @@ HOTKEYS: tuple[Hotkey, ...] = (
     Hotkey("space", Action.TOGGLE_PLAY, "Play / pause", "Space", "play"),
     Hotkey("arrowleft", Action.STEP_BACK, "One frame back", "←", "step"),
     Hotkey("arrowright", Action.STEP_FORWARD, "One frame forward", "→", "step"),
+    Hotkey("P", Action.PREVIOUS_EVENT, "The previous named event (its time in the lab or the frame)", "P", "event"),
+    Hotkey("N", Action.NEXT_EVENT, "The next named event (its time in the lab or the frame)", "N", "event"),
     Hotkey("pageup", Action.PREVIOUS_FIGURE, "Previous paper figure of this scene", "PgUp", "figure"),
     Hotkey("pagedown", Action.NEXT_FIGURE, "Next paper figure of this scene", "PgDn", "figure"),
     Hotkey("R", Action.RESET_VIEW, "Reset view", "R", "reset"),
@@ -68,6 +72,8 @@ LESSON_HOTKEYS: tuple[Hotkey, ...] = (
     Hotkey("arrowright", Action.NEXT_STEP, "Next step of the lesson", "→", "step"),
     Hotkey("pageup", Action.PREVIOUS_STEP, "Previous step of the lesson (clicker)", "PgUp", "step"),
     Hotkey("pagedown", Action.NEXT_STEP, "Next step of the lesson (clicker)", "PgDn", "step"),
+    _SHARED[Action.PREVIOUS_EVENT],
+    _SHARED[Action.NEXT_EVENT],
     _SHARED[Action.RESET_VIEW],
     _SHARED[Action.TOGGLE_PRESENTER],
     _SHARED[Action.TOGGLE_THEME],

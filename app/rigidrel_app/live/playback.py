@@ -57,6 +57,20 @@ class Playback:
         t0, t1 = self.window
         return self.seek(self.now + frames * self.speed * (t1 - t0) / (PLAY_SECONDS * FRAME_RATE))
 
+    def to_event(self, times: tuple[float, ...], direction: int) -> Playback:
+        """Paused at the first of ``times`` (sorted) after the clock (``direction`` 1) or before it
+        (-1), inside the window; where it is if there is none. A time within 1e-9 of the window's
+        span of the clock counts as the clock's own (a key pressed again moves on)."""
+        t0, t1 = self.window
+        near = 1e-9 * max(t1 - t0, 1e-300)
+        inside = [t for t in times if t0 <= t <= t1]
+        after = (
+            [t for t in inside if t > self.now + near] if direction > 0 else [t for t in inside if t < self.now - near]
+        )
+        if not after:
+            return replace(self, playing=False)
+        return self.seek(after[0] if direction > 0 else after[-1])
+
     def with_window(self, window: tuple[float, float]) -> Playback:
         """Another scene's window; ``now`` stays where it was if the window holds it."""
         return replace(self, window=window, now=min(max(self.now, window[0]), window[1]))

@@ -26,7 +26,7 @@ from ..view.layers import Layer
 from ..view.layout import CanvasSize
 from ..view.notice import Place
 from ..view.scene_view import PLOT_HZ, Drawn
-from ..view.state import Resolved, Settings, preset_step, scene_presets
+from ..view.state import Resolved, Settings, event_times, preset_step, scene_presets
 from ..view.state import frame_choice as frame_choice_of
 from ..view.state import resolve as resolve_settings
 from ..view.vocabulary import Shade
@@ -286,6 +286,12 @@ class Session:
             self.set_playback(s().playback.stepped(by))
             self.draw_now(force_plots=True)
 
+        def event(by: int) -> None:
+            drawn = self.painter.drawn
+            if drawn is not None:
+                self.set_playback(s().playback.to_event(event_times(drawn.resolved), by))
+                self.draw_now(force_plots=True)
+
         def figure(by: int) -> None:
             if (chosen := preset_step(s().settings, by)) is not None:
                 self.change(chosen, refit=True)
@@ -294,6 +300,8 @@ class Session:
             Action.TOGGLE_PLAY: toggle_play,
             Action.STEP_BACK: lambda: frames(-1),
             Action.STEP_FORWARD: lambda: frames(1),
+            Action.PREVIOUS_EVENT: lambda: event(-1),
+            Action.NEXT_EVENT: lambda: event(1),
             Action.PREVIOUS_FIGURE: lambda: figure(-1),
             Action.NEXT_FIGURE: lambda: figure(1),
             Action.RESET_VIEW: lambda: self.painter.fit_camera(force=True),

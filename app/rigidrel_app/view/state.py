@@ -144,6 +144,15 @@ class Resolved:
     """The event whose light cone the diagrams draw (checked against the scene), or ``None``."""
 
 
+def event_times(resolved: Resolved) -> tuple[float, ...]:
+    """The times of the scene's named events on the playback clock, sorted, each once: their lab
+    ``t`` (the lab lane shows t = the clock) and their ``t′`` in the chosen frame (the lower lane
+    shows t′ = the clock), each computed by the core in its frame (keys N and P jump to them)."""
+    scene = resolved.scene
+    times = {t for t, _ in scene.events.values()} | {t for t, _ in scene.events_in(frame=resolved.frame).values()}
+    return tuple(sorted(times))
+
+
 def presets() -> dict[str, Settings]:
     """Every paper figure of every registered scene, by its menu label, in teaching order."""
     return {label: s for kind in rr.scene_descriptions() for label, s in scene_presets(kind).items()}
