@@ -151,6 +151,25 @@ def test_n_and_p_jump_to_the_named_events(collision: AppPage) -> None:
     assert not tab.session.state.playback.playing
 
 
+def test_enter_and_escape_give_the_keys_back_to_the_page(collision: AppPage) -> None:
+    """A value typed and Enter: applied, and the box lets go, so the clicker's PageDown moves on;
+    Escape does the same."""
+    tab = collision
+    wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)
+    type_keys(tab, "V1", "0.7")
+    tab.page.keyboard.press("Enter")
+    wait_until(lambda: tab.session.state.settings.value("v1") == 0.7)
+    wait_until(lambda: tab.page.evaluate("() => document.activeElement === document.body"))
+    tab.page.keyboard.press("PageDown")  # nothing focused: the clicker's "next" is the page's
+    wait_until(lambda: tab.control("Paper figure").input_value() == FIG3)  # from no figure, the first
+    type_keys(tab, "V1", "0.65")
+    tab.page.keyboard.press("Escape")
+    wait_until(lambda: tab.page.evaluate("() => document.activeElement === document.body"))
+    now = tab.session.state.playback.now
+    tab.page.keyboard.press("ArrowRight")  # the arrows step the clock again
+    wait_until(lambda: tab.session.state.playback.now > now)
+
+
 def test_arrows_on_a_focused_slider_move_only_that_slider(tab: AppPage) -> None:
     """A slider keeps the focus after a drag: then → moves that slider, and does not also step
     playback; the clicker's PageDown still goes to the next figure."""

@@ -276,8 +276,10 @@ def locked_box_css(controls: Sequence[NumberControl]) -> str:
 #: browser's way); they must not also step playback, as viser's hotkeys listen on the whole page
 #: (dragging V and then stepping would change V too). A listener on the page's body stops those two
 #: keys on their way up from a slider handle, after the slider has used them and before the
-#: hotkeys hear them. viser's HTML element runs no ``<script>``; an image that fails to load runs
-#: its ``onerror`` (the listener is added once per page).
+#: hotkeys hear them. Enter and Escape in a box give the keys back to the page (the box lets go of
+#: the focus once it has taken the key), so a clicker's PageDown and Space work again after a value
+#: is typed. viser's HTML element runs no ``<script>``; an image that fails to load runs its
+#: ``onerror`` (the listener is added once per page).
 ARROWS_STAY_IN_SLIDERS = (
     f'<img alt="" src="data:," style="display: none" onerror="{html.escape(page_asset("arrows.js"), quote=True)}">'
 )
