@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import json
+import math
 import sys
 import textwrap
 import time
@@ -22,6 +23,7 @@ import numpy as np
 import rigidrel_core as rr
 
 from .export.paths import EXIT_USAGE, fail, out_dir
+from .view.describe import describe
 from .view.scenario import (
     FRAME_GLOSSES,
     FRAME_HELP,
@@ -33,7 +35,7 @@ from .view.scenario import (
     scenario_from_args,
 )
 from .view.signals import signals_in, verdict_lines
-from .view.state import beta_problem, format_value, frame_from_text
+from .view.state import Resolved, beta_problem, format_value, frame_from_text
 from .view.vocabulary import SHADES, Shade
 
 __all__ = ["EXIT_USAGE", "build_parser", "main"]
@@ -311,6 +313,16 @@ def cmd_events(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_describe(args: argparse.Namespace) -> int:
+    """The canvas of ``rigidrel serve SCENE ...`` at clock time ``--at``, in the words a tab's
+    screen reader hears (:func:`~rigidrel_app.view.describe.describe`)."""
+    scene, frame = scene_from_args("rigidrel describe", args, None)
+    if not math.isfinite(args.at):
+        fail("rigidrel describe", f"--at must be a finite time (c = 1, units of rod 1's rest length); got {args.at!r}")
+    print(describe(Resolved(scene, frame), args.at).full)
+    return 0
+
+
 def cmd_scenes(args: argparse.Namespace) -> int:
     """Every registered scene, its parameters with their ranges, its frames and events."""
     del args
@@ -355,6 +367,15 @@ def build_parser() -> OneLineParser:
     ev = sub.add_parser("events", help="events, final velocities and 4-momentum budget of a scene")
     add_scene_subparsers(ev, [ev_common], frame_help + " (default: the lab)")
     ev.set_defaults(func=cmd_events)
+
+    ds_common = SceneParser(add_help=False)
+    ds_common.add_argument(
+        "--at", type=float, default=0.0, metavar="T",
+        help="the playback clock: the lab lane's t and the lower lane's t' (default 0, the origin event)",
+    )  # fmt: skip
+    ds = sub.add_parser("describe", help="what the canvas shows at one instant, in words (as a screen reader hears it)")
+    add_scene_subparsers(ds, [ds_common], frame_help + " (default: the scene's default frame, as the app opens)")
+    ds.set_defaults(func=cmd_describe)
 
     sc = sub.add_parser("scenes", help="list every scene with its parameters, ranges, frames and events")
     sc.set_defaults(func=cmd_scenes)

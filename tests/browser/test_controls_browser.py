@@ -170,6 +170,28 @@ def test_enter_and_escape_give_the_keys_back_to_the_page(collision: AppPage) -> 
     wait_until(lambda: tab.session.state.playback.now > now)
 
 
+def test_the_canvas_is_described_in_a_polite_live_region(collision: AppPage) -> None:
+    """A screen reader hears the scene and its frames when they change (not every frame), and
+    everything at the clock on key D, in a polite live region nobody sees."""
+    tab = collision
+    region = tab.page.locator("#rigidrel-said")
+    assert region.get_attribute("aria-live") == "polite" and region.get_attribute("role") == "status"
+    wait_until(lambda: region.text_content().startswith("Rod-rod collision"))
+    assert not region.is_visible() or region.bounding_box()["width"] <= 1  # type: ignore[index]
+    tab.choose("Frame", "lab")
+    wait_until(lambda: "Lower lane: the lab frame" in region.text_content())
+    said = region.text_content()
+    press(tab, " ")  # playing: the words stay (no announcement per frame)
+    wait_until(lambda: tab.session.player.playing)
+    clock = tab.session.state.playback.now
+    wait_until(lambda: tab.session.state.playback.now > clock + 0.2)
+    assert region.text_content() == said
+    press(tab, " ")
+    wait_until(lambda: tab.session.playback_settled)
+    press(tab, "d")
+    wait_until(lambda: "The lab lane at t = " in region.text_content() and "Causality:" in region.text_content())
+
+
 def test_arrows_on_a_focused_slider_move_only_that_slider(tab: AppPage) -> None:
     """A slider keeps the focus after a drag: then → moves that slider, and does not also step
     playback; the clicker's PageDown still goes to the next figure."""

@@ -675,6 +675,13 @@ def caption_message(band_html: str, shown: bool, shade: Shade = "light") -> str:
     return json.dumps({"html": band, "shown": shown, "style": page_style(shade)})
 
 
+def said_message(text: str, count: int) -> str:
+    """What the server puts in the tab's localStorage (under the caption's key and ``-said``) for
+    the page's polite live region to announce (read by :data:`_CAPTION_JS`); ``count`` makes the
+    same words a new message."""
+    return json.dumps({"text": text, "n": count})
+
+
 #: The panel's look: viser's, in the app's blue, wide controls, no logo and no share button (it
 #: needs the internet).
 PANEL_LOOK: dict[str, Any] = {

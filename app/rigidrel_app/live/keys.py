@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 #: The keys used here, as viser names them (a subset of its ``HotkeyKey``).
-Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "T", "C", "L", "N", "P"]
+Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "T", "C", "L", "N", "P", "D"]
 
 
 class Action(enum.Enum):
@@ -28,6 +28,7 @@ class Action(enum.Enum):
     STEP_FORWARD = "step forward"
     PREVIOUS_EVENT = "previous event"
     NEXT_EVENT = "next event"
+    DESCRIBE = "describe"
     PREVIOUS_FIGURE = "previous figure"
     NEXT_FIGURE = "next figure"
     RESET_VIEW = "reset view"
@@ -62,6 +63,7 @@ HOTKEYS: tuple[Hotkey, ...] = (
     Hotkey("R", Action.RESET_VIEW, "Reset view", "R", "reset"),
     Hotkey("F", Action.TOGGLE_PRESENTER, "Presenter mode (panel hidden, larger text) on / off", "F", "presenter"),
     Hotkey("T", Action.TOGGLE_THEME, "Dark projector theme (light on black) on / off", "T", "theme"),
+    Hotkey("D", Action.DESCRIBE, "Describe the canvas in words (read by a screen reader)", "D", "describe"),
 )
 
 #: A lesson's keys: the clicker and the arrows move between steps (no frame stepping, no figures).
@@ -77,6 +79,7 @@ LESSON_HOTKEYS: tuple[Hotkey, ...] = (
     _SHARED[Action.RESET_VIEW],
     _SHARED[Action.TOGGLE_PRESENTER],
     _SHARED[Action.TOGGLE_THEME],
+    _SHARED[Action.DESCRIBE],
     Hotkey("C", Action.TOGGLE_CAPTION, "Caption over the lanes hidden / shown", "C", "caption"),
     Hotkey(
         "L",

@@ -44,6 +44,10 @@ class LessonPart(Protocol):
         ``index``'s band (the current step's if None), or none without a lesson."""
         ...
 
+    def said(self, state: TabState) -> str:
+        """The current step's title and caption in plain words, for a screen reader ("" without a lesson)."""
+        ...
+
     def changed_step(self, index: int) -> None:
         """Tell the server the tab went to step ``index`` by itself."""
         ...
@@ -74,6 +78,9 @@ class NoLesson:
 
     def caption(self, state: TabState, index: int | None = None) -> str:
         return caption_message("", False, state.shade)
+
+    def said(self, state: TabState) -> str:
+        return ""
 
     def changed_step(self, index: int) -> None:
         pass
@@ -121,6 +128,11 @@ class GivenLesson:
             band = caption_html(self.lesson.steps[k], state.presenter, off_step)
             self._captions[key] = caption_message(band, state.caption_shown, state.shade)
         return self._captions[key]
+
+    def said(self, state: TabState) -> str:
+        step = self.lesson.steps[state.step]
+        caption = step.caption.replace("*", "").replace("`", "")  # Markdown's emphasis is not read out
+        return f"Step {state.step + 1} of {len(self.lesson.steps)}: {step.title}. {caption}"
 
     def changed_step(self, index: int) -> None:
         self._step_changed(index)

@@ -22,17 +22,18 @@ import rigidrel_core as rr
 
 from ..backends._viser import handle_uuid, run_javascript, scene_owner
 from ..lessons import Lesson
+from ..view.describe import describe
 from ..view.layers import Layer
 from ..view.layout import CanvasSize
 from ..view.notice import Place
 from ..view.scene_view import PLOT_HZ, Drawn
-from ..view.state import Resolved, Settings, event_times, preset_step, scene_presets
+from ..view.state import Resolved, Settings, event_times, preset_menu, preset_step, scene_presets
 from ..view.state import frame_choice as frame_choice_of
 from ..view.state import resolve as resolve_settings
 from ..view.vocabulary import Shade
 from .browser_player import BrowserPlayer
 from .canvas_report import add_canvas_report, decode
-from .controls import build_controls, notice_place
+from .controls import build_controls, notice_place, said_message
 from .keys import Action
 from .lesson_part import BLANK_CAPTION, GivenLesson, LessonPart, NoLesson
 from .painter import Painter
@@ -100,6 +101,8 @@ class Session:
         self.caption_key = f"rigidrel_caption_{uuid.uuid4().hex}"
         """This tab's localStorage key for the caption band and the page's style (:mod:`.controls`)."""
         self._caption_sent = BLANK_CAPTION
+        self._said_of: tuple[object, ...] | None = None
+        self._said = 0
         self._keys = self._key_actions()
         self._last_clock = 0.0
         asked, notice = settings or Settings(), ""
@@ -202,6 +205,22 @@ class Session:
             self.draw_now(force_plots=True)
         if self.state.playback.playing:
             self._play_in_browser()
+        self._say()
+
+    def _say(self, full: bool = False) -> None:
+        """What the canvas shows, in words, to the page's live region (:mod:`~rigidrel_app.view.describe`):
+        its summary when the scene, figure, frame, look or step changed (never every frame), with the
+        step's caption; everything at the clock if ``full`` (key D)."""
+        drawn, s = self.painter.drawn, self.state
+        if drawn is None or s.shown is None:
+            return
+        key = (s.shown.scene, preset_menu(s.shown).value, self.frame_choice(), s.step)
+        if not full and key == self._said_of:
+            return
+        self._said_of, self._said = key, self._said + 1
+        words = describe(drawn.resolved, s.playback.now)
+        text = " ".join(filter(None, (self.lesson.said(s), words.full if full else words.summary)))
+        self.client.local_storage.set_item(f"{self.caption_key}-said", said_message(text, self._said))
 
     def draw_now(self, force_plots: bool = False) -> None:
         """The canvas at the clock, in one batch (one instant); the clock's box and the scenario
@@ -311,6 +330,7 @@ class Session:
             Action.NEXT_STEP: lambda: step(1),
             Action.TOGGLE_CAPTION: lambda: self._show(s().with_caption(not s().caption_shown)),
             Action.LEAD: self._lead,
+            Action.DESCRIBE: lambda: self._say(full=True),
         }
 
     def set_presenter(self, on: bool) -> None:

@@ -15,6 +15,24 @@ if (!window.rigidrelCaption) {
     root.style.height = 'auto'; root.style.top = h + 'px';
   };
   new ResizeObserver(fit).observe(band);
+  // What the canvas shows, in words, for a screen reader: announced politely when the server
+  // says it (a scene, figure, frame or step change, or key D), never every frame. Seen by no one.
+  var said = document.createElement('div');
+  said.id = 'rigidrel-said';
+  said.setAttribute('role', 'status');
+  said.setAttribute('aria-live', 'polite');
+  said.setAttribute('aria-atomic', 'true');
+  said.style.cssText = 'position:absolute;width:1px;height:1px;margin:-1px;padding:0;border:0;'
+    + 'overflow:hidden;clip:rect(0 0 0 0);clip-path:inset(50%);white-space:normal';
+  document.body.appendChild(said);
+  setInterval(function () {
+    var v = localStorage.getItem(window.rigidrelCaptionKey + '-said');
+    if (v === null) return;
+    localStorage.removeItem(window.rigidrelCaptionKey + '-said');
+    var m = JSON.parse(v);
+    said.textContent = '';  // the same words again (key D) are announced again
+    setTimeout(function () { said.textContent = m.text; }, 50);
+  }, 150);
   setInterval(function () {
     var v = localStorage.getItem(window.rigidrelCaptionKey);
     if (v === null) return;

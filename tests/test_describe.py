@@ -1,0 +1,86 @@
+"""The canvas in words (``rigidrel_app.view.describe``): every number from the core, every rod and
+its ends, the events passed, the verdicts; and ``rigidrel describe`` prints it."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+import rigidrel_core as rr
+from rigidrel_app.cli import main
+from rigidrel_app.view.describe import describe
+from rigidrel_app.view.signals import verdict_lines
+from rigidrel_app.view.state import Resolved, Settings, resolve
+
+
+def _resolved(kind: str) -> Resolved:
+    r = resolve(Settings(kind))
+    assert isinstance(r, Resolved)
+    return r
+
+
+def _spoken(x: float) -> str:
+    return f"{round(float(x), 3) + 0.0:.3f}".replace("-", "minus ")
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_each_rod_of_each_lane_is_where_the_core_puts_it(kind: str) -> None:
+    r = _resolved(kind)
+    window = r.scene.time_window(frame=r.frame)
+    for now in (window[0], 0.0, 0.5 * (window[0] + window[1]), window[1]):
+        d = describe(r, now)
+        assert len(d.lanes) == 2
+        for lane, frame in zip(d.lanes, (rr.LAB, r.frame), strict=True):
+            x, tau = r.scene.snapshot(now, frame=frame, fractions=(0.0, 1.0))
+            lengths = r.scene.lengths(now, frame=frame)
+            switches = r.scene.switch_times(frame=frame)
+            parts = lane.split(": ", 1)[1].rstrip(".").split("; ")
+            assert len(parts) == r.scene.n_rods
+            for k, (rod, part) in enumerate(zip(r.scene.rods, parts, strict=True)):
+                assert part.startswith(rod.name + " from x")
+                assert f"= {_spoken(x[k, 0])} to {_spoken(x[k, 1])}, length {_spoken(lengths[k])}," in part
+                assert f"reading {_spoken(tau[k, 0])} (left) and {_spoken(tau[k, 1])} (right)" in part
+                moving = [switches[k, e, 0] <= now < switches[k, e, 1] for e in range(2)]
+                said = {
+                    (True, True): "both ends accelerating",
+                    (True, False): "its left end accelerating",
+                    (False, True): "its right end accelerating",
+                    (False, False): "neither end accelerating",
+                }[(moving[0], moving[1])]
+                assert said in part
+
+
+def test_events_passed_and_verdicts_are_the_cores() -> None:
+    r = _resolved("rod-collision")
+    lab = r.scene.events
+    for now in sorted(t for t, _ in lab.values()):
+        text = describe(r, now).events[0]
+        named = set(re.findall(r"(\S+) at t = ", text))
+        assert named == {e for e, (t, _) in lab.items() if t <= now}
+    before = min(t for t, _ in lab.values()) - 1.0
+    assert "no named event has happened yet" in describe(r, before).events[0]
+    assert describe(r, 0.0).verdicts == tuple(f"Causality: {v}" for v in verdict_lines(r.scene))
+
+
+def test_the_summary_names_the_scene_its_parameters_and_both_frames() -> None:
+    r = _resolved("wall-collision")
+    d = describe(r, 0.0)
+    desc = rr.describe(r.scene)
+    assert d.summary.startswith(desc.title) and desc.source in d.summary
+    for key in r.scene.parameters:
+        assert desc.parameter(key).label in d.scene
+    assert "Upper lane: the lab frame" in d.summary and "Lower lane:" in d.summary
+    assert d.full.splitlines()[:2] == [d.scene, d.frames]
+
+
+def test_rigidrel_describe_prints_it_and_refuses_a_bad_time(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["describe", "impulsive-start", "--v", "0.8", "--at", "0.25"]) == 0
+    out = capsys.readouterr().out
+    r = resolve(Settings("impulsive-start").with_value("v", 0.8))
+    assert isinstance(r, Resolved)
+    assert out.strip() == describe(r, 0.25).full
+    with pytest.raises(SystemExit) as bad:
+        main(["describe", "impulsive-start", "--at", "inf"])
+    assert bad.value.code == 2
+    assert "--at must be a finite time" in capsys.readouterr().err
