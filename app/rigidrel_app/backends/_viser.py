@@ -41,6 +41,12 @@ The browser, private to viser's client (inventory; the scripts in ``live/assets/
   wire shapes of ``SceneNodeUpdateMessage``, ``SetPositionMessage``, ``SetOrientationMessage``,
   ``SetSceneNodeVisibilityMessage`` and the creation messages, ``owner`` included, and numpy
   fields as typed arrays of their dtype.
+- the panel's markup that ``live/assets/a11y.js`` names and recolours: a slider's thumb
+  (``[role=slider]``) inside ``.mantine-Slider-root`` whose ``id`` is the handle's uuid, its label
+  a ``label[for=uuid]`` in a ``p[unselectable=off]`` (Mantine's dimmed text), the number box
+  ``.mantine-NumberInput-input`` beside it, icon buttons holding a ``tabler-icon-*`` svg, and the
+  buttons' ``--button-color`` and the theme's ``--mantine-color-gray-filled`` variables under
+  ``html[data-mantine-color-scheme]``.
 - the same context value's ``interaction.cameraLocks.acquire(reason)`` (the lock viser's gizmo
   drags take: its camera controls disabled, keyboard movement included) and
   ``useDevSettings.setState({enableOrbitCrosshair})``: the picture kept still under the mouse.

@@ -283,6 +283,11 @@ def locked_box_css(controls: Sequence[NumberControl]) -> str:
 ARROWS_STAY_IN_SLIDERS = (
     f'<img alt="" src="data:," style="display: none" onerror="{html.escape(page_asset("arrows.js"), quote=True)}">'
 )
+#: Accessible names for viser's sliders, boxes and icon buttons, and labels and grey buttons dark
+#: enough to read (4.5:1), put on the panel from outside by a page script (``assets/a11y.js``).
+PANEL_NAMED = (
+    f'<img alt="" src="data:," style="display: none" onerror="{html.escape(page_asset("a11y.js"), quote=True)}">'
+)
 
 
 def parameter_controls(gui: viser.GuiApi) -> dict[rr.Parameter, NumberControl]:
@@ -846,7 +851,7 @@ def build_controls(
         notices["scenario"] = gui.add_markdown("", visible=False)
     readout = gui.add_markdown("", order=4.0)
     band = caption_installer(caption_key)
-    gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS + band, order=5.0)
+    gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS + PANEL_NAMED + band, order=5.0)
     gui.main_panel.dock_right()
     gui.main_panel.set_width(CONTROL_PX)
     commands = tuple((h, gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}")) for h in table)

@@ -1,0 +1,67 @@
+"""The live app as axe-core (WCAG 2.0/2.1, A and AA) finds it: no serious or critical violation on
+the default page, in presenter mode, in the dark theme, with a notice shown, and on a lesson's page
+with its caption; viser's own panel is named and darkened from outside (``live/assets/a11y.js``)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from axe_playwright_python.sync_playwright import Axe
+
+from rigidrel_app.lessons import lesson_from
+from rigidrel_app.live.server import App
+from tests.browser.test_app_browser import AppPage
+from tests.browser.test_controls_browser import press, type_keys
+from tests.viser_client import wait_until
+
+pytestmark = pytest.mark.browser
+
+WCAG_21_AA = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
+
+
+def serious_violations(page: Any) -> list[str]:
+    """axe-core's serious and critical violations of WCAG 2.1 A/AA on ``page``, one line each."""
+    result = Axe().run(page, options={"runOnly": {"type": "tag", "values": WCAG_21_AA}})
+    return [
+        f"{v['id']} ({v['impact']}): " + " | ".join(n["html"][:120] for n in v["nodes"][:3])
+        for v in result.response["violations"]
+        if v["impact"] in ("serious", "critical")
+    ]
+
+
+@pytest.fixture
+def lesson_tab(browser: Any) -> Iterator[AppPage]:
+    app = App(host="127.0.0.1", port=0, lesson=lesson_from("paper"))
+    page = None
+    try:
+        page = AppPage(browser, app)
+        yield page
+    finally:
+        if page is not None:
+            page.close()
+        app.stop()
+
+
+def test_the_app_is_axe_clean_in_every_look(tab: AppPage) -> None:
+    assert serious_violations(tab.page) == []
+    type_keys(tab, "V", "5")  # a refused value (beyond its slider): its notice in the Scene folder
+    wait_until(lambda: bool(tab.session.state.notice))
+    assert serious_violations(tab.page) == []
+    press(tab, "t")  # the dark theme
+    wait_until(lambda: tab.session.state.shade == "dark")
+    tab.page.wait_for_function("() => document.documentElement.dataset.mantineColorScheme === 'dark'")
+    assert serious_violations(tab.page) == []
+    press(tab, "f")  # presenter mode: the panel folded away
+    wait_until(lambda: tab.session.state.presenter)
+    assert serious_violations(tab.page) == []
+
+
+def test_a_lessons_page_with_its_caption_is_axe_clean(lesson_tab: AppPage) -> None:
+    tab = lesson_tab
+    tab.page.wait_for_selector("#rigidrel-caption h2")
+    assert serious_violations(tab.page) == []
+    press(tab, "PageDown")
+    wait_until(lambda: tab.session.state.step == 1)
+    assert serious_violations(tab.page) == []
