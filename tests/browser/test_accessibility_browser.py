@@ -65,3 +65,27 @@ def test_a_lessons_page_with_its_caption_is_axe_clean(lesson_tab: AppPage) -> No
     press(tab, "PageDown")
     wait_until(lambda: tab.session.state.step == 1)
     assert serious_violations(tab.page) == []
+
+
+def test_reduced_motion_keeps_every_step_still(browser: Any) -> None:
+    """A browser that asks for reduced motion: the lesson's autoplaying steps open paused, and Space
+    still plays."""
+    app = App(host="127.0.0.1", port=0, lesson=lesson_from("paper"))
+    page = browser.new_page(viewport={"width": 1280, "height": 720}, reduced_motion="reduce")
+    try:
+        page.goto(app.url)
+        page.wait_for_selector("label:text-is('Step')", timeout=120_000)
+        session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
+        wait_until(lambda: session.player.ready and session.state.still, timeout=60)
+        assert app.lesson is not None and app.lesson.steps[0].autoplay
+        assert not session.state.playback.playing
+        page.evaluate("() => document.activeElement && document.activeElement.blur()")
+        page.keyboard.press("PageDown")
+        page.keyboard.press("PageDown")  # step 3 plays by itself, but not here
+        wait_until(lambda: session.state.step == 2, timeout=30)
+        assert app.lesson.steps[2].autoplay and not session.state.playback.playing
+        page.keyboard.press(" ")
+        wait_until(lambda: session.state.playback.playing, timeout=30)
+    finally:
+        page.close()
+        app.stop()

@@ -37,6 +37,8 @@ class Report:
     frame: int | None = None
     lead: str | None = None
     """With ``ready``: the lead token the tab's address carried (``?lead=...``), if any."""
+    still: bool = False
+    """With ``ready``: the browser asks for reduced motion (``prefers-reduced-motion: reduce``)."""
 
 
 #: The longest lead token a report may carry (the server's are 22 characters).
@@ -56,7 +58,8 @@ def parse_report(text: str) -> Report | None:
         return None
     if event == "ready":
         lead = raw.get("lead")
-        return Report("ready", lead=lead if isinstance(lead, str) and 0 < len(lead) <= LEAD_CHARS else None)
+        lead = lead if isinstance(lead, str) and 0 < len(lead) <= LEAD_CHARS else None
+        return Report("ready", lead=lead, still=raw.get("still") is True)
     if not isinstance(timeline, str) or not isinstance(frame, int) or isinstance(frame, bool) or frame < 0:
         return None
     return Report(event, timeline, frame)

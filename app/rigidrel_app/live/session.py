@@ -463,6 +463,10 @@ class Session:
             with self.client.atomic():
                 if report.event == "ready" and report.lead is not None and self.lesson.claim(report.lead):
                     self._show(self.state.as_lecturer())
+                if report.event == "ready" and report.still and not self.state.still:
+                    self.state = replace(self.state, still=True)  # reduced motion: an autoplaying step pauses
+                    if self.state.playback.playing:
+                        self.set_playback(replace(self.state.playback, playing=False))
                 if report.event == "ready" and not self.player.ready:
                     self.painter.runtime_ready()
                     self.draw_now(force_plots=True)

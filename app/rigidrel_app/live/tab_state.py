@@ -70,6 +70,8 @@ class TabState:
     """The step's scene and its time window: the playback window while that scene shows."""
     lecturer: bool = False
     """The tab was opened at the lecturer's lead address (``--follow``): it may lead the others."""
+    still: bool = False
+    """The browser asks for reduced motion: a lesson's step does not play by itself."""
 
     @classmethod
     def opening(cls, settings: Settings, shade: Shade = "light") -> TabState:
@@ -104,10 +106,10 @@ class TabState:
 
     def step_start(self, arrival: Arrival) -> Playback:
         """The clock where a lesson's step opens: at its start (else the usual start of the window),
-        playing if the step plays by itself."""
+        playing if the step plays by itself (unless the browser asks for reduced motion)."""
         p = self.playback
         p = p.seek(arrival.start) if arrival.start is not None else replace(p, now=Playback.start(p.window).now)
-        return replace(p, playing=arrival.autoplay)
+        return replace(p, playing=arrival.autoplay and not self.still)
 
     # ------------------------------------------------------------------ the look
     def with_shade(self, shade: Shade) -> TabState:

@@ -194,7 +194,11 @@
       this.push = push;
       this.lockCamera(viewer);
       const lead = leadToken();
-      this.report(lead ? { event: "ready", lead } : { event: "ready" });
+      const ready = { event: "ready" };
+      if (lead) ready.lead = lead;
+      // a browser asking for reduced motion: no lesson step starts playing by itself
+      if (win.matchMedia && win.matchMedia("(prefers-reduced-motion: reduce)").matches) ready.still = true;
+      this.report(ready);
     }
     // The page is a flat picture the server keeps in view: a drag, the wheel, a touch or the arrow
     // keys must not orbit, zoom or tilt it mid-lecture (the arrows step time, the server's keys).
