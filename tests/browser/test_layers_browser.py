@@ -49,9 +49,8 @@ def near(img: np.ndarray, color: np.ndarray, tol: float) -> np.ndarray:
 
 
 def light(img: np.ndarray) -> np.ndarray:
-    """Pixels of the light's colour (#C9A400: a strong yellow, unlike the rods, the wall and the frames' purple)."""
-    r, g, b = img[..., 0], img[..., 1], img[..., 2]
-    return np.asarray((r > 150) & (g > 110) & (b < 90) & (r - b > 110) & (np.abs(r - g) < 70))
+    """Pixels of the light's colour (a deep gold with no blue, unlike the rods, the wall and the frames' wine)."""
+    return near(img, color_rgb(LIGHT_COLOR), 36)
 
 
 def cone_shade(img: np.ndarray) -> np.ndarray:

@@ -25,10 +25,13 @@ SHADES: tuple[Shade, ...] = get_args(Shade)
 """Every :data:`Shade`, light first (what a theme option allows)."""
 Anchor = Literal["left", "right", "center"]
 
-# palette (colour-blind safe: blue / orange / purple, Okabe-Ito)
+# palette: told apart under protanopia, deuteranopia and tritanopia (CIELAB ΔE ≥ 10 after Machado et
+# al.'s simulation), lines at 3:1 and text at 4.5:1 or more on white and, lightness-flipped, on black
+# (tests/test_palette.py): Okabe-Ito's blue, orange and green for the rods, Tol's wine for the
+# frames, a deep gold for light (a brighter gold and purple were lost beside orange and blue)
 ROD_COLORS = ("#0072B2", "#E8710A", "#009E73")  # a third rod: Okabe-Ito green
-FRAME_COLOR = "#7B3FA0"
-LIGHT_COLOR = "#C9A400"
+FRAME_COLOR = "#AA3377"
+LIGHT_COLOR = "#7A6A00"
 INK = "#222222"
 # the colours of the scenes' objects that are not rods: the style table, :mod:`.objects`
 
