@@ -5,6 +5,7 @@ with its caption; viser's own panel is named and darkened from outside (``live/a
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -89,3 +90,30 @@ def test_reduced_motion_keeps_every_step_still(browser: Any) -> None:
     finally:
         page.close()
         app.stop()
+
+
+def test_exported_pages_are_axe_clean_and_carry_the_words(browser: Any, tmp_path: Path) -> None:
+    """The exported lesson (index, a step, its lanes and diagram) and a scene's diagram and 3-D
+    pages: no serious or critical violation; a step's page carries its picture in words."""
+    from rigidrel_app.cli import main
+
+    assert main(["export", "--lesson", "paper", "--out", str(tmp_path / "lesson")]) == 0
+    assert main(["export", "wall-collision", "--out", str(tmp_path / "wall")]) == 0
+    pages = [
+        tmp_path / "lesson" / name
+        for name in ("index.html", "step-01.html", "step-01-lanes.html", "step-01-diagram.html")
+    ] + [tmp_path / "wall" / name for name in ("wall-collision-diagram.html", "wall-collision-3d.html")]
+    page = browser.new_page(viewport={"width": 1280, "height": 720})
+    try:
+        for path in pages:
+            page.goto(path.as_uri())
+            page.wait_for_load_state("load")
+            if path.name.endswith(("lanes.html", "3d.html")):  # viser's client: named once it has drawn its panel
+                page.wait_for_function("() => window.rigidrelA11y && document.querySelector('[aria-label]')")
+            assert serious_violations(page) == [], path.name
+        page.goto((tmp_path / "lesson" / "step-01.html").as_uri())
+        words = page.locator("details.words")
+        assert words.locator("summary").inner_text() == "The picture in words"
+        assert "Upper lane: the lab frame" in (words.text_content() or "")
+    finally:
+        page.close()

@@ -41,7 +41,7 @@ The browser, private to viser's client (inventory; the scripts in ``live/assets/
   wire shapes of ``SceneNodeUpdateMessage``, ``SetPositionMessage``, ``SetOrientationMessage``,
   ``SetSceneNodeVisibilityMessage`` and the creation messages, ``owner`` included, and numpy
   fields as typed arrays of their dtype.
-- the panel's markup that ``live/assets/a11y.js`` names and recolours: a slider's thumb
+- the panel's markup that ``backends/assets/a11y.js`` (:func:`panel_a11y_js`) names and recolours: a slider's thumb
   (``[role=slider]``) inside ``.mantine-Slider-root`` whose ``id`` is the handle's uuid, its label
   a ``label[for=uuid]`` in a ``p[unselectable=off]`` (Mantine's dimmed text), the number box
   ``.mantine-NumberInput-input`` beside it, icon buttons holding a ``tabler-icon-*`` svg, and the
@@ -62,7 +62,7 @@ import threading
 import types
 import uuid
 from dataclasses import dataclass, field
-from importlib import metadata
+from importlib import metadata, resources
 from typing import Any
 
 import numpy as np
@@ -337,3 +337,11 @@ class PlaybackMessage(Message, include_in_scene_serialization=False):
 def scene_owner(client: viser.ClientHandle) -> str:
     """The owner id the tab's scene stamps on its messages (the runtime stamps its own the same)."""
     return str(client.scene._owner_id)  # pyright: ignore[reportPrivateUsage]
+
+
+@functools.cache
+def panel_a11y_js() -> str:
+    """The page script that names viser's sliders, number boxes and icon buttons and gives its
+    labels and grey buttons 4.5:1 contrast, from outside (``backends/assets/a11y.js``): for the
+    live app's panel and the exported pages that carry viser's client."""
+    return resources.files("rigidrel_app.backends").joinpath("assets", "a11y.js").read_text(encoding="utf-8")

@@ -10,6 +10,7 @@ inlined: the page works offline.
 
 from __future__ import annotations
 
+import html
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
@@ -373,4 +374,6 @@ def diagram_html(settings: Settings, plotly_js: Literal["inline", "beside"] = "i
     # centred on a wide screen (the figure has a fixed size: its labels are placed for it)
     if shade == "dark":  # the page around the figure black too
         page = page.replace("<head>", "<head><style>html, body { background: #000000; }</style>", 1)
+    title = html.escape(f"{settings.description.title}: Minkowski diagrams and the equal-time length")
+    page = page.replace("<html>", '<html lang="en">', 1).replace("<head>", f"<head><title>{title}</title>", 1)
     return page.replace("<body>", f'<body style="margin: 8px auto; width: {PAGE_PX[0]}px">', 1)

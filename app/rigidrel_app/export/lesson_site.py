@@ -24,6 +24,7 @@ import plotly
 from markdown_it import MarkdownIt
 
 from ..lessons import Lesson, Step
+from ..view.describe import describe
 from ..view.scene_view import CLOCK_RULE, build_drawing
 from ..view.state import settings_for
 from ..view.vocabulary import Shade
@@ -97,6 +98,15 @@ def _page(title: str, body: str, next_href: str | None, prev_href: str | None, s
     )
 
 
+def _in_words(step: Step) -> str:
+    """The step's picture in words (what the live app's screen reader hears, key D), at the time it
+    opens on (its start, else the origin event's t = 0 when its window holds it)."""
+    window = step.window or step.resolved.scene.time_window(frame=step.resolved.frame)
+    start = step.start if step.start is not None else min(max(0.0, window[0]), window[1])
+    lines = "".join(f"<p>{html.escape(line)}</p>" for line in describe(step.resolved, start).full.splitlines())
+    return f"<details class='words'><summary>The picture in words</summary>{lines}</details>"
+
+
 def _step_page(lesson: Lesson, k: int, step: Step, shade: Shade = "light") -> str:
     n = len(lesson.steps)
     prev_href = f"{step_name(k - 1)}.html" if k > 0 else "index.html"
@@ -117,7 +127,7 @@ def _step_page(lesson: Lesson, k: int, step: Step, shade: Shade = "light") -> st
         "<div class='views'>"
         f"<iframe class='lanes' src='{name}-lanes.html' title='the rods, in the lab and in the chosen frame'></iframe>"
         f"<iframe class='diagram' src='{name}-diagram.html' title='Minkowski diagram with sliders'></iframe>"
-        f"</div><p class='note'>{html.escape(CLOCKS_NOTE)}</p><nav class='steps'>{nav}</nav></main>"
+        f"</div><p class='note'>{html.escape(CLOCKS_NOTE)}</p>{_in_words(step)}<nav class='steps'>{nav}</nav></main>"
     )
     return _page(f"{step.title} · {lesson.title}", body, next_href, prev_href if k > 0 else "index.html", shade)
 

@@ -9,12 +9,17 @@ recording. Nothing is fetched when the page opens.
 from __future__ import annotations
 
 import contextlib
+import html
 import io
+import re
 from collections.abc import Iterator
 
 import numpy as np
 import viser
 
+import rigidrel_core as rr
+
+from ..backends._viser import panel_a11y_js
 from ..backends.viser import DARK_CANVAS_CSS, LaneRenderer
 from ..view.scene_view import LANE_Z, PLOT_HZ, Drawn, camera_pose, lane_states
 from ..view.vocabulary import Shade
@@ -63,4 +68,7 @@ def record_lanes_html(
         page = serializer.as_html()
     if shade == "dark":
         page = page.replace("</head>", f"<style>{DARK_CANVAS_CSS} body {{ background: #000000; }}</style></head>", 1)
-    return page
+    # titled, named and readable for a screen reader (viser's client names neither its boxes nor its icons)
+    title = html.escape(f"{rr.describe(drawn.resolved.scene).title}: the rods in the lab and in the chosen frame")
+    page = re.sub(r"<title>.*?</title>", lambda _: f"<title>{title}</title>", page, count=1, flags=re.S)
+    return page.replace("</body>", f"<script>{panel_a11y_js()}</script></body>", 1)

@@ -24,7 +24,7 @@ import viser
 
 import rigidrel_core as rr
 
-from ..backends._viser import handle_uuid
+from ..backends._viser import handle_uuid, panel_a11y_js
 from ..backends.viser import DARK_CANVAS_CSS
 from ..lessons import Lesson
 from ..lessons.tour import LAYER_LABELS, step_labels
@@ -284,10 +284,8 @@ ARROWS_STAY_IN_SLIDERS = (
     f'<img alt="" src="data:," style="display: none" onerror="{html.escape(page_asset("arrows.js"), quote=True)}">'
 )
 #: Accessible names for viser's sliders, boxes and icon buttons, and labels and grey buttons dark
-#: enough to read (4.5:1), put on the panel from outside by a page script (``assets/a11y.js``).
-PANEL_NAMED = (
-    f'<img alt="" src="data:," style="display: none" onerror="{html.escape(page_asset("a11y.js"), quote=True)}">'
-)
+#: enough to read (4.5:1), put on the panel from outside by a page script (``backends/assets/a11y.js``).
+PANEL_NAMED = f'<img alt="" src="data:," style="display: none" onerror="{html.escape(panel_a11y_js(), quote=True)}">'
 
 
 def parameter_controls(gui: viser.GuiApi) -> dict[rr.Parameter, NumberControl]:

@@ -6,7 +6,7 @@
      an icon button, from what its icon means), again whenever viser draws the panel anew;
    - the dimmed grey and the grey buttons are darkened in the light theme, the dimmed grey lightened
      and the filled buttons' text white in the dark one: 4.5:1 or more everywhere. */
-if (!window.rigidrelA11y) {
+if (!window.rigidrelA11y) (function () {  // a scope of its own: a page's global `name` is window.name
   window.rigidrelA11y = true;
   var ICONS = {
     'list-search': 'Commands (Ctrl+K)',
@@ -49,6 +49,9 @@ if (!window.rigidrelA11y) {
     document.querySelectorAll('input:not([type="hidden"]), textarea').forEach(function (el) {
       if (named(el) || el.closest('label')) return;
       var label = rowLabel(el);
+      if (!label && el.closest('.mantine-Paper-root')) {  // the exported pages' playback bar: its time and speed
+        label = el.getAttribute('role') === 'combobox' ? 'Playback speed' : 'Playback time';
+      }
       if (!label) return;
       el.setAttribute('aria-label', el.classList.contains('mantine-NumberInput-input') ? label + ', typed' : label);
     });
@@ -73,4 +76,4 @@ if (!window.rigidrelA11y) {
     + ' html[data-mantine-color-scheme="dark"] p[unselectable="off"] { color: #a6a7ab !important; }'
     + ' html[data-mantine-color-scheme="dark"] .mantine-Button-root:is(:not([data-variant]), [data-variant="filled"]) { --button-color: #ffffff !important; }';
   document.head.appendChild(style);
-}
+})();
