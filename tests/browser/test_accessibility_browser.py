@@ -117,3 +117,86 @@ def test_exported_pages_are_axe_clean_and_carry_the_words(browser: Any, tmp_path
         assert "Upper lane: the lab frame" in (words.text_content() or "")
     finally:
         page.close()
+
+
+def _focused(page: Any) -> dict[str, Any]:
+    """What has the keyboard focus: its tag, role, name (a label's text or its aria-label) and
+    whether the browser draws a focus ring on it (an outline or a box shadow)."""
+    return page.evaluate(
+        """() => {
+          const el = document.activeElement;
+          if (!el || el === document.body) return {tag: 'body', role: '', type: '', name: '', ring: false};
+          const s = getComputedStyle(el);
+          const label = el.id && document.querySelector('label[for="' + CSS.escape(el.id) + '"]');
+          return {
+            tag: el.tagName.toLowerCase(), role: el.getAttribute('role') || '', type: el.type || '',
+            name: (el.getAttribute('aria-label') || (label && label.textContent) || el.textContent || '').trim(),
+            ring: (s.outlineStyle !== 'none' && parseFloat(s.outlineWidth) > 0) || s.boxShadow !== 'none',
+          };
+        }"""
+    )
+
+
+def _tab_to(page: Any, want: Any, limit: int = 120) -> dict[str, Any]:
+    """Press Tab until ``want(focused)``; every stop on the way has a visible focus ring."""
+    for _ in range(limit):
+        page.keyboard.press("Tab")
+        f = _focused(page)
+        if f["tag"] != "body":
+            assert f["ring"], f"no visible focus on {f}"
+        if want(f):
+            return f
+    raise AssertionError(f"Tab never reached it in {limit} presses")
+
+
+def test_a_whole_lecture_with_the_keyboard_alone(browser: Any) -> None:
+    """Open the lesson, walk every step, change a slider, toggle a layer, switch the frame, play and
+    pause: with Tab, Enter, Space, the arrows and the clicker's keys only; the focus is always
+    visible, and Tab goes on past everything (no trap, the canvas included)."""
+    lesson = lesson_from("paper")
+    app = App(host="127.0.0.1", port=0, lesson=lesson)
+    page = browser.new_page(viewport={"width": 1280, "height": 720})
+    try:
+        page.goto(app.url)
+        page.wait_for_selector("label:text-is('Step')", timeout=120_000)
+        session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
+        wait_until(lambda: session.player.ready, timeout=60)
+        for k in range(1, len(lesson.steps)):  # the clicker walks every step
+            page.keyboard.press("PageDown")
+            wait_until(lambda k=k: session.state.step == k, timeout=30)
+        for k in range(len(lesson.steps) - 2, -1, -1):
+            page.keyboard.press("PageUp")
+            wait_until(lambda k=k: session.state.step == k, timeout=30)
+        # a slider: Tab to V's, then the arrows move it
+        before = session.state.settings.value("v")
+        _tab_to(page, lambda f: f["role"] == "slider" and f["name"].startswith("V"))
+        page.keyboard.press("ArrowRight")
+        wait_until(lambda: session.state.settings.value("v") != before, timeout=30)
+        # a layer: Tab to its box, Space toggles it
+        _tab_to(page, lambda f: f["type"] == "checkbox" and f["name"] == "Light signals")
+        had = "signals" in {layer.value for layer in session.state.settings.layers}
+        page.keyboard.press("Space")
+        wait_until(lambda: ("signals" in {layer.value for layer in session.state.settings.layers}) != had, timeout=30)
+        # the frame: Tab to its menu, the arrows open it and move, Enter chooses
+        frame = session.frame_choice()
+        _tab_to(page, lambda f: f["role"] == "combobox" and f["name"] == "Frame")
+        page.keyboard.press("ArrowDown")
+        page.locator("[role=listbox]:visible").wait_for()
+        page.keyboard.press("ArrowDown")
+        page.keyboard.press("Enter")
+        wait_until(lambda: session.frame_choice() != frame, timeout=30)
+        # play and pause: Tab to the Play (or Pause) button; Enter plays or pauses, and Enter again
+        _tab_to(page, lambda f: f["tag"] == "button" and f["name"] in ("Play", "Pause"))
+        for _ in range(2):
+            was = session.state.playback.playing
+            page.keyboard.press("Enter")
+            wait_until(
+                lambda was=was: session.state.playback.playing != was and session.playback_settled is was, timeout=30
+            )
+        # no trap: Tab goes on and comes round again to the step list
+        seen = {_tab_to(page, lambda f: True)["name"] for _ in range(3)}
+        assert len(seen) > 1
+        _tab_to(page, lambda f: f["name"] == "Step" or f["name"].startswith("1/15") or "Step" in f["name"], limit=200)
+    finally:
+        page.close()
+        app.stop()

@@ -4,6 +4,7 @@
    Mantine's "dimmed" grey (3.3:1 on white). A screen reader then hears "slider" with no name. So:
    - every slider, box and unnamed button gets an aria-label from its control's own label (or, for
      an icon button, from what its icon means), again whenever viser draws the panel anew;
+   - the keyboard's focus is always a ring;
    - the dimmed grey and the grey buttons are darkened in the light theme, the dimmed grey lightened
      and the filled buttons' text white in the dark one: 4.5:1 or more everywhere. */
 if (!window.rigidrelA11y) (function () {  // a scope of its own: a page's global `name` is window.name
@@ -74,6 +75,9 @@ if (!window.rigidrelA11y) (function () {  // a scope of its own: a page's global
     + ' html[data-mantine-color-scheme="light"] .mantine-Button-root { --mantine-color-gray-filled: #5c636a;'
     + ' --mantine-color-gray-filled-hover: #495057; }'
     + ' html[data-mantine-color-scheme="dark"] p[unselectable="off"] { color: #a6a7ab !important; }'
-    + ' html[data-mantine-color-scheme="dark"] .mantine-Button-root:is(:not([data-variant]), [data-variant="filled"]) { --button-color: #ffffff !important; }';
+    + ' html[data-mantine-color-scheme="dark"] .mantine-Button-root:is(:not([data-variant]), [data-variant="filled"]) { --button-color: #ffffff !important; }'
+    // the keyboard's place always drawn as a ring (Mantine's inputs only recolour their border)
+    + ' :is(input, textarea, button, a, [role], [tabindex]):focus-visible { outline: 2px solid #0072B2 !important; outline-offset: 1px; }'
+    + ' html[data-mantine-color-scheme="dark"] :is(input, textarea, button, a, [role], [tabindex]):focus-visible { outline-color: #4DBFFF !important; }';
   document.head.appendChild(style);
 })();
