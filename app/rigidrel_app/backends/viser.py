@@ -34,7 +34,7 @@ import viser
 
 from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
-from ..view.lanes import Box, LanePicture, LaneState, ruler_text, segments_array
+from ..view.lanes import Box, EdgeMark, LanePicture, LaneState, segments_array
 from ..view.layout import CanvasLayout, lane_title_text
 from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, lightness_flipped, plain_text, rgb
 from ._viser import encode_png, make_image, set_image_png, write_label
@@ -524,21 +524,28 @@ class _Ruler:
     def handles(self) -> tuple[viser.SceneNodeHandle, ...]:
         return (*self._texts.handles, self._node)
 
-    def show(self, lane: LanePicture, x0: float, x1: float, z: float, px: float) -> None:
+    def show(self, lane: LanePicture, z: float, px: float) -> None:
+        """Every tick's number as the lane has it (:attr:`LanePicture.ruler_numbers`), below the
+        tick at height ``z``, at ``px``; tick ``n`` in slot ``n % RULER_SLOTS``."""
         if self._origin != lane.origin_px:
             self._node.position = (lane.origin_px, 0.0, 0.0)
             self._origin = lane.origin_px
         step, scale = lane.ruler_step, lane.scale
-        lo = int(np.ceil((x0 - lane.origin_px) / (step * scale) - 1e-9))
-        hi = int(np.floor((x1 - lane.origin_px) / (step * scale) + 1e-9))
-        wanted = {n % RULER_SLOTS: n for n in range(lo, hi + 1)} if hi - lo < RULER_SLOTS else {}
+        ticks = lane.ruler_ticks.tolist()
+        assert len(ticks) <= RULER_SLOTS, f"{len(ticks)} ruler ticks, {RULER_SLOTS} slots"
+        wanted = {n % RULER_SLOTS: (n, text) for n, text in zip(ticks, lane.ruler_numbers, strict=True)}
         for slot in range(RULER_SLOTS):
-            n = wanted.get(slot)
-            if n is None:
+            tick = wanted.get(slot)
+            if tick is None:
                 self._texts.hide(slot)
                 continue
-            text = ruler_text(n * step, step)
+            n, text = tick
             self._texts.set(slot, (text, (n * step * scale, _TEXT_Y, z), label_scale(px), "top-center"))
+
+
+def edge_text(mark: EdgeMark, px: float) -> PageText:
+    """An edge mark's words (``"wall 3.2 →"``), ending at the lane's edge on its side, at ``px``."""
+    return PageText(mark.x, mark.text_z, mark.text, px, "center-left" if mark.side < 0 else "center-right")
 
 
 #: Depth of the flat still picture: behind everything else on the page (the rods' boxes reach
@@ -781,10 +788,10 @@ class PageRenderer:
                 PageText(p.band.x0, p.title_z, *lane_title_text(lane.title, p, theme.title_px), "top-left")
                 for p, lane in zip(layout.lanes, lanes)
             ]
+            + [edge_text(m, theme.text_px) for lane in lanes for m in lane.edge_marks]
         )
         for ruler, place, lane in zip(self._rulers, layout.lanes, lanes, strict=True):
-            z = place.ruler_z - place.tick_px - 2.0
-            ruler.show(lane, place.track.x0, place.track.x1, z, theme.text_px)
+            ruler.show(lane, place.ruler_z - place.tick_px - 2.0, theme.text_px)
         self._moving_lines.show(moving.lines)
         self._moving_dots.show(moving.dots)
 

@@ -511,16 +511,31 @@ def _joined(curves: list[tuple[FloatArray, FloatArray]]) -> tuple[FloatArray, Fl
     return np.concatenate(xs[:-1]), np.concatenate(zs[:-1])
 
 
-def nice_ticks(lo: float, hi: float, count: float) -> FloatArray:
-    """Round numbers (1, 2 or 5 times a power of ten apart) in ``[lo, hi]``, about ``count`` of them."""
+#: Every axis of a chart carries at least this many numbered ticks (a scale is read between two
+#: numbers; a third shows it is even).
+MIN_AXIS_TICKS = 3
+#: The round steps, 1, 2 or 5 times a power of ten, as multiples of their power of ten.
+_NICE = (1.0, 2.0, 5.0, 10.0)
+
+
+def nice_ticks(lo: float, hi: float, count: float, minimum: int = MIN_AXIS_TICKS) -> FloatArray:
+    """Round numbers (1, 2 or 5 times a power of ten apart) in ``[lo, hi]``, about ``count`` of them
+    and never fewer than ``minimum``: the step is the smallest round one at least ``(hi - lo) / count``,
+    then the next smaller round step while fewer than ``minimum`` ticks fall in the range."""
     span = hi - lo
     if not (math.isfinite(span) and span > 0):
         return np.zeros(0)
     raw = span / max(count, 1.0)
-    e = 10.0 ** math.floor(math.log10(raw))
-    step = next(m * e for m in (1.0, 2.0, 5.0, 10.0) if m * e >= raw)
-    ticks = np.arange(math.ceil(lo / step) * step, hi + 1e-9 * span, step)
-    return np.round(ticks / step) * step
+    power = math.floor(math.log10(raw))
+    k = next(i for i, m in enumerate(_NICE) if m * 10.0**power >= raw)
+    while True:
+        step = _NICE[k] * 10.0**power
+        ticks = np.arange(math.ceil(lo / step) * step, hi + 1e-9 * span, step)
+        if ticks.size >= minimum or step <= span * 1e-6:
+            return np.round(ticks / step) * step
+        k -= 1
+        if k < 0:
+            k, power = len(_NICE) - 2, power - 1
 
 
 def tick_text(values: FloatArray) -> list[str]:

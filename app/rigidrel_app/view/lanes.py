@@ -13,7 +13,9 @@ bar on their row, coloured by its field (:data:`.objects.FIELD_RAMP`).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
+from enum import StrEnum
+from typing import Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -329,12 +331,24 @@ def segments_array(seg: Segments, z_offset: float, y: float) -> npt.NDArray[np.f
 
 # ---------------------------------------------------------------------- the app's canvas lanes
 #: Each rod spans at least this share of its lane times its rest length over the largest one: the
-#: lane zooms in when a rod contracts below that (the ruler's numbers say so).
+#: lanes zoom in when a rod contracts below that (the ruler's numbers and the titles say so).
 ROD_SHARE = 0.2
 #: The rods together take at most this share of the lane, so there is room around them.
 FIT_SHARE = 0.8
 #: Ruler ticks per lane, about.
 RULER_TICKS = 6.0
+#: A zoom this close to 1 (relative) is no zoom: the titles say nothing.
+ZOOM_TOLERANCE = 1e-3
+
+
+class LaneScale(StrEnum):
+    """How the two lanes of the canvas are scaled (page px per unit of their frames' x)."""
+
+    SHARED = "shared"
+    """One scale for both lanes: a rod 0.8 long in one frame and 1.0 in the other is drawn 0.8 of its
+    length there; when a rod would be too short to see in either lane, both zoom together."""
+    OWN = "own"
+    """Each lane fits its own rods (the two lanes' pictures are then not comparable by eye)."""
 
 
 def steady_width(scene: rr.Scene, frame: rr.Frame, window: tuple[float, float]) -> float:
@@ -355,25 +369,95 @@ class LaneWindow:
     width: float
 
 
-def lane_window(ends: FloatArray, rest_lengths: FloatArray, steady: float, center: float | None = None) -> LaneWindow:
-    """Centred on the rods (``ends``: ``(rods, 2)``, the frame's x), or on ``center`` if given (a
-    riding lane keeps its point still), at the steady width unless a rod would be drawn under
-    :data:`ROD_SHARE` of the lane (scaled by its rest length): then narrower, just enough; never so
-    narrow that the rods leave the lane.
+@dataclass(frozen=True)
+class LaneFit:
+    """What one lane needs of its scale at one instant (the frame's x units)."""
 
-    width = max(extent / FIT_SHARE, min(steady, min_r length_r * L_max / (ROD_SHARE * L_r))),
-    continuous in time, so the zoom never jumps (about ``center``, extent = 2 max |x - center|).
-    """
+    center: float
+    """The lane's centre: the middle of its rods, or the point a riding lane keeps still."""
+    extent: float
+    """The width the rods take about :attr:`center`: the lane is never narrower than this over
+    :data:`FIT_SHARE` (the rods stay inside it)."""
+    zoom_width: float
+    """The widest the lane may be with every rod at least :data:`ROD_SHARE` of it (times its rest
+    length over the largest): ``min_r length_r * L_max / (ROD_SHARE * L_r)``."""
+
+    @property
+    def fit_width(self) -> float:
+        """The narrowest the lane may be: ``extent / FIT_SHARE``."""
+        return self.extent / FIT_SHARE
+
+
+def lane_fit(ends: FloatArray, rest_lengths: FloatArray, center: float | None = None) -> LaneFit:
+    """The fit of one lane whose rods have ``ends`` (``(rods, 2)``, the frame's x) and rest lengths
+    ``rest_lengths``: centred on the rods, or on ``center`` if given (a riding lane keeps its point
+    still; then extent = 2 max |x - center|)."""
     lo, hi = float(ends.min()), float(ends.max())
     unit = float(rest_lengths.max())
     lengths = ends[:, 1] - ends[:, 0]
     zoom = float(np.min(lengths * unit / (ROD_SHARE * rest_lengths)))
     if center is None:
-        center, extent = 0.5 * (lo + hi), hi - lo
-    else:
-        extent = 2.0 * max(abs(hi - center), abs(center - lo))
-    width = max(extent / FIT_SHARE, min(steady, zoom))
-    return LaneWindow(center, width)
+        return LaneFit(0.5 * (lo + hi), hi - lo, zoom)
+    return LaneFit(center, 2.0 * max(abs(hi - center), abs(center - lo)), zoom)
+
+
+def lane_window(ends: FloatArray, rest_lengths: FloatArray, steady: float, center: float | None = None) -> LaneWindow:
+    """One lane on its own (:attr:`LaneScale.OWN`): centred as :func:`lane_fit` says, at the steady
+    width unless a rod would be drawn under :data:`ROD_SHARE` of the lane (scaled by its rest length):
+    then narrower, just enough; never so narrow that the rods leave the lane.
+
+    width = max(extent / FIT_SHARE, min(steady, min_r length_r * L_max / (ROD_SHARE * L_r))),
+    continuous in time, so the zoom never jumps.
+    """
+    fit = lane_fit(ends, rest_lengths, center)
+    return LaneWindow(fit.center, max(fit.fit_width, min(steady, fit.zoom_width)))
+
+
+@dataclass(frozen=True)
+class LaneScales:
+    """The lanes' scales at one instant (:func:`lane_scales`)."""
+
+    scales: tuple[float, ...]
+    """Page px per unit of each lane's frame's x."""
+    zooms: tuple[float, ...]
+    """Each lane's scale over its steady one (1: the playback's scale; 2: twice as large)."""
+
+
+def lane_scales(
+    fits: Sequence[LaneFit], tracks: Sequence[float], steadies: Sequence[float], mode: LaneScale = LaneScale.SHARED
+) -> LaneScales:
+    """Page px per unit of x for each lane at one instant (``tracks``: the lanes' track widths, px;
+    ``steadies``: their steady widths, :func:`steady_width`).
+
+    :attr:`LaneScale.OWN`: each lane as :func:`lane_window` has it, ``s_i = W_i / width_i``.
+    :attr:`LaneScale.SHARED`: one scale for all lanes, every lane's constraint in px per unit —
+
+        s = min( min_i FIT_SHARE W_i / extent_i,  max( min_i W_i / steady_i,  max_i W_i / zoom_width_i ) )
+
+    the steady scale (every lane's rods fit over the whole playback) unless a rod in some lane would be
+    drawn under :data:`ROD_SHARE` of its lane (then larger, just enough, in both lanes), and never so
+    large that a lane's rods leave it. Continuous in time, as each term is. The zoom is ``s`` over the
+    steady scale.
+    """
+    if mode is LaneScale.OWN:
+        widths = [max(f.fit_width, min(st, f.zoom_width)) for f, st in zip(fits, steadies, strict=True)]
+        scales = tuple(w / width for w, width in zip(tracks, widths, strict=True))
+        zooms = tuple(st / width for st, width in zip(steadies, widths, strict=True))
+        return LaneScales(scales, zooms)
+    steady = min(w / st for w, st in zip(tracks, steadies, strict=True))
+    need = max(w / f.zoom_width if f.zoom_width > 0 else np.inf for w, f in zip(tracks, fits, strict=True))
+    room = min(w / f.fit_width if f.fit_width > 0 else np.inf for w, f in zip(tracks, fits, strict=True))
+    scale = float(min(room, max(steady, need)))
+    return LaneScales((scale,) * len(fits), (scale / steady,) * len(fits))
+
+
+def zoom_words(zoom: float) -> str:
+    """What a lane's title says of its zoom: ``"zoom ×2.4"`` while a contracted rod has the lanes zoomed
+    in, or nothing at the playback's steady scale (within :data:`ZOOM_TOLERANCE`) or below it (a lane
+    that widens a little to keep its rods inside: its ruler's numbers say so)."""
+    if not np.isfinite(zoom) or zoom <= 1.0 + ZOOM_TOLERANCE:
+        return ""
+    return f"zoom ×{zoom:.2g}" if zoom < 10 else f"zoom ×{zoom:.0f}"
 
 
 def ruler_step(width: float) -> float:
@@ -393,6 +477,30 @@ def ruler_text(value: float, step: float) -> str:
     return f"{round(value, decimals) + 0.0:.{decimals}f}"
 
 
+EdgeSide = Literal[-1, 1]
+"""Which edge of a lane: ``-1`` the left (toward -x), ``+1`` the right."""
+
+
+@dataclass(frozen=True)
+class EdgeMark:
+    """A body outside the lane (a wall, a barn's door), marked at the lane's edge on its side: an
+    arrow there and its name and distance beside it (:func:`edge_marks`)."""
+
+    name: str
+    side: EdgeSide
+    distance: float
+    """How far the body's face lies beyond the nearest rod end, in the frame's x units (> 0)."""
+    x: float
+    """Page x of the arrow's tip (the track's edge)."""
+    z: float
+    """Page z of the arrow (the rods' centre line)."""
+    color: str
+    text: str
+    """``"wall 3.2 →"`` on the right, ``"← wall 3.2"`` on the left."""
+    text_z: float
+    """Page z of the text's middle (the left ends' dial row), which ends at the track's edge."""
+
+
 @dataclass(frozen=True)
 class LanePicture:
     """One lane of the app's canvas at one instant, in page pixels (:mod:`.layout`)."""
@@ -400,46 +508,62 @@ class LanePicture:
     boxes: tuple[Box, ...]
     """Rods and obstacles, clipped to the lane's track; ``Box.z`` is the box's centre height."""
     segments: tuple[Segments, ...]
-    """The rods' ticks and clock hands (ink), the ruler's line and ticks (the frame's colour)."""
+    """The rods' ticks and clock hands (ink), the ruler's line and ticks (the frame's colour), the
+    arrows of :attr:`edge_marks` (each in its body's colour)."""
     dials: FloatArray
     """Centres ``(x, z)`` of the clock dials inside the track, ``(n, 2)``."""
     title: str
-    """The frame and its time, and the clocks' readings (two lines)."""
+    """The frame and its time (and the zoom, if any: :func:`zoom_words`), and the clocks' readings
+    (two lines)."""
     window: LaneWindow
     scale: float
-    """Page px per unit of the frame's x."""
+    """Page px per unit of the frame's x (one for both lanes: :attr:`LaneScale.SHARED`)."""
     origin_px: float
     """Page x of the frame's x = 0 (the ruler's numbers are at ``origin_px + value * scale``)."""
     ruler_step: float
     ends: FloatArray
     """The rods' end positions in the frame (the frame's x), ``(rods, 2)``."""
+    ruler_ticks: npt.NDArray[np.int64] = field(default_factory=lambda: np.zeros(0, np.int64))
+    """The ruler's ticks inside the track, as multiples ``n`` of :attr:`ruler_step` (tick ``n`` at
+    page x ``origin_px + n * ruler_step * scale``)."""
+    ruler_numbers: tuple[str, ...] = ()
+    """Each tick's number (:func:`ruler_text`), one per :attr:`ruler_ticks`: every tick carries one."""
+    zoom: float = 1.0
+    """The scale over the playback's steady one (:class:`LaneScales`)."""
+    edge_marks: tuple[EdgeMark, ...] = ()
+    """The bodies that lie wholly outside the track (:class:`EdgeMark`)."""
 
 
 def lane_picture(
     scene: rr.Scene,
     frame: rr.Frame,
     now: float,
-    steady: float,
+    scale: float,
     place: LaneLayout,
     title: str,
-    center: float | None = None,
+    fit: LaneFit,
+    snapshot: tuple[FloatArray, FloatArray] | None = None,
+    zoom: float = 1.0,
 ) -> LanePicture:
-    """The rods of ``scene`` at time ``now`` of ``frame`` in the lane ``place``: the lane follows
-    its rods (:func:`lane_window`; centred on ``center`` if given), with true positions on a ruler
-    of the frame's x; dials and rods keep their pixel sizes at any zoom."""
-    snap = scene.snapshot(now, frame=frame, fractions=TICK_FRACTIONS)
+    """The rods of ``scene`` at time ``now`` of ``frame`` in the lane ``place``, at ``scale`` page px
+    per unit of the frame's x (:func:`lane_scales`) about ``fit.center`` (:func:`lane_fit`), with true
+    positions on a ruler of the frame's x whose every tick carries its number; dials and rods keep their
+    pixel sizes at any zoom; a body outside the track is marked at its edge (:func:`edge_marks`).
+    ``snapshot``: ``scene.snapshot(now, frame=frame, fractions=TICK_FRACTIONS)`` if the caller has it;
+    ``zoom``: ``scale`` over the steady scale (the title says it, :func:`zoom_words`)."""
+    snap = snapshot if snapshot is not None else scene.snapshot(now, frame=frame, fractions=TICK_FRACTIONS)
     rest = np.array([r.motion.length for r in scene.rods])
     ends = snap[0][:, [0, -1]]
-    win = lane_window(ends, rest, steady, center)
     track = place.track
-    scale = track.width / win.width
+    win = LaneWindow(fit.center, track.width / scale)
     origin = 0.5 * (track.x0 + track.x1) - win.center * scale
     unit = float(rest.max())
     k = unit * scale  # px per lane unit
     geo = LaneGeometry(
         unit, rod_height=place.rod_px / k, clock_radius=place.clock_px / k, wall_height=place.wall_px / k
     )
-    st = lane_state(scene, frame, now, geo, title, 0.0, True, snap)
+    words = zoom_words(zoom)
+    st = lane_state(scene, frame, now, geo, f"{title}   {words}" if words else title, 0.0, True, snap)
 
     def px(x: FloatArray | float) -> FloatArray:
         return origin + k * np.asarray(x, dtype=float)
@@ -459,11 +583,10 @@ def lane_picture(
     keep = (dx >= track.x0) & (dx <= track.x1)
     dials = np.stack([dx[keep], place.rod_z + k * st.dials[keep, 1]], axis=-1)
     step = ruler_step(win.width)
-    marks = np.arange(
-        np.ceil((win.center - 0.5 * win.width) / step), np.floor((win.center + 0.5 * win.width) / step) + 1
-    )
-    mx = origin + marks * step * scale
-    mx = mx[(mx >= track.x0) & (mx <= track.x1)]
+    ticks = np.arange(
+        np.ceil((track.x0 - origin) / (step * scale) - 1e-9), np.floor((track.x1 - origin) / (step * scale) + 1e-9) + 1
+    ).astype(np.int64)
+    mx = origin + ticks * step * scale
     zr, tick = place.ruler_z, place.tick_px
     origin_tick = [origin] if track.x0 <= origin <= track.x1 else []
     rx0 = np.concatenate([[track.x0], mx, origin_tick])
@@ -471,8 +594,81 @@ def lane_picture(
     rz1 = np.concatenate([[zr], np.full(mx.size, zr - tick), [place.rod_z - 0.5 * place.rod_px] * len(origin_tick)])
     rx1 = np.concatenate([[track.x1], mx, origin_tick])
     ruler = Segments(rx0, rz0, rx1, rz1, Style(FRAME_COLOR, 1.5))
+    numbers = tuple(ruler_text(float(n) * step, step) for n in ticks)
+    marks = edge_marks(scene, frame, now, ends, place, origin, scale, step)
     text = st.labels[0].text if st.labels else title
-    return LanePicture(tuple(boxes), (rods, ruler), dials, text, win, scale, origin, step, ends)
+    return LanePicture(
+        tuple(boxes),
+        (rods, ruler, *(edge_arrow(m, place) for m in marks)),
+        dials,
+        text,
+        win,
+        scale,
+        origin,
+        step,
+        ends,
+        ticks,
+        numbers,
+        zoom,
+        marks,
+    )
+
+
+#: An edge mark's arrow: this many rod heights long, its head this share of its length.
+EDGE_ARROW_RODS = 1.6
+EDGE_HEAD_SHARE = 0.4
+
+
+def edge_marks(
+    scene: rr.Scene,
+    frame: rr.Frame,
+    now: float,
+    ends: FloatArray,
+    place: LaneLayout,
+    origin: float,
+    scale: float,
+    step: float,
+) -> tuple[EdgeMark, ...]:
+    """The bodies (:data:`.objects.OBJECT_STYLES`' ``"bar"``: a wall, a barn's door) whose bar lies wholly
+    outside the lane's track at time ``now`` of ``frame``: each marked at the edge on its side, with
+    its name and how far its face lies beyond the nearest rod end (``ends``, the frame's x; the core's
+    positions, to the ruler's decimals), e.g. ``"wall 3.20 →"``."""
+    track = place.track
+    out: list[EdgeMark] = []
+    for obj in scene.objects:
+        style = object_style(obj)
+        if style.glyph != "bar":
+            continue
+        face = float(obj.worldlines[0].positions(now, frame=frame))
+        far = face + obj.side * style.width * float(max(r.motion.length for r in scene.rods))
+        lo_px, hi_px = sorted((origin + face * scale, origin + far * scale))
+        if hi_px < track.x0:
+            side: EdgeSide = -1
+        elif lo_px > track.x1:
+            side = 1
+        else:
+            continue
+        distance = float(ends.min()) - face if side < 0 else face - float(ends.max())
+        digits = ruler_text(abs(distance), step) if abs(distance) < 10.0 else f"{abs(distance):.0f}"
+        text = f"← {obj.name} {digits}" if side < 0 else f"{obj.name} {digits} →"
+        x = track.x0 if side < 0 else track.x1
+        out.append(EdgeMark(obj.name, side, distance, x, place.rod_z, style.color, text, place.dial_z[0]))
+    return tuple(out)
+
+
+def edge_arrow(mark: EdgeMark, place: LaneLayout) -> Segments:
+    """An edge mark's arrow (page px): a shaft along the rods' centre line ending at the track's edge,
+    and a head, in its body's colour."""
+    length = EDGE_ARROW_RODS * place.rod_px
+    head = EDGE_HEAD_SHARE * length
+    tip, tail = mark.x, mark.x - mark.side * length
+    back = mark.x - mark.side * head
+    z = mark.z
+    x0 = np.array([tail, back, back])
+    z0 = np.array([z, z + 0.6 * head, z - 0.6 * head])
+    x1 = np.array([tip, tip, tip])
+    z1 = np.array([z, z, z])
+    return Segments(x0, z0, x1, z1, Style(mark.color, 2.0))
 
 
 # ---------------------------------------------------------------------- light pulses in the lanes

@@ -31,11 +31,15 @@ from .diagrams import (
 )
 from .lanes import (
     FIT_SHARE,
+    TICK_FRACTIONS,
     LaneGeometry,
     LanePicture,
+    LaneScale,
     LaneState,
+    lane_fit,
     lane_geometry,
     lane_picture,
+    lane_scales,
     lane_state,
     lane_static,
     pulse_segments,
@@ -92,6 +96,9 @@ class Drawn:
     """The lab diagram's view and the chosen frame's (their relative frames composed once)."""
     steady_widths: tuple[float, float] = (1.0, 1.0)
     """Each lane's x width (the frame's units) while no rod is too contracted to see (:func:`lanes.steady_width`)."""
+    lane_scale: LaneScale = LaneScale.SHARED
+    """One scale for both lanes (the default: a rod's lengths in the two frames compare by eye), or
+    each lane its own (:func:`.lanes.lane_scales`)."""
     signals: tuple[Signals, Signals] | None = None
     """The light signals in the lab and in the chosen frame (:func:`.signals.signals_in`), if the
     :attr:`~.layers.Layer.SIGNALS` layer is shown: the lanes' pulses, at no cost to the core per frame."""
@@ -207,16 +214,24 @@ class Drawn:
         if r.ride is not None:
             instant = instant or self.ride_instant(now)
         titles = lane_titles(r, now, instant)
-        lanes = [lane_picture(r.scene, _LAB, now, self.steady_widths[0], layout.lanes[0], titles[0])]
+        # each lane: its frame, its time and the point it keeps still (a riding lane: the ridden point)
+        shown: list[tuple[rr.Frame, float, float | None]] = [(_LAB, now, None)]
         if instant is None:
-            lanes.append(lane_picture(r.scene, r.frame, now, self.steady_widths[1], layout.lanes[1], titles[1]))
+            shown.append((r.frame, now, None))
         else:
             t_ride, x_point = instant.event
-            lanes.append(
-                lane_picture(
-                    r.scene, instant.frame, t_ride, self.steady_widths[1], layout.lanes[1], titles[1], center=x_point
-                )
+            shown.append((instant.frame, t_ride, x_point))
+        rest = np.array([rod.motion.length for rod in r.scene.rods])
+        snaps = [r.scene.snapshot(t, frame=f, fractions=TICK_FRACTIONS) for f, t, _ in shown]
+        fits = [lane_fit(x[:, [0, -1]], rest, c) for (x, _), (_, _, c) in zip(snaps, shown, strict=True)]
+        tracks = [place.track.width for place in layout.lanes]
+        scales = lane_scales(fits, tracks, self.steady_widths, self.lane_scale)
+        lanes = [
+            lane_picture(r.scene, f, t, scale, place, title, fit, snap, zoom)
+            for (f, t, _), scale, place, title, fit, snap, zoom in zip(
+                shown, scales.scales, layout.lanes, titles, fits, snaps, scales.zooms, strict=True
             )
+        ]
         if self.signals is None:
             return lanes
         signals = self.signals
@@ -286,12 +301,14 @@ def build_drawing(
     sampler: Sampler = ADAPTIVE,
     areas: tuple[tuple[float, float], tuple[float, float]] = (PLOT_AREA_PX, LENGTH_AREA_PX),
     label_px: float = EVENT_LABEL_PX,
+    lane_scale: LaneScale = LaneScale.SHARED,
 ) -> Drawn:
     """Everything that depends only on the scene and frame (not on playback time).
 
     ``sampler`` samples the diagrams' curves (the app's adaptive one unless a benchmark swaps it);
     ``areas`` are the plot areas (px) of the Minkowski diagrams and of the lengths chart;
-    ``label_px`` the size (CSS px) the diagrams' labels are drawn at, which their placement reserves.
+    ``label_px`` the size (CSS px) the diagrams' labels are drawn at, which their placement reserves;
+    ``lane_scale`` whether the canvas' lanes share one scale (the default) or each fits its own rods.
     """
     plot_area, length_area = areas
     scene, frame = resolved.scene, resolved.frame
@@ -349,8 +366,10 @@ def build_drawing(
         frame_chart=frame_chart,
         length_chart=length_chart,
         views=(lab_view, frame_view),
-        # each lane's scale from its own frame's window: the lab lane does not change with the frame
+        # each lane's steady width from its own frame's window; the lanes then share the scale at
+        # which both fit (LaneScale.SHARED), or each keeps its own (LaneScale.OWN)
         steady_widths=(steady_width(scene, lab, _round_outward(a0, a1)), frame_width),
+        lane_scale=lane_scale,
         signals=signals,
         ride=track,
     )
