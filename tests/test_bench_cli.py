@@ -130,16 +130,27 @@ def test_missing_out_is_a_usage_error() -> None:
     ],
 )
 @pytest.mark.parametrize("name", ["", "  "], ids=["empty", "blank"])
-@pytest.mark.slow  # a new interpreter each
-def test_empty_out_is_one_line_naming_out_and_exit_status_2(tmp_path: Path, command: list[str], name: str) -> None:
+def test_empty_out_is_one_line_naming_out_and_exit_status_2(
+    tmp_path: Path,
+    command: list[str],
+    name: str,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
     """``--out ""`` is a usage error, not the current folder (every command shares
-    :func:`rigidrel_app.export.paths.out_dir`)."""
-    proc = _rigidrel(*command, "--out", name, cwd=tmp_path)
-    assert proc.returncode == 2, proc.stderr
-    lines = proc.stderr.strip().splitlines()
-    assert len(lines) == 1, proc.stderr
-    assert "--out" in lines[0] and "Traceback" not in proc.stderr
-    assert proc.stdout == ""
+    :func:`rigidrel_app.export.paths.out_dir`). In-process, from ``tmp_path``; the bad ``--out``
+    above runs in a new interpreter."""
+    from rigidrel_app import cli
+
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as exit_:
+        cli.main([*command, "--out", name])
+    assert exit_.value.code == 2
+    out, err = capsys.readouterr()
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert "--out" in lines[0] and "Traceback" not in err
+    assert out == ""
     assert list(tmp_path.iterdir()) == [], "nothing is written into the current folder"
 
 

@@ -13,6 +13,7 @@ import pytest
 from PIL import Image
 
 import rigidrel_core as rr
+from rigidrel_app.cli import main
 from rigidrel_app.export.diagram_html import SliderAxis, diagram_figure, slider_axes
 from rigidrel_app.export.figures import paper_figures
 from rigidrel_app.export.recording import record_lanes_html
@@ -126,10 +127,19 @@ def test_figures_regenerate_the_paper(tmp_path: Path) -> None:
         (["figures", "--out", "/proc/rigidrel-cannot"], "cannot be created"),
     ],
 )
-def test_bad_export_arguments(args: list[str], needle: str, tmp_path: Path) -> None:
-    r = rigidrel(*(a.replace("{tmp}", str(tmp_path)) for a in args))
+def test_bad_export_arguments(args: list[str], needle: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """In-process (``rigidrel_app.cli.main``); the missing ``--out`` in a new interpreter too, below."""
+    with pytest.raises(SystemExit) as exit_:
+        main([a.replace("{tmp}", str(tmp_path)) for a in args])
+    assert exit_.value.code == 2
+    err = capsys.readouterr().err
+    assert len(err.splitlines()) == 1 and needle in err, err
+
+
+def test_a_bad_export_argument_from_a_new_interpreter() -> None:
+    r = rigidrel("export", "rod-collision")
     assert r.returncode == 2
-    assert len(r.stderr.splitlines()) == 1 and needle in r.stderr, r.stderr
+    assert len(r.stderr.splitlines()) == 1 and "--out" in r.stderr, r.stderr
 
 
 @pytest.mark.parametrize("kind", list(rr.scene_descriptions()))

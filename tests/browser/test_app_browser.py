@@ -1,7 +1,8 @@
 """The app in a real browser: it loads, draws the core's positions, and reacts to a user.
 
 Each test starts its own server (127.0.0.1, free port) and page; screenshots land in
-``test-artifacts/screenshots/<test>/``.
+``test-artifacts/screenshots/<test>/``. The tests that set the state they look at and read the
+canvas share one tab: they are in ``test_canvas_browser.py``.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ import rigidrel_core as rr
 from rigidrel_app.live.canvas_report import LABEL as CANVAS_REPORT_LABEL
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
-from rigidrel_app.view.state import CUSTOM_FRAME, Settings
+from rigidrel_app.view.state import Settings
 from rigidrel_app.view.vocabulary import ROD_COLORS
 from tests.browser.conftest import VIEWPORT
 from tests.viser_client import wait_until
@@ -233,81 +234,6 @@ def test_no_plotly_and_a_light_connection(tab: AppPage) -> None:
     assert not any("plotly" in src.lower() for src in scripts)
 
 
-def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> None:
-    """Both lanes put each rod end where the core says, on their rulers' scales.
-
-    The chosen frame moves at beta = 0.8 and the clock is mid-collision, so lab positions
-    drawn in the frame lane would be off by far more than the tolerance (checked).
-    """
-    settings = Settings.of("rod-collision", v1=0.6, v2=0.0, mass2=2.0, eps=1.0)
-    settings = Settings(settings.scene, settings.values, CUSTOM_FRAME, 0.8)
-    now = 0.4
-    default_scene = tab.canvas()
-    show(tab, settings, now)
-    scene = tab.session.painter.drawn.resolved.scene  # type: ignore[union-attr]
-    frame = tab.session.painter.drawn.resolved.frame  # type: ignore[union-attr]
-    img = tab.canvas_after(default_scene)
-    tab.page.screenshot(path=str(shots / "collision_beta_0.8_t_0.4.png"))
-    found = measured_rods(tab, img)
-    separation = []
-    for lane, runs, lane_frame in zip(tab.session.painter.renderer_lanes, found, (rr.LAB, frame), strict=True):
-        x = scene.positions(np.array([now]), frame=lane_frame)[:, :, 0]
-        x_lab = scene.positions(np.array([now]), frame=rr.LAB)[:, :, 0]
-        for r in range(2):
-            lo, hi = lane.origin_px + x[r] * lane.scale
-            a, b = runs[r]
-            assert abs(a - lo) <= PIXEL_TOLERANCE and abs(b - hi) <= PIXEL_TOLERANCE, (r, (a, b), (lo, hi))
-            lab_lo, lab_hi = lane.origin_px + x_lab[r] * lane.scale
-            separation.append(max(abs(lab_lo - lo), abs(lab_hi - hi)))
-    # in the frame lane, lab positions would be visibly wrong: the test can fail for the right reason
-    assert max(separation[2:]) > 10 * PIXEL_TOLERANCE
-
-
-#: Slider extremes where the old view lost its rods; each lane must show each rod at least this
-#: share of its track times its rest length over the largest (or 12 px).
-LEGIBLE_SHARE = 0.15
-EXTREMES = [
-    ("V_0.99", Settings.of("constant-acceleration", v=0.99), 0.9),
-    ("V_0.99_aF_0.01", Settings.of("constant-acceleration", v=0.99, a_front=0.01), 0.9),
-    ("wall_V_0.99", Settings.of("wall-collision", v=0.99), 0.6),
-    ("beta_+0.99", Settings("constant-acceleration", (), CUSTOM_FRAME, 0.99), 0.5),
-    ("beta_-0.99", Settings("constant-acceleration", (), CUSTOM_FRAME, -0.99), 0.5),
-    ("M2_0.01", Settings.of("rod-collision", mass2=0.01), 0.9),
-    ("M2_100", Settings.of("rod-collision", mass2=100.0), 0.9),
-    ("L2_0.1", Settings.of("rod-collision", length2=0.1), 0.6),
-]
-
-
-@pytest.mark.parametrize(("name", "settings", "fraction"), EXTREMES, ids=[e[0] for e in EXTREMES])
-def test_rods_stay_large_at_the_sliders_extremes(
-    tab: AppPage, shots: Path, name: str, settings: Settings, fraction: float
-) -> None:
-    """Measured on the canvas: every rod of both lanes is drawn where the core puts it and at least
-    LEGIBLE_SHARE of its lane (scaled by its rest length), late in the window (rods fastest)."""
-    before = tab.canvas()
-    d = build_drawing_for(settings)
-    now = d.window[0] + fraction * (d.window[1] - d.window[0])
-    show(tab, settings, now)
-    img = tab.canvas_after(before)
-    tab.page.screenshot(path=str(shots / f"{name}.png"))
-    layout = tab.session.painter.layout
-    assert layout is not None
-    rest = np.array([rod.motion.length for rod in d.resolved.scene.rods])
-    for place, runs in zip(layout.lanes, measured_rods(tab, img), strict=True):
-        for r, (a, b) in enumerate(runs):
-            need = max(min(LEGIBLE_SHARE * rest[r] / rest.max() * place.track.width, 12.0), 8.0)
-            assert b - a >= need, (name, r, b - a, need)
-
-
-def build_drawing_for(settings: Settings) -> Any:
-    from rigidrel_app.view.scene_view import build_drawing
-    from rigidrel_app.view.state import resolve
-
-    r = resolve(settings)
-    assert not isinstance(r, str)
-    return build_drawing(r)
-
-
 def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
     before_charts = tab.session.painter.drawn.charts  # type: ignore[union-attr]
     before_velocity = tab.session.painter.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
@@ -382,23 +308,6 @@ def rod_extents(img: np.ndarray) -> np.ndarray:
         assert columns.size, f"no pixel of rod colour {color}"
         out.append((columns.min(), columns.max()))
     return np.array(out)
-
-
-def test_the_canvas_carries_the_diagrams_event_labels_and_legend(tab: AppPage) -> None:
-    show(tab, Settings("rod-collision", frame="barycentric"), 0.0)
-    wait_until(lambda: any("barycentric" in t for t in tab.texts()))
-    texts = tab.texts()
-    assert "Minkowski diagram, lab frame" in texts
-    assert any(t.startswith("Minkowski diagram,") and "barycentric" in t for t in texts)
-    assert "Equal-time length (Fig. 2)" in texts
-    for label in ("T₁", "T′₁", "T₂", "T′₂"):
-        assert sum(t.startswith(label) for t in texts) >= 2, label  # on both Minkowski diagrams
-    for name in ("rod 1", "rod 2", "light cone of the origin", "events", "rods now", "now: t", "now: t'"):
-        assert name in texts, name
-    assert any("axes of barycentric" in t for t in texts)
-    assert {"rod 1, lab (t)", "rod 2, lab (t)"} <= set(texts)
-    assert {"t", "x", "t′", "x′"} <= set(texts)  # the axes are named in each frame's coordinates
-    assert {"x", "x′"} <= set(texts)  # and so are the rulers
 
 
 def test_every_text_is_at_least_14_px(tab: AppPage, shots: Path) -> None:
@@ -534,17 +443,6 @@ def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, sh
     tab.type_into_slider("V2", -0.3)
     wait_until(lambda: tab.session.painter.drawn.resolved.scene is not scene_before)  # type: ignore[union-attr]
     wait_until(lambda: not tab.page.locator("text=so that the rods collide").is_visible())
-
-
-def test_share_button_is_hidden(tab: AppPage) -> None:
-    """viser's share button (it needs the internet) is hidden: the header, drawn with its other icons,
-    has no share icon, and no header icon is labelled "Share"."""
-    icons = tab.page.locator("button.mantine-ActionIcon-root")
-    visible = [icons.nth(k) for k in range(icons.count()) if icons.nth(k).is_visible()]
-    assert visible, "the header's icons are not drawn yet"
-    assert tab.page.locator("svg.tabler-icon").count() > 0  # tabler icons are drawn: the check can see one
-    assert tab.page.locator("svg.tabler-icon-share").count() == 0
-    assert all("share" not in (icon.get_attribute("aria-label") or "").lower() for icon in visible)
 
 
 def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:

@@ -16,6 +16,7 @@ from rigidrel_app.export.diagram_html import diagram_html
 from rigidrel_app.export.recording import record_lanes_html
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, Settings
+from tests.sweeps import cases
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
@@ -169,13 +170,22 @@ def test_diagram_page_responds_to_its_slider_offline(browser: Any, exported: dic
         page.close()
 
 
-@pytest.mark.parametrize("viewport", [(1280, 720), (1920, 1080)], ids=["720p", "1080p"])
-@pytest.mark.parametrize("name", ["diagram", *EXTREME_PAGES])
+SCREENS = {"720p": (1280, 720), "1080p": (1920, 1080)}
+#: Every page on the smaller screen, where labels are most crowded, and the scene's own page on the
+#: larger one; ``python -m tests.sweeps.export_pages`` checks every page on both.
+OVERPRINT = cases(
+    [*((name, "720p") for name in ["diagram", *EXTREME_PAGES]), ("diagram", "1080p")],
+    [(name, screen) for name in ["diagram", *EXTREME_PAGES] for screen in SCREENS],
+)
+
+
+@pytest.mark.parametrize(("name", "screen"), OVERPRINT, ids=[f"{n}-{s}" for n, s in OVERPRINT])
 def test_diagram_page_labels_do_not_overprint(
-    browser: Any, exported: dict[str, Path], shots: Path, name: str, viewport: tuple[int, int]
+    browser: Any, exported: dict[str, Path], shots: Path, name: str, screen: str
 ) -> None:
     """As drawn by plotly in the browser: no two annotation texts overlap, text and lines are sized
     for a projector, and the page fits a 1280x720 screen."""
+    viewport = SCREENS[screen]
     page = OfflinePage(browser, exported[name], viewport)
     try:
         dom = wait_for_plot(page)
