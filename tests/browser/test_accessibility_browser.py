@@ -13,7 +13,7 @@ from axe_playwright_python.sync_playwright import Axe
 
 from rigidrel_app.lessons import lesson_from
 from rigidrel_app.live.server import App
-from tests.browser.test_app_browser import AppPage
+from tests.browser.test_app_browser import AppPage, tab_on_own_server
 from tests.browser.test_controls_browser import press, type_keys
 from tests.viser_client import wait_until
 
@@ -34,15 +34,8 @@ def serious_violations(page: Any) -> list[str]:
 
 @pytest.fixture
 def lesson_tab(browser: Any) -> Iterator[AppPage]:
-    app = App(host="127.0.0.1", port=0, lesson=lesson_from("paper"))
-    page = None
-    try:
-        page = AppPage(browser, app)
+    with tab_on_own_server(browser, lesson=lesson_from("paper")) as page:
         yield page
-    finally:
-        if page is not None:
-            page.close()
-        app.stop()
 
 
 def test_the_app_is_axe_clean_in_every_look(tab: AppPage) -> None:

@@ -7,10 +7,12 @@ canvas share one tab: they are in ``test_canvas_browser.py``.
 
 from __future__ import annotations
 
+import contextlib
 import io
 import json
 import re
 import time
+from collections.abc import Iterator
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
@@ -32,6 +34,21 @@ pytestmark = pytest.mark.browser
 
 #: Detected rod edges must lie this close to the core's positions projected through the camera.
 PIXEL_TOLERANCE = 3.0
+
+
+@contextlib.contextmanager
+def tab_on_own_server(browser: Any, **app: Any) -> Iterator[AppPage]:
+    """One tab on a server of its own (``App(**app)`` on a free port); both are let go on the way
+    out, passed or failed."""
+    server = App(host="127.0.0.1", port=0, **app)
+    page = None
+    try:
+        page = AppPage(browser, server)
+        yield page
+    finally:
+        if page is not None:
+            page.close()
+        server.stop()
 
 
 class AppPage:

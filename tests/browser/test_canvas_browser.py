@@ -18,9 +18,8 @@ import numpy as np
 import pytest
 
 import rigidrel_core as rr
-from rigidrel_app.live.server import App
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings
-from tests.browser.test_app_browser import PIXEL_TOLERANCE, AppPage, measured_rods, show
+from tests.browser.test_app_browser import PIXEL_TOLERANCE, AppPage, measured_rods, show, tab_on_own_server
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
@@ -28,15 +27,8 @@ pytestmark = pytest.mark.browser
 
 @pytest.fixture(scope="module")
 def one_tab(browser: Any) -> Iterator[AppPage]:
-    app = App(host="127.0.0.1", port=0)
-    page = None
-    try:
-        page = AppPage(browser, app)
+    with tab_on_own_server(browser) as page:
         yield page
-    finally:
-        if page is not None:
-            page.close()
-        app.stop()
 
 
 @pytest.fixture

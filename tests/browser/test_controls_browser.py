@@ -17,11 +17,10 @@ import pytest
 
 from rigidrel_app.live.controls import LOG_SLIDER_LABEL
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS
-from rigidrel_app.live.server import App
 from rigidrel_app.view.scenario import Scenario
 from rigidrel_app.view.state import NO_PRESET, Settings, event_times, preset_menu
 from rigidrel_app.view.vocabulary import ROD_COLORS
-from tests.browser.test_app_browser import AppPage
+from tests.browser.test_app_browser import AppPage, tab_on_own_server
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
@@ -32,15 +31,8 @@ FIG3, FIG4 = preset_menu(Settings("rod-collision")).options[1:3]
 @pytest.fixture
 def collision(browser: Any) -> Iterator[AppPage]:
     """A tab on a server whose tabs open on the rod collision (the paper's Fig. 3)."""
-    app = App(host="127.0.0.1", port=0, start=Scenario(Settings("rod-collision")))
-    page = None
-    try:
-        page = AppPage(browser, app)
+    with tab_on_own_server(browser, start=Scenario(Settings("rod-collision"))) as page:
         yield page
-    finally:
-        if page is not None:
-            page.close()
-        app.stop()
 
 
 # ---------------------------------------------------------------- finding things as a user does

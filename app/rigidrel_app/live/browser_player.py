@@ -59,11 +59,6 @@ class BrowserPlayer:
             message.payload = payload
         queue_to_client(self.client, message)
 
-    @property
-    def settled(self) -> bool:
-        """No pause on its way back from the browser (whose frame where it paused sets the clock)."""
-        return not self.pausing
-
     def become_ready(self) -> Mirror | None:
         """The runtime said it is ready: its mirror of the server's frames (None if it already was)."""
         if self.ready:

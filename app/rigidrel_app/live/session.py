@@ -91,12 +91,11 @@ class Session:
         """Values a client sent that the session checked and acted on or refused (in any order)."""
         self.lesson: LessonPart = NoLesson()
         if lesson is not None:
-            told = hooks
             self.lesson = GivenLesson(
                 lesson,
-                lambda index: None if told is None else told.step_changed(self, index),
-                lambda: None if told is None else told.lead(self),
-                lambda token: told is not None and told.lecturer(self, token),
+                lambda index: None if hooks is None else hooks.step_changed(self, index),
+                lambda: None if hooks is None else hooks.lead(self),
+                lambda token: hooks is not None and hooks.lecturer(self, token),
             )
         self.caption_key = f"rigidrel_caption_{uuid.uuid4().hex}"
         """This tab's localStorage key for the caption band and the page's style (:mod:`.controls`)."""
