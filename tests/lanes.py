@@ -3,7 +3,9 @@
 Plain ``pytest`` runs the fast lane: ``addopts`` in ``pyproject.toml`` deselects the tests marked
 ``slow`` (a server, a subprocess, a Jupyter kernel, an export that renders through Chromium, or
 seconds of work) and ``browser`` (Debian's chromium driven by playwright). ``bash tests/run.sh``,
-the README's test command, runs every lane (``-m ""``).
+the README's test command, runs every lane: all but the ``alone`` tests on two workers
+(pytest-xdist), then the ``alone`` ones (rates compared with a baseline measured in the same
+process) with nothing beside them.
 
 A test in the fast lane that starts a process or listens on a socket fails, naming what it started:
 every ``subprocess.Popen``, ``os.system``, ``os.fork``, ``os.posix_spawn`` and

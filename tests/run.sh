@@ -18,5 +18,10 @@ python3 -m venv .venv
 .venv/bin/ruff format --check .
 .venv/bin/pyright
 .venv/bin/lint-imports
-# every lane: the fast one (plain `pytest`), slow and browser
-.venv/bin/python -m pytest -q -m "" "$@"
+# every lane: the fast one (plain `pytest`), slow and browser, on both cores (a worker takes a
+# whole test file, so a file's shared tab or server is opened once); then the tests that compare
+# rates measured in their own process, with nothing running beside them
+# (pytest's status 5 is "nothing selected", as for a `-k` that picks tests of one part only)
+lane() { .venv/bin/python -m pytest -q "$@" || { status=$?; [ "$status" = 5 ] || exit "$status"; }; }
+lane -m "not alone" -n 2 --dist loadfile "$@"
+lane -m "alone" "$@"

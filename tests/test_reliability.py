@@ -290,6 +290,7 @@ def _playing(clients: list[LightClient], frames: int = 10) -> None:
     wait_until(lambda: all(c.stats.lane_frames - n >= frames for c, n in zip(clients, n0, strict=True)), timeout=30)
 
 
+@pytest.mark.alone
 def test_stalled_clients_do_not_slow_the_others() -> None:
     """Tabs that stop reading must not hold up the ones that read. Relative to the same readers
     without them, measured in this process (the absolute rate is the load benchmark's job)."""
@@ -339,6 +340,7 @@ def test_disconnects_and_reconnects_leak_nothing() -> None:
         h.close()
 
 
+@pytest.mark.alone
 def test_a_flooding_client_is_dropped_and_the_others_keep_playing() -> None:
     """A client sending 10,000 control values a second (each a redraw if acted on) is dropped once it
     spends its message budget; the tabs that play on keep playing (relative to themselves just
