@@ -21,7 +21,7 @@ import rigidrel_core as rr
 from rigidrel_app.live.controls import BETA, LOG_SLIDER_LABEL, SPEED, notice_place
 from rigidrel_app.live.keys import HOTKEYS, LESSON_HOTKEYS, RESERVED, Action, action_for, key_line
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS, Playback
-from rigidrel_app.view.entry import NumberEntry, Refuse, Typing, Undo, Use, read_number, refusal
+from rigidrel_app.view.entry import NumberEntry, Refuse, Typing, Use, read_number, refusal
 from rigidrel_app.view.state import (
     CUSTOM_FRAME,
     NO_PRESET,
@@ -126,23 +126,17 @@ def test_reading_any_text_never_raises(text: str) -> None:
             assert e.lo <= verdict.value <= e.hi
 
 
-def test_a_slider_box_clamp_after_a_refusal_is_undone() -> None:
-    """A value typed beyond a slider's range into the slider's own box is refused and left there; when
-    the box loses focus the browser clamps it to the slider's end and sends that: it is undone, not
-    used (the notice stays), so typing 0.999 never becomes a silent 0.99."""
-    verdict, clamped = BETA.judge_position(0.999)
-    assert isinstance(verdict, Refuse) and not verdict.put_back and clamped == 0.99
-    assert BETA.judge_position(0.99, clamped) == (Undo(), None)
-    assert BETA.judge_position(0.99, None) == (Use(0.99), None)  # the end itself, dragged or typed
-    assert BETA.judge_position(0.5, clamped) == (Use(0.5), None)  # a new value forgets the refusal
-    verdict, clamped = BETA.judge_position(-3.0)
-    assert clamped == -0.99 and BETA.judge_position(-0.99, clamped) == (Undo(), None)
-    for hostile in (math.nan, math.inf, "x", None, True):  # nobody types these: put back at once
-        verdict, clamped = BETA.judge_position(hostile)
-        assert isinstance(verdict, Refuse) and verdict.put_back and clamped is None
-    verdict, clamped = OTHER_LOG.judge_position(5.0)  # a log slider's box is hidden: put back
-    assert isinstance(verdict, Refuse) and verdict.put_back and clamped is None
-    assert OTHER_LOG.judge_position(math.log10(20.0)) == (Use(20.0), None)
+def test_a_slider_beyond_its_ends_is_refused_and_put_back() -> None:
+    """Nobody types into a slider (its own number box is hidden; the control's text box takes typed
+    numbers): a position beyond its ends, or no number, comes from no person and is put back."""
+    assert BETA.judge_position(0.99) == Use(0.99)  # the end itself, dragged
+    assert BETA.judge_position(0.5) == Use(0.5)
+    for hostile in (0.999, -3.0, math.nan, math.inf, "x", None, True):
+        verdict = BETA.judge_position(hostile)
+        assert isinstance(verdict, Refuse) and verdict.put_back, hostile
+    verdict = OTHER_LOG.judge_position(5.0)  # beyond a log slider's ends: named as the power of ten
+    assert isinstance(verdict, Refuse) and verdict.put_back and "10^5" in verdict.notice
+    assert OTHER_LOG.judge_position(math.log10(20.0)) == Use(20.0)
 
 
 def test_a_scenes_refusal_shows_where_the_change_was_made() -> None:

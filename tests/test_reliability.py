@@ -16,7 +16,7 @@ import time
 from collections.abc import Iterator
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import msgspec
 import pytest
@@ -24,7 +24,8 @@ from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 import rigidrel_core as rr
-from rigidrel_app.live.controls import BETA, LOG_SLIDER_LABEL, SPEED
+from rigidrel_app.backends._viser import handle_uuid
+from rigidrel_app.live.controls import BETA, SPEED
 from rigidrel_app.live.keys import Action
 from rigidrel_app.live.server import App
 from rigidrel_app.view.entry import NumberEntry, Typing, Use
@@ -85,18 +86,16 @@ def harness() -> Iterator[Harness]:
         h.close()
 
 
-#: Every number control a tab has, by label: the scenes' parameter controls (from the registry; a
-#: log-scale one is a text box for the value above a slider over its log10) and the others.
+#: Every number control a tab has, by label (the scenes' parameter controls, from the registry, and
+#: the others): each is a text box carrying the label, with a slider beneath it (over ``log10`` of
+#: the value for a log one). A hostile client sends to either part.
 ENTRIES = {"β (custom)": BETA, "Speed": SPEED}
-TEXT_BOXES: set[str] = set()
 for _d in rr.scene_descriptions().values():
     for _p in _d.parameters:
         if _p.slider is not None:
-            _e = NumberEntry.of(_p)
-            ENTRIES[_p.label] = _e
-            if _e.is_log:
-                TEXT_BOXES.add(_p.label)
-                ENTRIES[LOG_SLIDER_LABEL] = replace(_e, lo=math.log10(_e.lo), hi=math.log10(_e.hi), scale="linear")
+            ENTRIES[_p.label] = NumberEntry.of(_p)
+Part = Literal["box", "slider"]
+TARGETS = [(label, part) for label in sorted(ENTRIES) for part in ("box", "slider")]
 
 hostile_numbers = st.one_of(
     st.sampled_from([math.nan, math.inf, -math.inf, 1e308, -1e308, 1e-320, 5e-324]),
@@ -124,36 +123,53 @@ def answered(harness: Harness, session: Any, send: Any) -> None:
     wait_until(lambda: session.messages_handled > handled or harness.app.errors > errors)
 
 
-def legal_once_cast(label: str, value: Any) -> bool:
-    """Whether what viser makes of ``value`` (float() for a slider, str() for a text box) is a legal
-    value of the control: then it is not hostile ("1", True, "1/2" for a ratio)."""
+def legal_once_cast(label: str, part: Part, value: Any) -> bool:
+    """Whether what viser makes of ``value`` (str() for a box, float() for a slider) is a legal value
+    of the control's part: then it is not hostile ("1", True, "1/2" for a ratio; text on its way to
+    a number waits)."""
     entry = ENTRIES[label]
-    if label in TEXT_BOXES:
-        return isinstance(entry.read(str(value)), (Use, Typing))  # text on its way to a number waits
-    return entry.lo <= as_viser_casts(value) <= entry.hi
+    if part == "box":
+        return isinstance(entry.read(str(value)), (Use, Typing))
+    lo, hi = entry.slider_range
+    return lo <= as_viser_casts(value) <= hi
+
+
+def part_uuid(client: LightClient, session: Any, label: str, part: Part) -> str:
+    """The id of the control's box (the handle the client knows by ``label``) or of its slider."""
+    box = client.gui_uuid[label]
+    if part == "box":
+        return box
+    c = session.controls
+    numbers = [*c.parameters.values(), c.beta, c.ride_point, c.time, c.speed]
+    return next(handle_uuid(n.slider) for n in numbers if handle_uuid(n.box) == box)
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(label=st.sampled_from(sorted(ENTRIES)), value=hostile_anything)
-@example(label="L2/L1", value="1e9")  # a string viser casts to an illegal float
-@example(label="V", value="nan")
-@example(label="M2/M1", value=0.0)  # the log-scale parameter's value box
-@example(label="M2/M1", value="abc")
-def test_hostile_slider_values_are_refused_on_the_server(harness: Harness, label: str, value: Any) -> None:
-    assume(not legal_once_cast(label, value))
+@given(target=st.sampled_from(TARGETS), value=hostile_anything)
+@example(target=("L2/L1", "box"), value="1e9")
+@example(target=("L2/L1", "slider"), value="1e9")  # a string viser casts to an illegal float
+@example(target=("V", "slider"), value="nan")
+@example(target=("V", "box"), value="-0.5")  # the minus is read, not dropped
+@example(target=("M2/M1", "box"), value=0.0)  # the log-scale parameter's value box
+@example(target=("M2/M1", "box"), value="abc")
+@example(target=("M2/M1", "slider"), value=5.0)  # log10 beyond its end
+def test_hostile_number_values_are_refused_on_the_server(
+    harness: Harness, target: tuple[str, Part], value: Any
+) -> None:
+    label, part = target
+    assume(not legal_once_cast(label, part, value))
     if not harness.clients:
         harness.connect()
     client = harness.clients[0]
     session = next(s for s in harness.app.sessions.values() if not s.closed)
     scene_before = session.painter.drawn.resolved.scene  # type: ignore[union-attr]
     settings_before = session.state.settings
-    message = {"type": "GuiUpdateMessage", "uuid": client.gui_uuid[label], "updates": {"value": value}}
+    message = {"type": "GuiUpdateMessage", "uuid": part_uuid(client, session, label, part), "updates": {"value": value}}
     with session.lock:  # a refused number left in a box by the example before is put back, the notice cleared
         for p, control in session.controls.parameters.items():
             v = session.state.settings.parameters().get(p.name, p.default)
             control.slider.value = control.entry.to_slider(v if v is not None else control.entry.lo)
-            if control.box is not None:
-                control.box.value = control.entry.text(v if v is not None else control.entry.lo)
+            control.box.value = control.entry.text(v if v is not None else control.entry.lo)
         session.controls.speed.show(session.state.playback.speed)
         session.controls.beta.show(session.state.settings.beta)
         session.refuse("")
@@ -165,15 +181,10 @@ def test_hostile_slider_values_are_refused_on_the_server(harness: Harness, label
         assert session.state.notice.text.startswith(f"{ENTRIES[label].label} = "), session.state.notice.text
     for control in session.controls.parameters.values():
         assert isinstance(control.slider.value, float) and math.isfinite(control.slider.value)
-        assert control.box is None or isinstance(control.box.value, str)
+        assert isinstance(control.box.value, str)
     for name, value_now in session.state.settings.values:
         control = session.controls.control_for(session.state.settings, name)
-        if control is None or value_now is None:
-            continue
-        typed = control.slider.label == label and not control.entry.is_log and math.isfinite(as_viser_casts(value))
-        if typed:  # a finite number in a slider's own box is left there, refused, as if typed
-            assert control.slider.value == as_viser_casts(value)
-        else:
+        if control is not None and value_now is not None:  # every slider on the scene's value: none left beyond
             assert control.entry.shows(control.slider.value, value_now)
 
 

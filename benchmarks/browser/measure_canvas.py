@@ -101,7 +101,7 @@ def measure(
             time.sleep(1.0)
             redraws = []
             uid = page.locator('label:text-is("V1")').get_attribute("for")
-            box = page.locator(f"[id='{uid}']").locator("xpath=..").locator("input.mantine-NumberInput-input")
+            box = page.locator(f"[id='{uid}']")  # the control's own text box
             for k in range(5):
                 box.fill(f"{0.8 + 0.01 * k:.2f}")
                 page.evaluate("() => { window.__times = []; }")

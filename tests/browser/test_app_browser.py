@@ -22,6 +22,7 @@ import pytest
 from PIL import Image
 
 import rigidrel_core as rr
+from rigidrel_app.backends._viser import handle_uuid
 from rigidrel_app.live.canvas_report import LABEL as CANVAS_REPORT_LABEL
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
@@ -49,6 +50,20 @@ def tab_on_own_server(browser: Any, **app: Any) -> Iterator[AppPage]:
         if page is not None:
             page.close()
         server.stop()
+
+
+def slider_of(page: Any, session: Session, label: str) -> Any:
+    """The slider of the number control named ``label`` (it sits under the control's text box,
+    which carries the name), found by its handle's id."""
+    c = session.controls
+    numbers = [*c.parameters.values(), c.beta, c.ride_point, c.time, c.speed]
+    (found,) = [n for n in numbers if n.entry.label == label and n.box.visible]
+    return page.locator(f"[id='{handle_uuid(found.slider)}']")
+
+
+def number_box(page: Any, label: str) -> Any:
+    """The text box of the number control named ``label`` (viser's text box label names no id)."""
+    return page.locator(f'label:text-is("{label}")').first.locator("xpath=following::input[1]")
 
 
 class AppPage:
@@ -131,8 +146,12 @@ class AppPage:
         uid = self.page.locator(f'label:text-is("{label}")').get_attribute("for")
         return self.page.locator(f"[id='{uid}']")
 
+    def slider(self, label: str) -> Any:
+        return slider_of(self.page, self.session, label)
+
     def type_into_slider(self, label: str, value: float) -> None:
-        box = self.control(label).locator("xpath=..").locator("input.mantine-NumberInput-input")
+        """Type ``value`` into the box of the number control named ``label`` and press Enter."""
+        box = number_box(self.page, label)
         box.fill(str(value))
         box.press("Enter")
 
@@ -441,7 +460,7 @@ def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
         # a's change is complete; b's session has had no control's value at all and still shows the default
         assert b.session.state.settings.value("v") == Settings().value("v") and b.session.messages_handled == 0
         assert a.session is not b.session
-        value = b.control("V").locator("[role=slider]").get_attribute("aria-valuenow")
+        value = b.slider("V").locator("[role=slider]").get_attribute("aria-valuenow")
         assert float(value) == pytest.approx(Settings().value("v"))
     finally:
         a.close()

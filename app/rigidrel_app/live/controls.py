@@ -28,7 +28,7 @@ from ..backends._viser import handle_uuid, panel_a11y_js
 from ..backends.viser import DARK_CANVAS_CSS
 from ..lessons import Lesson
 from ..lessons.tour import LAYER_LABELS, step_labels
-from ..view.entry import NumberEntry, Refuse, Typing, Undo, Use, Verdict, control_value, refusal
+from ..view.entry import NumberEntry, Refuse, Typing, Use, Verdict, control_value, refusal
 from ..view.layers import Layer
 from ..view.notice import Notice, Place, notice_markup
 from ..view.scenario import format_scenario
@@ -45,9 +45,10 @@ T = TypeVar("T")
 
 #: A log slider's label (it sits under the box that carries the number's name).
 LOG_SLIDER_LABEL = "log scale"
-#: Decimals a slider's own box takes: more than its step, so that a value beyond the range is
-#: typed in full and refused with a notice (the browser box would cut 0.999 to 0.99 at two).
-TYPED_DECIMALS = 6
+#: A linear slider's label: none shown (it sits under the box that carries the number's name; a
+#: screen reader hears the box's name and "slider", ``backends/assets/a11y.js``). viser draws an
+#: empty label as no label at all, and the slider would then not line up with the others.
+LINEAR_SLIDER_LABEL = "\u2002"
 
 
 class Actions(Protocol):
@@ -120,8 +121,6 @@ def guard_number(
             a.refuse(verdict.notice, place)
             if verdict.put_back:
                 handle.value = put_back()
-        elif isinstance(verdict, Undo):
-            handle.value = put_back()
         else:
             assert isinstance(verdict, Typing)
 
@@ -155,22 +154,21 @@ def guard_choice(
 class NumberControl:
     """A number set with a slider and typed into a box.
 
-    A linear slider's own box (beside it) shows and takes the number, to
-    :data:`TYPED_DECIMALS` decimals. A log slider moves over ``log10`` of the number; its own
-    box would show that logarithm, so it is hidden (:func:`hidden_box_css`) and a text box of
-    the control's own, above the slider, shows and takes the number itself (2, 0.01, 100).
-    Typed text that is refused stays on screen with its notice rather than being put back
-    under the typist's fingers.
+    A text box of the control's own, above the slider, shows and takes the number itself (0.6, 2,
+    0.01, 100) as typed: ``-0.5``, ``1e5`` and ``abc`` reach the server as text and are read or
+    refused there, with a notice (:meth:`NumberEntry.read`). The slider's own number box is hidden
+    (:func:`hidden_box_css`): it drops the minus of a range that starts at 0 and the ``e`` of
+    ``1e5``, erases what it cannot read without a word, shows ``log10`` beside a log slider, and
+    loses keys typed while the page is busy drawing the previous value. Typed text that is refused
+    stays on screen with its notice rather than being put back under the typist's fingers.
     """
 
     def __init__(self, gui: viser.GuiApi, entry: NumberEntry, value: float, hint: str | None = None) -> None:
         self.entry = entry
-        self.box: viser.GuiTextHandle | None = None
-        if entry.is_log:
-            self.box = gui.add_text(entry.label, entry.text(value), hint=hint)
+        self.box: viser.GuiTextHandle = gui.add_text(entry.label, entry.text(value), hint=hint)
         lo, hi = entry.slider_range
         self.slider: viser.GuiSliderHandle[float] = gui.add_slider(
-            LOG_SLIDER_LABEL if entry.is_log else entry.label,  # under its box, which carries the name
+            LOG_SLIDER_LABEL if entry.is_log else LINEAR_SLIDER_LABEL,  # under its box, which carries the name
             lo,
             hi,
             entry.step,
@@ -178,22 +176,17 @@ class NumberControl:
             marks=entry.slider_marks(),
             hint=hint,
         )
-        if not entry.is_log:
-            self.slider.precision = TYPED_DECIMALS
-        self._clamped_to: float | None = None
-        """The slider end a typed value was last refused beyond (see ``NumberEntry.judge_position``)."""
         self._box_text: str | None = None
         """The box's text as the server last read or wrote it; the box holding other text means the
         client has typed on since, and that text's own message is on its way."""
 
     @property
     def handles(self) -> tuple[viser.GuiInputHandle[float] | viser.GuiTextHandle, ...]:
-        return (self.slider,) if self.box is None else (self.box, self.slider)
+        return (self.box, self.slider)
 
     def retarget(self, entry: NumberEntry) -> None:
         """A new range (the time slider follows the scene's window)."""
         self.entry = entry
-        self._clamped_to = None
         lo, hi = entry.slider_range
         s = self.slider
         if (s.min, s.max, s.step) != (lo, hi, entry.step):
@@ -209,14 +202,12 @@ class NumberControl:
                 h.order = order + 0.001 * k
         if not visible:
             return
-        if self.box is not None:
-            shown = self.box.value
-            typed_on = self._box_text is not None and shown != self._box_text
-            if not typed_on and self.entry.read(shown) != Use(value):  # never over keys still arriving
-                self.box.value = self._box_text = self.entry.text(value)
+        shown = self.box.value
+        typed_on = self._box_text is not None and shown != self._box_text
+        if not typed_on and self.entry.read(shown) != Use(value):  # never over keys still arriving
+            self.box.value = self._box_text = self.entry.text(value)
         if not self.entry.shows(self.slider.value, value):
             self.slider.value = self.entry.to_slider(value)
-            self._clamped_to = None
 
     def hide(self) -> None:
         for h in self.handles:
@@ -228,8 +219,7 @@ class NumberControl:
         notice shows in the folder ``place``."""
 
         def judge_slider(position: float) -> Verdict:
-            verdict, self._clamped_to = self.entry.judge_position(position, self._clamped_to)
-            return verdict
+            return self.entry.judge_position(position)
 
         def slider_position() -> float:
             return self.entry.to_slider(current())
@@ -243,33 +233,21 @@ class NumberControl:
             return self.entry.read(text)
 
         guard_number(self.slider, a, judge=judge_slider, act=act, put_back=slider_position, place=place)
-        if self.box is not None:
-            guard_number(self.box, a, judge=judge_box, act=act, put_back=box_text, place=place)
+        guard_number(self.box, a, judge=judge_box, act=act, put_back=box_text, place=place)
 
 
 def hidden_box_css(controls: Sequence[NumberControl]) -> str:
-    """Style rules that hide the browser's own number box of each log slider (it would show
-    ``log10`` of the number; the control's own box shows the number) and keep the row tall enough
+    """Style rules that hide the browser's own number box of each slider (the control's own text
+    box above it shows and takes the number, :class:`NumberControl`) and keep the row tall enough
     for the slider's marks. viser draws a slider's box as the next sibling of the slider element,
     whose id is the handle's id."""
-    ids = [handle_uuid(c.slider) for c in controls if c.box is not None]
+    ids = [handle_uuid(c.slider) for c in controls]
     if not ids:
         return ""
     boxes = ", ".join(f'[id="{i}"] + .mantine-NumberInput-root' for i in ids)
     rows = ", ".join(f'.mantine-Flex-root:has(> [id="{i}"])' for i in ids)
     # as tall as a row with a box (1.875em, viser's box height): room for the marks' labels
     return f"<style>{boxes} {{ display: none !important; }} {rows} {{ min-height: 1.875em; }}</style>"
-
-
-def locked_box_css(controls: Sequence[NumberControl]) -> str:
-    """Style rules that grey out and take the pointer from the browser's own number box beside each
-    slider of ``controls`` (viser disables a slider but not its box; the server refuses a value
-    typed there anyway). A log slider's own text box is a handle, disabled as such."""
-    ids = [handle_uuid(c.slider) for c in controls]
-    if not ids:
-        return ""
-    boxes = ", ".join(f'[id="{i}"] + .mantine-NumberInput-root' for i in ids)
-    return f"<style>{boxes} {{ pointer-events: none; opacity: 0.5; }}</style>"
 
 
 #: A slider's handle keeps the keyboard focus after a drag, and then ← and → move that slider (the
@@ -356,8 +334,6 @@ class Controls:
     """Why controls are disabled: the step of the lesson that fixes them (top of the Scene folder)."""
     fixed: frozenset[str] = frozenset()
     """The controls the lesson's current step fixes (disabled)."""
-    lock_css: viser.GuiHtmlHandle | None = None
-    """Style rules that grey out the number boxes of locked sliders (viser disables only the slider)."""
     look: tuple[Shade, bool] = ("light", False)
     """The theme and presenter mode the panel shows."""
     settings_of: Settings | None = None
@@ -598,13 +574,6 @@ class Controls:
                 h.disabled = scene_locked
         self.fixed = locked
         self.show_settings(settings)
-        if self.lock_css is not None:
-            boxes = [c for p, c in self.parameters.items() if p.name in locked]
-            boxes += [self.beta, self.ride_point] if "frame" in locked else []
-            boxes += [self.time] if "time" in locked else []
-            css = locked_box_css(boxes)
-            if self.lock_css.content != css:
-                self.lock_css.content = css
         for h in (self.frame, *self.beta.handles, self.ride_rod, *self.ride_point.handles):
             if h.disabled != ("frame" in locked):
                 h.disabled = "frame" in locked
@@ -849,15 +818,15 @@ def build_controls(
         notices["scenario"] = gui.add_markdown("", visible=False)
     readout = gui.add_markdown("", order=4.0)
     band = caption_installer(caption_key)
-    gui.add_html(hidden_box_css(list(params.values())) + ARROWS_STAY_IN_SLIDERS + PANEL_NAMED + band, order=5.0)
+    numbers = [*params.values(), beta, ride_point, time, speed]
+    gui.add_html(hidden_box_css(numbers) + ARROWS_STAY_IN_SLIDERS + PANEL_NAMED + band, order=5.0)
     gui.main_panel.dock_right()
     gui.main_panel.set_width(CONTROL_PX)
     commands = tuple((h, gui.add_command(h.label, hotkey=h.key, description=f"key: {h.shown}")) for h in table)
     controls = Controls(
         gui, preset, scene, params, overlay, notices, frame, beta, ride_rod, ride_point, play, time, speed, loop, fit,
         reset_view, presenter, dark, readout, commands, layers, cone, scenario_shown, scenario_box, scenario_load,
-        lesson_controls, locks,
-        lock_css=gui.add_html("", order=5.1) if lesson is not None else None, look=(shade, False),
+        lesson_controls, locks, look=(shade, False),
     )  # fmt: skip
     return controls
 

@@ -48,13 +48,7 @@ class Refuse:
     old value (typing 0.5 where 0 is refused would give 0.65)."""
 
 
-@dataclass(frozen=True)
-class Undo:
-    """The browser box's own correction of a refused value (it clamps what is left in it to the
-    slider's range when the box loses focus): put the control back; the refusal's notice stays."""
-
-
-Verdict = Use | Typing | Refuse | Undo
+Verdict = Use | Typing | Refuse
 
 
 def refusal(label: str, shown: str, allowed: str, why: str = "") -> str:
@@ -196,22 +190,14 @@ class NumberEntry:
             return self.refuse(shown, put_back=False)
         return Use(x)
 
-    def judge_position(self, position: object, clamped_to: float | None = None) -> tuple[Verdict, float | None]:
-        """A slider's value: dragged, or typed into the slider's own box (a linear slider's box
-        shows its value; a log slider's box is hidden, as it would show ``log10``).
-
-        ``clamped_to`` is the slider end a value typed into the box was refused beyond, if that was
-        the last thing this slider sent: the browser clamps what is left in the box to that end when
-        the box loses focus, and that correction is undone rather than used. Returns the verdict
-        and the new ``clamped_to``."""
+    def judge_position(self, position: object) -> Verdict:
+        """A slider's value, as dragged (nobody types into a slider: its own number box is hidden, and
+        the control's text box above it takes typed numbers, :meth:`read`). A position beyond the
+        slider's ends, or no number at all, comes from no person: refused and put back."""
         lo, hi = self.slider_range
         if isinstance(position, bool) or not isinstance(position, int | float) or not math.isfinite(position):
-            return self.refuse(repr(position)), None  # no person types that: a hostile client
+            return self.refuse(repr(position))
         x = float(position)
         if lo - 1e-12 <= x <= hi + 1e-12:
-            if clamped_to is not None and x == clamped_to:
-                return Undo(), None
-            return Use(self.from_slider(min(max(x, lo), hi))), None
-        if self.is_log:  # its box is hidden: nobody typed this, put it back
-            return self.refuse(f"10^{x:g}"), None
-        return self.refuse(repr(x), put_back=False), (hi if x > hi else lo)
+            return Use(self.from_slider(min(max(x, lo), hi)))
+        return self.refuse(f"10^{x:g}" if self.is_log else repr(x))

@@ -40,10 +40,13 @@ if (!window.rigidrelA11y) (function () {  // a scope of its own: a page's global
       var root = el.closest('.mantine-Slider-root[id]');
       var own = root && document.querySelector('label[for="' + CSS.escape(root.id) + '"]');
       var label = own ? own.textContent.trim() : rowLabel(el);
-      if (label === 'log scale') {  // a log slider: its number is the text box above it
-        var row = el.closest('.mantine-Flex-root');
-        var above = row && row.previousElementSibling && row.previousElementSibling.querySelector('label');
-        label = (above ? above.textContent.trim() + ', ' : '') + 'log scale';
+      if (own && (label === 'log scale' || label === '')) {  // its number's name is on the text box above it
+        var above = '';
+        for (var up = own.parentElement, k = 0; up && k < 8 && !above; up = up.parentElement, k++) {
+          var before = up.previousElementSibling && up.previousElementSibling.querySelector('label');
+          above = before ? before.textContent.trim() : '';
+        }
+        label = above + (label ? ', ' + label : above ? ', slider' : '');
       }
       if (label) el.setAttribute('aria-label', label);
     });
