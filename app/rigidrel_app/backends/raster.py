@@ -17,7 +17,7 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 from ..view.canvas import PagePicture, PageText
-from ..view.lanes import LaneState
+from ..view.lanes import Box, LaneState, rod_names
 from ..view.objects import OBJECT_STYLES
 from ..view.scene_view import FRAME_Z, LAB_Z, LANE_Z, Drawn, lane_states
 from ..view.vocabulary import (
@@ -97,7 +97,23 @@ class LaneRaster:
                 d.ellipse([float(u) - r, float(v) - r, float(u) + r, float(v) + r], outline=rgb(INK), width=2)
             for lab in st.labels:
                 self._text(d, lab.x, lab.y + z, plain_text(lab.text), INK, lab.size, lab.anchor)
+            self._names(d, st, z)
         return img
+
+    def _names(self, d: ImageDraw.ImageDraw, st: LaneState, z: float) -> None:
+        """The names of the rods that share a row, on their bars, ink on a white box (as the app's)."""
+        scene = self.drawn.resolved.scene
+        bars = []
+        for b in st.boxes[: scene.n_rods]:
+            (u0, u1), (v0, v1) = self.px(
+                np.array([b.x0, b.x1]), np.array([z + b.z - b.height / 2, z + b.z + b.height / 2])
+            )
+            bars.append(Box(float(u0), float(u1), float(v0 - v1), b.color, 0.5 * float(v0 + v1)))
+        for name in rod_names(scene, bars, max(9, round(12 * self.width / 1100))):
+            font = _font(round(name.px))
+            box = d.textbbox((name.x, name.z), name.text, font=font, anchor="mm")
+            d.rectangle((box[0] - 2, box[1] - 1, box[2] + 2, box[3] + 1), fill=(255, 255, 255))
+            d.text((name.x, name.z), name.text, fill=rgb(INK), font=font, anchor="mm")
 
     def _segments(
         self,

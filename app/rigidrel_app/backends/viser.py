@@ -789,6 +789,7 @@ class PageRenderer:
                 for p, lane in zip(layout.lanes, lanes)
             ]
             + [edge_text(m, theme.text_px) for lane in lanes for m in lane.edge_marks]
+            + [PageText(n.x, n.z, n.text, n.px, "center-center") for lane in lanes for n in lane.names]
         )
         for ruler, place, lane in zip(self._rulers, layout.lanes, lanes, strict=True):
             ruler.show(lane, place.ruler_z - place.tick_px - 2.0, theme.text_px)

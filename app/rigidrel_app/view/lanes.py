@@ -22,7 +22,7 @@ import numpy.typing as npt
 
 import rigidrel_core as rr
 
-from .layout import LaneLayout
+from .layout import LaneLayout, text_width
 from .objects import object_style, object_words
 from .vocabulary import (
     FRAME_COLOR,
@@ -502,6 +502,46 @@ class EdgeMark:
 
 
 @dataclass(frozen=True)
+class RodName:
+    """A rod's name on its bar, where it shares its row with another rod (so that colour is not all
+    that tells them apart, :func:`rod_names`): its middle at page ``(x, z)``, ``px`` high."""
+
+    text: str
+    x: float
+    z: float
+    px: float
+
+
+#: The smallest name drawn on a bar (px); a row thinner than this takes it, over its edges.
+MIN_NAME_PX = 11.0
+
+
+def name_on_bar(name: str, room_px: float, px: float) -> str | None:
+    """``name`` if it fits on a bar ``room_px`` wide at ``px``, else its short form (its number,
+    ``"2"`` of ``"rod 2"``, or its first word, ``"rear"`` of ``"rear ship"``), else None."""
+    words = name.split()
+    short = words[-1] if words[-1].isdigit() else words[0]
+    return next((t for t in (name, short) if text_width(t, px) + px <= room_px), None)
+
+
+def rod_names(scene: rr.Scene, boxes: Sequence[Box], text_px: float) -> tuple[RodName, ...]:
+    """The names of the rods that share a row (:attr:`rigidrel_core.Scene.rod_groups`: the rod
+    collision's two rods, Bell's two ships) on their bars, ``boxes`` (page px, clipped to the
+    track, in the rods' order; empty, ``x1 <= x0``, where a rod is out of view) as
+    :func:`lane_picture` draws them), at most ``text_px`` high and at least :data:`MIN_NAME_PX`."""
+    groups = list(scene.rod_groups)
+    out: list[RodName] = []
+    for rod, group, box in zip(scene.rods, groups, boxes, strict=True):
+        if groups.count(group) < 2 or box.x1 <= box.x0:
+            continue
+        px = min(text_px, max(MIN_NAME_PX, 0.85 * box.height))
+        text = name_on_bar(rod.name, box.x1 - box.x0, px)
+        if text is not None:
+            out.append(RodName(text, 0.5 * (box.x0 + box.x1), box.z, px))
+    return tuple(out)
+
+
+@dataclass(frozen=True)
 class LanePicture:
     """One lane of the app's canvas at one instant, in page pixels (:mod:`.layout`)."""
 
@@ -532,6 +572,8 @@ class LanePicture:
     """The scale over the playback's steady one (:class:`LaneScales`)."""
     edge_marks: tuple[EdgeMark, ...] = ()
     """The bodies that lie wholly outside the track (:class:`EdgeMark`)."""
+    names: tuple[RodName, ...] = ()
+    """The names of the rods that share a row, on their bars (:func:`rod_names`)."""
 
 
 def lane_picture(
@@ -568,11 +610,13 @@ def lane_picture(
     def px(x: FloatArray | float) -> FloatArray:
         return origin + k * np.asarray(x, dtype=float)
 
-    boxes: list[Box] = []
-    for b in st.boxes:
-        x0, x1 = max(float(px(b.x0)), track.x0), min(float(px(b.x1)), track.x1)
-        if x1 > x0:
-            boxes.append(Box(x0, x1, b.height * k, b.color, place.rod_z + b.z * k))
+    clipped = [
+        Box(
+            max(float(px(b.x0)), track.x0), min(float(px(b.x1)), track.x1), b.height * k, b.color, place.rod_z + b.z * k
+        )
+        for b in st.boxes
+    ]
+    boxes = [b for b in clipped if b.x1 > b.x0]
     seg = st.segments
     sx0, sx1 = px(seg.x0), px(seg.x1)
     inside = (np.minimum(sx0, sx1) >= track.x0) & (np.maximum(sx0, sx1) <= track.x1)
@@ -611,6 +655,7 @@ def lane_picture(
         numbers,
         zoom,
         marks,
+        rod_names(scene, clipped[: scene.n_rods], place.text_px),
     )
 
 

@@ -100,6 +100,8 @@ class LaneLayout:
     title_lines: int = 2
     """The title block's lines: 2 (the frame and its time, then the clock readings) or, on a short
     canvas, 1 (both on one line, :func:`lane_title_text`)."""
+    text_px: float = 15.0
+    """The lane's text size (its ruler numbers, edge marks and the rods' names on their bars)."""
 
 
 @dataclass(frozen=True)
@@ -300,6 +302,7 @@ def _canvas_layout(width: float, height: float, theme: Theme, legend_rows: int, 
                 ruler_z=ruler_z,
                 tick_px=0.4 * theme.text_px,
                 title_lines=title_lines,
+                text_px=theme.text_px,
             )
         )
         top = band.z0 - 4.0
