@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from rigidrel_app.notebook.live_state import figure_arrays, live_figure, start
+from tests.browser.test_accessibility_browser import serious_violations
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.slow  # a Jupyter kernel runs the notebook; the tests that open it in Chromium are browser too
@@ -73,7 +74,9 @@ def test_the_live_view_redraws_in_the_kernel(executed: Any) -> None:
     models = {m["model_name"] for m in state.values()}
     assert {"FloatSliderModel", "FloatLogSliderModel", "DropdownModel", "AnyModel"} <= models, models
     # the FigureWidget's script is plotly's own bundle, carried by the kernel, not fetched from a CDN
-    (figure,) = [m for m in state.values() if m["model_name"] == "AnyModel"]
+    anys = [m for m in state.values() if m["model_name"] == "AnyModel"]  # the figure, and the sliders' names
+    figure = max(anys, key=lambda m: len(m["state"]["_esm"]))
+    assert len(anys) == 2 and any("aria-label" in m["state"]["_esm"] for m in anys)
     esm = figure["state"]["_esm"]
     assert len(esm) > 1_000_000 and not re.search(r"""^\s*import\s[^;]*["']https?://""", esm, re.M)
 
@@ -88,9 +91,12 @@ def test_outputs_carry_plotly_once_and_name_no_cdn(executed: Any) -> None:
 
 
 @pytest.mark.browser
-def test_the_saved_outputs_draw_offline(browser: Any, executed: Any, tmp_path: Path) -> None:
+def test_the_saved_outputs_draw_offline_and_are_axe_clean(browser: Any, executed: Any, tmp_path: Path) -> None:
+    """The outputs as a saved notebook's page shows them (a page with a title and a language, as
+    nbconvert writes): they draw with the network cut, and axe-core finds no serious violation in them."""
     page_file = tmp_path / "outputs.html"
-    page_file.write_text("<!DOCTYPE html><meta charset='utf-8'>" + "\n".join(_html_outputs(executed)), encoding="utf-8")
+    head = "<!DOCTYPE html><html lang='en'><meta charset='utf-8'><title>A notebook's outputs</title>"
+    page_file.write_text(head + "\n".join(_html_outputs(executed)), encoding="utf-8")
     context = browser.new_context(viewport={"width": 1280, "height": 900})
     requests: list[str] = []
     errors: list[str] = []
@@ -105,6 +111,7 @@ def test_the_saved_outputs_draw_offline(browser: Any, executed: Any, tmp_path: P
         expected = 2 + len(re.findall("<h3>", _html_outputs(executed)[2]))
         wait_until(lambda: page.locator(".js-plotly-plot .main-svg").count() >= expected, timeout=180)
         assert requests == [] and errors == [], (requests, errors)
+        assert serious_violations(page) == []
     finally:
         context.close()
 
@@ -217,6 +224,7 @@ def test_the_live_view_in_jupyterlab_offline(browser: Any, jupyterlab: str, shot
         plot.wait_for(timeout=180_000)
         wait_until(lambda: "V1 = 0.6" in page.locator(".jp-OutputArea").first.inner_text(), timeout=180)
         page.screenshot(path=str(shots / "live-1280x720.png"))
+        assert serious_violations(page, within=".jp-OutputArea-output") == []  # the view, not JupyterLab's own page
         before = _plot_arrays(page)
 
         _set_slider(page, "V1", "0.8")
@@ -236,6 +244,7 @@ def test_the_live_view_in_jupyterlab_offline(browser: Any, jupyterlab: str, shot
         assert "v2 must be less than v1" in page.locator(".jp-OutputArea").first.inner_text()
         assert _plot_arrays(page) == shown
         page.screenshot(path=str(shots / "live-refused-1920x1080.png"))
+        assert serious_violations(page, within=".jp-OutputArea-output") == []  # with its notice
         assert elsewhere == [] and errors == [], (elsewhere, errors)
     except Exception:
         page.screenshot(path=str(shots / "failure.png"))

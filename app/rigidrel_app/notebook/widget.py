@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import html as html_lib
 import math
+from pathlib import Path
 from typing import Any
 
+import anywidget
 import ipywidgets as w
 import plotly.graph_objects as go
 
@@ -37,6 +39,13 @@ from .live_state import (
 LABEL_WIDTH = "150px"
 _STYLE = {"description_width": LABEL_WIDTH}
 _LAYOUT = w.Layout(width="420px")
+
+
+class SliderNames(anywidget.AnyWidget):
+    """Invisible: gives each slider of the view it sits in (and its readout box) an accessible name,
+    its row's label (``assets/names.js``), which ipywidgets leaves out."""
+
+    _esm = (Path(__file__).parent / "assets" / "names.js").read_text(encoding="utf-8")
 
 
 def _slider(entry: NumberEntry, value: float, continuous: bool) -> w.FloatSlider | w.FloatLogSlider:
@@ -122,7 +131,8 @@ class LiveView(w.VBox):
                 w.VBox([self.frame, self.beta, self.time]),
             ]
         )
-        super().__init__([controls, self.notice, self.figure, self.readout])
+        super().__init__([controls, self.notice, self.figure, self.readout, SliderNames()])
+        self.add_class("rigidrel-live")  # where SliderNames looks for the sliders
         self._show_controls(state)
 
     # ------------------------------------------------------------------ what changes
