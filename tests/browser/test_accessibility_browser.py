@@ -13,6 +13,7 @@ from axe_playwright_python.sync_playwright import Axe
 
 from rigidrel_app.lessons import lesson_from
 from rigidrel_app.live.server import App
+from rigidrel_app.view.describe import describe
 from tests.browser.test_app_browser import AppPage, tab_on_own_server
 from tests.browser.test_controls_browser import press, type_keys
 from tests.viser_client import wait_until
@@ -22,9 +23,11 @@ pytestmark = pytest.mark.browser
 WCAG_21_AA = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
 
 
-def serious_violations(page: Any) -> list[str]:
-    """axe-core's serious and critical violations of WCAG 2.1 A/AA on ``page``, one line each."""
-    result = Axe().run(page, options={"runOnly": {"type": "tag", "values": WCAG_21_AA}})
+def serious_violations(page: Any, within: str | None = None) -> list[str]:
+    """axe-core's serious and critical violations of WCAG 2.1 A/AA on ``page`` (only inside the
+    elements the CSS selector ``within`` picks, if given), one line each."""
+    context = None if within is None else {"include": [[within]]}
+    result = Axe().run(page, context=context, options={"runOnly": {"type": "tag", "values": WCAG_21_AA}})
     return [
         f"{v['id']} ({v['impact']}): " + " | ".join(n["html"][:120] for n in v["nodes"][:3])
         for v in result.response["violations"]
@@ -154,9 +157,25 @@ def test_a_whole_lecture_with_the_keyboard_alone(browser: Any) -> None:
         page.wait_for_selector("label:text-is('Step')", timeout=120_000)
         session = wait_until(lambda: next(iter(app.sessions.values()), None), timeout=60)
         wait_until(lambda: session.player.ready, timeout=60)
-        for k in range(1, len(lesson.steps)):  # the clicker walks every step
-            page.keyboard.press("PageDown")
-            wait_until(lambda k=k: session.state.step == k, timeout=30)
+        region = page.locator("#rigidrel-said")
+        said = lambda: region.text_content() or ""  # noqa: E731
+        n = len(lesson.steps)
+        for k in range(n):  # the clicker walks every step; the live region says each, and D all of it
+            if k:
+                page.keyboard.press("PageDown")
+                wait_until(lambda k=k: session.state.step == k, timeout=30)
+            wait_until(lambda k=k: f"Step {k + 1} of {n}: {lesson.steps[k].title}." in said(), timeout=30)
+            resolved = session.painter.drawn.resolved  # type: ignore[union-attr]  # said once the step's picture is on screen
+            assert describe(resolved, 0.0).summary in said()  # the scene, its parameters and both lanes' frames
+            if session.state.playback.playing:  # an autoplaying step: paused, so D reads one instant
+                page.keyboard.press("Space")
+                wait_until(lambda: session.playback_settled, timeout=30)
+            page.keyboard.press("d")
+            wait_until(lambda r=resolved: describe(r, session.state.playback.now).full in said())
+            full = said()
+            for name in [r.name for r in resolved.scene.rods]:  # every rod, in each lane
+                assert full.count(f"{name} from x") >= 1 and full.count(f"{name} from x′") >= 1, (k, name)
+            assert "Upper lane: " in full and "Lower lane: " in full
         for k in range(len(lesson.steps) - 2, -1, -1):
             page.keyboard.press("PageUp")
             wait_until(lambda k=k: session.state.step == k, timeout=30)
