@@ -119,6 +119,7 @@ def test_a_redraw_with_auto_fit_sends_no_camera_when_it_fits_and_a_reset_always_
     tab: tuple[Session, Recorder],
 ) -> None:
     session, client = tab
+    camera_messages_of(session, client, lambda: None)  # the tab's opening (its first fit) all arrived
     assert session.controls.fit.value  # "Auto-fit view" is on
     layout = session.painter.layout
     assert layout is not None

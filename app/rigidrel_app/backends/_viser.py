@@ -33,8 +33,10 @@ Python, private to viser (inventory):
 The browser, private to viser's client (inventory; the scripts in ``live/assets/`` use these):
 
 - ``canvas[data-engine]``: the three.js canvas (its CSS and rendered size).
-- a control's element ``id`` is its handle's uuid; a number box is the slider's next sibling
-  (``.mantine-NumberInput-root``); a panel is a ``[data-dock-group]`` or a ``.mantine-Tabs-root``.
+- a control's element ``id`` is its handle's uuid; a slider's own number box is its next sibling
+  (``.mantine-NumberInput-root``, hidden by the live panel's style: each number control has a
+  text box of its own, ``live/controls.py``); a panel is a ``[data-dock-group]`` or a
+  ``.mantine-Tabs-root``.
 - React's fiber tree from ``#root`` to viser's ``ViewerContext`` value (``mutable``,
   ``useSceneTree``, ``useGuiConfig``), its ``mutable.current.messageQueue`` (a plain array drained
   by the render loop), ``requestRender()`` and ``sendMessage()`` (the playback runtime); the
