@@ -8,6 +8,7 @@ them (the renderer on a recording scene, as the timelines are made).
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 
 import numpy as np
 import pytest
@@ -216,6 +217,26 @@ def _recorded_ruler_numbers(fold: SceneFold, lane: int) -> dict[float, str]:
     return shown
 
 
+def recorded_playback(d: Drawn, layout: CanvasLayout, frames: int) -> Iterator[tuple[list[LanePicture], SceneFold]]:
+    """A playback of ``d`` as :func:`~rigidrel_app.live.timeline.record_timeline` records it (the
+    renderer on a recording scene), in ``frames`` frames: each one's lanes, and the full state of
+    the scene after it."""
+    charts, picture = still_picture(d.charts, layout.charts, d.legend(), layout.legend, layout.theme)
+    still, moving = RecordingScene(), RecordingScene()
+    renderer = PageRenderer(still.scene, moving.scene)
+    renderer.set_static(layout, picture, d.ruler_names)
+    pictures = frame_pictures(d, layout, charts, frame_times(d.window, frames))
+    renderer.reserve(*room(pictures))
+    fold = SceneFold()
+    for m in moving.take():
+        fold.add(m)
+    for lanes, moving_part in pictures:
+        renderer.update(lanes, moving_part)
+        for m in moving.take():
+            fold.add(m)
+        yield list(lanes), fold
+
+
 @pytest.mark.parametrize("step", [3, 4], ids=["impulsive-start", "deceleration"])
 def test_while_playing_both_rulers_number_every_tick(step: int) -> None:
     """The lesson's steps as their playback is recorded (:func:`~rigidrel_app.live.timeline.record_timeline`
@@ -227,19 +248,7 @@ def test_while_playing_both_rulers_number_every_tick(step: int) -> None:
     assert isinstance(resolved, Resolved)
     layout = canvas_layout(1280, 600, PRESENTER)
     d = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
-    frames, picture = still_picture(d.charts, layout.charts, d.legend(), layout.legend, layout.theme)
-    still, moving = RecordingScene(), RecordingScene()
-    renderer = PageRenderer(still.scene, moving.scene)
-    renderer.set_static(layout, picture, d.ruler_names)
-    pictures = frame_pictures(d, layout, frames, frame_times(d.window, 25))
-    renderer.reserve(*room(pictures))
-    fold = SceneFold()
-    for m in moving.take():
-        fold.add(m)
-    for lanes, moving_part in pictures:
-        renderer.update(lanes, moving_part)
-        for m in moving.take():
-            fold.add(m)
+    for lanes, fold in recorded_playback(d, layout, 25):
         for k, lane in enumerate(lanes):
             want = {
                 round(float(n * lane.ruler_step * lane.scale), 6): text

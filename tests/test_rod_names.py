@@ -8,17 +8,14 @@ import numpy as np
 import pytest
 
 import rigidrel_core as rr
-from rigidrel_app.backends._viser import RecordingScene, SceneFold
+from rigidrel_app.backends._viser import SceneFold
 from rigidrel_app.backends.raster import LaneRaster
-from rigidrel_app.backends.viser import PageRenderer
-from rigidrel_app.live.timeline import frame_pictures, frame_times, room
-from rigidrel_app.view.canvas import still_picture
 from rigidrel_app.view.lanes import MIN_NAME_PX, Box, name_on_bar, rod_names
 from rigidrel_app.view.layout import NORMAL, PRESENTER, Theme, canvas_layout, text_width
 from rigidrel_app.view.scene_view import LANE_Z, build_drawing, lane_states
 from rigidrel_app.view.state import Settings, build
 
-from .test_lane_scale import _drawn
+from .test_lane_scale import _drawn, recorded_playback
 
 SCENES = {
     "rod-collision": Settings("rod-collision"),
@@ -99,19 +96,7 @@ def test_the_names_move_with_the_rods_in_a_recorded_playback() -> None:
     over its own bar."""
     layout = canvas_layout(1280, 720, NORMAL)
     d = build_drawing(build(SCENES["rod-collision"]), areas=layout.chart_areas, label_px=layout.theme.text_px)
-    frames, picture = still_picture(d.charts, layout.charts, d.legend(), layout.legend, layout.theme)
-    still, moving = RecordingScene(), RecordingScene()
-    renderer = PageRenderer(still.scene, moving.scene)
-    renderer.set_static(layout, picture, d.ruler_names)
-    pictures = frame_pictures(d, layout, frames, frame_times(d.window, 10))
-    renderer.reserve(*room(pictures))
-    fold = SceneFold()
-    for m in moving.take():
-        fold.add(m)
-    for lanes, moving_part in pictures:
-        renderer.update(lanes, moving_part)
-        for m in moving.take():
-            fold.add(m)
+    for lanes, fold in recorded_playback(d, layout, 10):
         shown = _shown_labels(fold)
         for lane in lanes:
             assert [n.text for n in lane.names] == ["rod 1", "rod 2"]

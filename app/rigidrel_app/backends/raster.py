@@ -84,11 +84,9 @@ class LaneRaster:
             for lab in labels:
                 self._text(d, lab.x, lab.y + z, plain_text(lab.text), FRAME_COLOR, lab.size, lab.anchor)
         for st, z in zip(states, LANE_Z, strict=True):
-            for b in st.boxes:
-                (u0, u1), (v0, v1) = self.px(
-                    np.array([b.x0, b.x1]), np.array([z + b.z + b.height / 2, z + b.z - b.height / 2])
-                )
-                d.rectangle([float(u0), float(v0), max(float(u1), float(u0) + 1), float(v1)], fill=rgb(b.color))
+            bars = [self._bar_px(b, z) for b in st.boxes]
+            for b in bars:
+                d.rectangle([b.x0, b.z - b.height / 2, max(b.x1, b.x0 + 1), b.z + b.height / 2], fill=rgb(b.color))
             seg = st.segments
             self._segments(d, seg.x0, seg.y0 + z, seg.x1, seg.y1 + z, INK, 2)
             r = self.drawn.geometry.clock_radius * self.scale
@@ -97,19 +95,19 @@ class LaneRaster:
                 d.ellipse([float(u) - r, float(v) - r, float(u) + r, float(v) + r], outline=rgb(INK), width=2)
             for lab in st.labels:
                 self._text(d, lab.x, lab.y + z, plain_text(lab.text), INK, lab.size, lab.anchor)
-            self._names(d, st, z)
+            self._names(d, bars[: self.drawn.resolved.scene.n_rods])
         return img
 
-    def _names(self, d: ImageDraw.ImageDraw, st: LaneState, z: float) -> None:
-        """The names of the rods that share a row, on their bars, ink on a white box (as the app's)."""
-        scene = self.drawn.resolved.scene
-        bars = []
-        for b in st.boxes[: scene.n_rods]:
-            (u0, u1), (v0, v1) = self.px(
-                np.array([b.x0, b.x1]), np.array([z + b.z - b.height / 2, z + b.z + b.height / 2])
-            )
-            bars.append(Box(float(u0), float(u1), float(v0 - v1), b.color, 0.5 * float(v0 + v1)))
-        for name in rod_names(scene, bars, max(9, round(12 * self.width / 1100))):
+    def _bar_px(self, b: Box, z: float) -> Box:
+        """A lane's box ``b`` (the lane at height ``z``) in pixels: x to the right, its centre ``z``
+        and its height in pixels down the image."""
+        (u0, u1), (v0, v1) = self.px(np.array([b.x0, b.x1]), z + b.z + np.array([0.5, -0.5]) * b.height)
+        return Box(float(u0), float(u1), float(v1 - v0), b.color, 0.5 * float(v0 + v1))
+
+    def _names(self, d: ImageDraw.ImageDraw, rods: Sequence[Box]) -> None:
+        """The names of the rods that share a row on their bars ``rods`` (pixels), ink on a white box
+        (as the app's)."""
+        for name in rod_names(self.drawn.resolved.scene, rods, max(9, round(12 * self.width / 1100))):
             font = _font(round(name.px))
             box = d.textbbox((name.x, name.z), name.text, font=font, anchor="mm")
             d.rectangle((box[0] - 2, box[1] - 1, box[2] + 2, box[3] + 1), fill=(255, 255, 255))
