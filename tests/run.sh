@@ -18,10 +18,11 @@ python3 -m venv .venv
 .venv/bin/ruff format --check .
 .venv/bin/pyright
 .venv/bin/lint-imports
-# every lane: the fast one (plain `pytest`), slow and browser, on both cores (a worker takes a
-# whole test file, so a file's shared tab or server is opened once); then the tests that compare
-# rates measured in their own process, with nothing running beside them
+# every lane: the fast one (plain `pytest`), slow and browser, on every core (pyproject's addopts:
+# `-n auto --dist loadfile`, a worker takes a whole test file, so a file's shared tab or server is
+# opened once); then the tests that compare rates measured in their own process, in one process
+# with nothing running beside them
 # (pytest's status 5 is "nothing selected", as for a `-k` that picks tests of one part only)
 lane() { .venv/bin/python -m pytest -q "$@" || { status=$?; [ "$status" = 5 ] || exit "$status"; }; }
-lane -m "not alone" -n 2 --dist loadfile "$@"
-lane -m "alone" "$@"
+lane -m "not alone" "$@"
+lane -m "alone" -n 0 "$@"

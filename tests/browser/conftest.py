@@ -49,8 +49,11 @@ def browser() -> Iterator[Any]:
             b.close()
 
 
-@pytest.fixture
+@pytest.fixture(scope="module")
 def app_server() -> Iterator[object]:
+    """One app server for a test file's tabs (each test opens tabs of its own, and a tab is a
+    session of its own): its recorder process, which imports the app in a second or two, starts
+    once per file, and the timelines it makes are shared as in a lecture hall."""
     from rigidrel_app.live.server import App
 
     app = App(host="127.0.0.1", port=0)

@@ -17,10 +17,11 @@ import pytest
 
 from rigidrel_app.live.controls import LOG_SLIDER_LABEL
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS
+from rigidrel_app.live.server import App
 from rigidrel_app.view.scenario import Scenario
 from rigidrel_app.view.state import NO_PRESET, Settings, event_times, preset_menu
 from rigidrel_app.view.vocabulary import ROD_COLORS
-from tests.browser.test_app_browser import AppPage, tab_on_own_server
+from tests.browser.test_app_browser import AppPage
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
@@ -28,11 +29,24 @@ pytestmark = pytest.mark.browser
 FIG3, FIG4 = preset_menu(Settings("rod-collision")).options[1:3]
 
 
+@pytest.fixture(scope="module")
+def collision_server() -> Iterator[App]:
+    """A server whose tabs open on the rod collision (the paper's Fig. 3), for this file's tests."""
+    server = App(host="127.0.0.1", port=0, start=Scenario(Settings("rod-collision")))
+    try:
+        yield server
+    finally:
+        server.stop()
+
+
 @pytest.fixture
-def collision(browser: Any) -> Iterator[AppPage]:
-    """A tab on a server whose tabs open on the rod collision (the paper's Fig. 3)."""
-    with tab_on_own_server(browser, start=Scenario(Settings("rod-collision"))) as page:
+def collision(browser: Any, collision_server: App) -> Iterator[AppPage]:
+    """A tab of its own on :func:`collision_server`, closed after the test, passed or failed."""
+    page = AppPage(browser, collision_server)
+    try:
         yield page
+    finally:
+        page.close()
 
 
 # ---------------------------------------------------------------- finding things as a user does

@@ -131,8 +131,9 @@ def open_tab(browser: Any) -> Iterator[OpenTab]:
             page.close()
 
 
-@pytest.fixture
+@pytest.fixture(scope="module")
 def lesson_app() -> Iterator[App]:
+    """The paper's lesson, not followed (each tab walks it on its own), for this file's tests."""
     app = App(host="127.0.0.1", port=0, lesson=PAPER)
     try:
         yield app

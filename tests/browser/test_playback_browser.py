@@ -49,6 +49,7 @@ def test_the_browser_plays_and_the_server_sends_nothing_per_frame(tab: AppPage, 
 
 def test_every_tab_in_a_state_gets_the_one_timeline(browser: Any, app_server: Any) -> None:
     a, b = AppPage(browser, app_server), AppPage(browser, app_server)
+    recorded = app_server.timelines.recorded  # the server is the file's: earlier tests recorded too
     try:
         for tab in (a, b):
             with tab.session.lock:
@@ -56,7 +57,7 @@ def test_every_tab_in_a_state_gets_the_one_timeline(browser: Any, app_server: An
             tab.page.click("button:has-text('Play')")
         wait_until(lambda: a.session.player.playing and b.session.player.playing, timeout=60)
         assert a.session.player.timeline is b.session.player.timeline  # made once, for both
-        assert app_server.timelines.recorded == 1
+        assert app_server.timelines.recorded - recorded <= 1  # none if an earlier tab had it made
         assert np.isfinite(a.session.player.timeline.times).all()  # type: ignore[union-attr]
     finally:
         a.close()
