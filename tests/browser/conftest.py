@@ -7,14 +7,19 @@ to ``test-artifacts/screenshots/<test name>/`` for a person to look at.
 
 from __future__ import annotations
 
+import io
 import os
 import re
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
+from PIL import Image
 from playwright.sync_api import Browser, Playwright, ViewportSize
+
+from tests.viser_client import wait_until
 
 CHROMIUM = os.environ.get("RIGIDREL_CHROMIUM", "/usr/bin/chromium")
 CHROMIUM_ARGS = [
@@ -35,6 +40,24 @@ def launch_chromium(p: Playwright) -> Browser:
     return p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
 
 
+def element_png(page: Any, selector: str) -> np.ndarray:
+    """What the first element matching ``selector`` shows now, as RGB (int16): a clip of the
+    page's screenshot at the element's box, once two reads of that box 0.1 s apart agree (a page
+    re-laid out after a resize has settled). Not ``locator.screenshot()``, whose own wait for a
+    still element counts animation frames: a page playing in software WebGL on a busy machine
+    can take longer than playwright's 30 s to give two."""
+    element = page.locator(selector).first
+    boxes: list[Any] = []
+
+    def box_settled() -> Any:
+        boxes.append(element.bounding_box())
+        return boxes[-1] is not None and boxes[-2:] == [boxes[-1]] * 2 and boxes[-1]
+
+    box = wait_until(box_settled, timeout=30, interval=0.1)
+    png = page.screenshot(clip=box)
+    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
+
+
 @pytest.fixture(scope="session")
 def browser() -> Iterator[Any]:
     if not Path(CHROMIUM).exists():
@@ -47,6 +70,24 @@ def browser() -> Iterator[Any]:
             yield b
         finally:
             b.close()
+
+
+@pytest.fixture(autouse=True)
+def no_page_left_open(request: pytest.FixtureRequest) -> Iterator[None]:
+    """A test that uses the browser closes every page it opened, passed or failed: a page left
+    open keeps drawing in software WebGL for the rest of the session, and starves the tests after
+    it (a screenshot then waits past its timeout)."""
+    if "browser" not in request.fixturenames:
+        yield
+        return
+    browser: Browser = request.getfixturevalue("browser")
+    before = {id(page) for context in browser.contexts for page in context.pages}
+    yield
+    left = [page.url for context in browser.contexts for page in context.pages if id(page) not in before]
+    for context in browser.contexts:  # let them go, so one leak does not starve the tests after it
+        if any(id(page) not in before for page in context.pages):
+            context.close()
+    assert not left, f"pages left open: {left}"
 
 
 @pytest.fixture(scope="module")

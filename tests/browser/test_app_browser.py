@@ -8,7 +8,6 @@ canvas share one tab: they are in ``test_canvas_browser.py``.
 from __future__ import annotations
 
 import contextlib
-import io
 import json
 import re
 import time
@@ -28,7 +27,7 @@ from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import Settings
 from rigidrel_app.view.vocabulary import ROD_COLORS
-from tests.browser.conftest import VIEWPORT
+from tests.browser.conftest import VIEWPORT, element_png
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
@@ -172,8 +171,7 @@ class AppPage:
         return x, layout.height - z
 
     def canvas(self) -> np.ndarray:
-        png = self.page.locator("canvas[data-engine]").screenshot()
-        return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
+        return element_png(self.page, "canvas[data-engine]")
 
     def canvas_after(self, before: np.ndarray, timeout: float = 30.0) -> np.ndarray:
         """The canvas once it shows a change from ``before`` and has stopped changing (the

@@ -16,6 +16,7 @@ from rigidrel_app.export.diagram_html import diagram_html
 from rigidrel_app.export.recording import record_lanes_html
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, Settings
+from tests.browser.conftest import element_png
 from tests.sweeps import cases
 from tests.viser_client import wait_until
 
@@ -46,8 +47,9 @@ class OfflinePage:
         self.page.goto(path.as_uri())
 
     def png(self, selector: str | None = None) -> np.ndarray:
-        shot = self.page.locator(selector).screenshot() if selector else self.page.screenshot()
-        return np.asarray(Image.open(io.BytesIO(shot)).convert("RGB")).astype(int)
+        if selector:
+            return element_png(self.page, selector).astype(int)
+        return np.asarray(Image.open(io.BytesIO(self.page.screenshot())).convert("RGB")).astype(int)
 
     def close(self) -> None:
         self.context.close()

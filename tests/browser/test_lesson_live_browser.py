@@ -4,14 +4,12 @@ locks disable controls, and the scenario box round-trips a state and refuses a b
 
 from __future__ import annotations
 
-import io
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
-from PIL import Image
 
 from rigidrel_app.lessons import builtin_lesson, parse_lesson
 from rigidrel_app.live.keys import Action
@@ -19,6 +17,7 @@ from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
 from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.scenario import parse_scenario
+from tests.browser.conftest import element_png
 from tests.browser.test_app_browser import slider_of
 from tests.viser_client import wait_until
 
@@ -80,8 +79,7 @@ class LessonTab:
         return self.page.locator(f'label:text-is("{label}")').first.locator("xpath=following::input[1]")
 
     def canvas(self) -> np.ndarray:
-        png = self.page.locator("canvas[data-engine]").screenshot()
-        return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
+        return element_png(self.page, "canvas[data-engine]")
 
     def screenshot(self, path: Path) -> None:
         """The page once paused and drawn (two canvases half a second apart the same), for a person to look at."""

@@ -88,6 +88,7 @@ def test_t_turns_the_dark_theme_on_and_off(tab: AppPage, shots: Path) -> None:
 
 def test_the_checkbox_and_presenter_mode_keep_the_theme(tab: AppPage, shots: Path) -> None:
     tab.page.set_viewport_size({"width": 1280, "height": 720})
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.height == 720)
     before = tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.control("Dark theme").click()
     wait_until(lambda: tab.session.state.shade == "dark")
