@@ -513,7 +513,7 @@ def test_titles_too_long_for_one_line_keep_two_and_the_text_steps_down_instead()
     assert not titles_fit_one_line(titles, layout)
     short = "lab frame:   t = +0.150\nclocks τ (left | right end)   rod: +0.843 | +0.146"
     assert titles_fit_one_line([short, short], layout)
-    two = canvas_layout(1280, 560, PRESENTER, one_line_titles=False)
+    two = canvas_layout(1280, 560, PRESENTER, title_lines=2)
     assert all(lane.title_lines == 2 for lane in two.lanes) and two.theme.text_px == NORMAL.text_px
     for lane in two.lanes:  # two title lines above the dials
         assert lane.title_z - 2.4 * two.theme.title_px > lane.dial_z[1] + lane.clock_px

@@ -34,11 +34,11 @@ SHORT = PaintingKey(POLE, 1240.0, 560.0, PRESENTER)
 def test_a_painting_does_not_depend_on_the_first_guess() -> None:
     resolved = resolved_of(POLE)
     first = paint(resolved, SHORT)
-    assert first.legend_rows != LEGEND_ROWS and not first.one_line_titles  # both guesses were wrong
-    for guess in ((first.legend_rows, first.one_line_titles), (1, False), (LEGEND_ROWS + 2, True)):
+    assert first.legend_rows != LEGEND_ROWS and first.title_lines >= 2  # both guesses were wrong
+    for guess in ((first.legend_rows, first.title_lines), (1, 2), (1, 4), (LEGEND_ROWS + 2, 1)):
         again = paint(resolved, SHORT, guess)
         assert again.layout == first.layout
-        assert (again.legend_rows, again.one_line_titles) == (first.legend_rows, first.one_line_titles)
+        assert (again.legend_rows, again.title_lines) == (first.legend_rows, first.title_lines)
         assert [t.text for t in again.still.texts] == [t.text for t in first.still.texts]
         assert len(again.still.lines) == len(first.still.lines)
         for a, b in zip(again.still.lines, first.still.lines, strict=True):

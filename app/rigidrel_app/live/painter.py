@@ -50,9 +50,9 @@ class Painter:
         """Each diagram's data -> page px (the plot areas of this layout)."""
         self.legend_rows = LEGEND_ROWS
         """The legend's rows in the page last laid out (the first guess for the next drawing's)."""
-        self.one_line_titles = True
-        """Whether this scene's lane titles may go on one line on a short canvas (False once they
-        were found too long for it; tried again for another scene)."""
+        self.title_lines = 1
+        """The title lines of the page last laid out, as :func:`~.painting.paint` guesses them (1:
+        this scene's lane titles may go on one line; tried again for another scene)."""
         self.renderer_lanes: list[LanePicture] = []
         """The lanes as last drawn here."""
         self.painting: Painting | None = None
@@ -69,8 +69,8 @@ class Painter:
         if found is not None:
             return found
         if self.drawn is not None and self.drawn.resolved.scene.kind != resolved.scene.kind:
-            self.one_line_titles = True
-        return self.paintings.get(resolved, key, (self.legend_rows, self.one_line_titles))
+            self.title_lines = 1
+        return self.paintings.get(resolved, key, (self.legend_rows, self.title_lines))
 
     def paint_settings(self, settings: Settings, state: TabState) -> Painting | None:
         """:meth:`paint` of ``settings`` resolved here; None if they make no scene."""
@@ -88,7 +88,7 @@ class Painter:
         """Put ``painting``'s page on the canvas: the page shared by the tabs that show it if
         ``shared`` (and the runtime is ready), else the tab's own still picture."""
         self.layout, self.drawn = painting.layout, painting.drawn
-        self.legend_rows, self.one_line_titles = painting.legend_rows, painting.one_line_titles
+        self.legend_rows, self.title_lines = painting.legend_rows, painting.title_lines
         self.chart_frames = painting.chart_frames
         self.painting = painting if shared and self.player.ready else None
         if self.painting is not None:

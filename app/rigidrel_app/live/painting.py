@@ -28,7 +28,7 @@ import numpy.typing as npt
 from ..backends._viser import RecordingScene, SceneFold
 from ..backends.viser import SHARED_ROOT, PageRenderer
 from ..view.canvas import ChartFrame, PagePicture, legend_rows, still_picture
-from ..view.layout import LEGEND_ROWS, CanvasLayout, Theme, canvas_layout, titles_fit_one_line
+from ..view.layout import LEGEND_ROWS, CanvasLayout, Theme, canvas_layout, title_lines_needed, titles_fit_one_line
 from ..view.scene_view import Drawn, build_drawing
 from ..view.state import Resolved, Settings
 from .timeline import Mirror, as_u8, encode_payload, frame_pictures, room
@@ -52,14 +52,16 @@ class PaintingKey:
 @dataclass(frozen=True)
 class Painting:
     """A state laid out and drawn for one canvas (module docstring). ``legend_rows`` and
-    ``one_line_titles`` are what the layout settled on (the next painting's first guess)."""
+    ``title_lines`` are what the layout settled on (the next painting's first guess; the lines
+    as :func:`~rigidrel_app.view.layout.canvas_layout` takes them: 1 if the titles may go on one
+    line)."""
 
     key: PaintingKey
     resolved: Resolved
     drawn: Drawn
     layout: CanvasLayout
     legend_rows: int
-    one_line_titles: bool
+    title_lines: int
     chart_frames: tuple[ChartFrame, ...]
     still: PagePicture
     _shared: _Shared = field(default_factory=lambda: _Shared(), repr=False, compare=False)
@@ -132,34 +134,37 @@ class _Shared:
         return self._id
 
 
-def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, bool] = (LEGEND_ROWS, True)) -> Painting:
+def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND_ROWS, 1)) -> Painting:
     """Lay ``resolved`` out on ``key``'s canvas and draw it: the legend gets the rows it needs, the
-    lane titles one line unless they are too long for it (then two, the text a step down), and the
-    drawing is made for the final layout's plot areas. ``guess``: the legend rows and title lines
-    to try first (a tab's last painting's: a slider's answer then draws once); the result does not
-    depend on it."""
+    lane titles one line if they fit it on a short canvas, else the lines they need (two, or more
+    for titles too long for the lane's width; the text a step down), and the drawing is made for
+    the final layout's plot areas. ``guess``: the legend rows and title lines to try first (a tab's
+    last painting's: a slider's answer then draws once); the result does not depend on it."""
 
-    def layout_of(rows: int, one_line: bool) -> CanvasLayout:
-        return canvas_layout(key.width, key.height, key.theme, rows, one_line)
+    def layout_of(rows: int, title_lines: int) -> CanvasLayout:
+        return canvas_layout(key.width, key.height, key.theme, rows, title_lines)
 
     def draw(layout: CanvasLayout) -> Drawn:
         return build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
 
-    rows, one_line = guess
-    layout = layout_of(rows, one_line)
+    rows, title_lines = guess
+    layout = layout_of(rows, title_lines)
     drawn = draw(layout)
     legend = drawn.legend()
     rows = legend_rows(legend, layout.legend.width, layout.theme)
-    tried = layout_of(rows, True)
-    one_line = tried.lanes[0].title_lines != 1 or titles_fit_one_line(
-        [p.title for p in drawn.lane_pictures(drawn.window[0], tried)], tried
-    )
-    final = layout_of(rows, one_line)
+    tried = layout_of(rows, 1)
+    titles = [p.title for p in drawn.lane_pictures(drawn.window[0], tried)]
+    needed = title_lines_needed(titles, tried)
+    if tried.lanes[0].title_lines == 1:  # a short canvas: one line if they fit it
+        title_lines = 1 if titles_fit_one_line(titles, tried) else needed
+    else:
+        title_lines = 1 if needed == 2 else needed
+    final = layout_of(rows, title_lines)
     if final.chart_areas != layout.chart_areas or final.theme.text_px != layout.theme.text_px:
         drawn = draw(final)
         legend = drawn.legend()
     chart_frames, picture = still_picture(drawn.charts, final.charts, legend, final.legend, final.theme)
-    return Painting(key, resolved, drawn, final, rows, one_line, tuple(chart_frames), picture)
+    return Painting(key, resolved, drawn, final, rows, title_lines, tuple(chart_frames), picture)
 
 
 class PaintingCache:
@@ -182,7 +187,7 @@ class PaintingCache:
                 self._paintings.move_to_end(key)
             return found
 
-    def get(self, resolved: Resolved, key: PaintingKey, guess: tuple[int, bool] = (LEGEND_ROWS, True)) -> Painting:
+    def get(self, resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND_ROWS, 1)) -> Painting:
         """The painting of ``key`` (``resolved``: its state, resolved), made if it is not here."""
         with self._lock:
             found = self._paintings.get(key)

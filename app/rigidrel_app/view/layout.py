@@ -9,6 +9,7 @@ arithmetic, no drawing library.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Literal
@@ -98,8 +99,9 @@ class LaneLayout:
     """The ruler's line; its ticks hang below, their numbers below those."""
     tick_px: float
     title_lines: int = 2
-    """The title block's lines: 2 (the frame and its time, then the clock readings) or, on a short
-    canvas, 1 (both on one line, :func:`lane_title_text`)."""
+    """The title block's lines: 2 (the frame and its time, then the clock readings), more where
+    those are too long for the lane (:func:`wrap_title`), or, on a short canvas, 1 (both on one
+    line, :func:`lane_title_text`)."""
     text_px: float = 15.0
     """The lane's text size (its ruler numbers, edge marks and the rods' names on their bars)."""
 
@@ -174,12 +176,79 @@ def titles_fit_one_line(titles: Sequence[str], layout: CanvasLayout) -> bool:
     )
 
 
+def _title_parts(line: str) -> list[str]:
+    """A title line's parts: the runs of text between gaps of three or more spaces."""
+    return [part for part in re.split(r" {3,}", line.strip()) if part]
+
+
+def wrap_title(title: str, width: float, px: float) -> str:
+    """``title`` in lines no wider than ``width`` at ``px``: as it is if each of its lines fits;
+    else its parts (the runs between gaps of three or more spaces, across its lines: the frame and
+    its time, an object's words, the rows' key, each rod's clocks) filled greedily into lines,
+    and a part wider than ``width`` alone broken between its words."""
+    lines = title.split("\n")
+    if all(text_width(line, px) <= width for line in lines):
+        return title
+    out: list[str] = []
+    current = ""
+    for part in (part for line in lines for part in _title_parts(line)):
+        joined = f"{current}   {part}" if current else part
+        if text_width(joined, px) <= width:
+            current = joined
+            continue
+        if current:
+            out.append(current)
+        current = ""
+        for word in part.split(" "):
+            joined = f"{current} {word}" if current else word
+            if current and text_width(joined, px) > width:
+                out.append(current)
+                joined = word
+            current = joined
+    out.append(current)
+    return "\n".join(out)
+
+
+#: The title sizes a lane's title steps down through (from its theme's, never under
+#: :data:`MIN_TEXT_PX`) before it takes another line.
+TITLE_STEP_PX = 0.5
+
+
+def _title_sizes(px: float) -> list[float]:
+    sizes = [px]
+    while sizes[-1] - TITLE_STEP_PX >= MIN_TEXT_PX:
+        sizes.append(sizes[-1] - TITLE_STEP_PX)
+    return sizes
+
+
+def title_lines_needed(titles: Sequence[str], layout: CanvasLayout) -> int:
+    """The lines the lanes' titles take on ``layout``'s lanes at the smallest text
+    (:func:`wrap_title` at :data:`MIN_TEXT_PX`, or the theme's title size if smaller), with
+    :data:`TITLE_SPARE` to spare (a later instant's numbers may be a character longer): at
+    least 2. :func:`lane_title_text` then sets them as large as those lines allow."""
+    px = min(layout.theme.title_px, MIN_TEXT_PX)
+    return max(
+        2,
+        *(
+            wrap_title(t, lane.band.width / TITLE_SPARE, px).count("\n") + 1
+            for t, lane in zip(titles, layout.lanes, strict=True)
+        ),
+    )
+
+
 def lane_title_text(title: str, layout: LaneLayout, px: float) -> tuple[str, float]:
     """A lane's title (two lines: the frame and its time, the clock readings) as ``layout`` has room
-    for, and its text size: on one line where the layout asks for one, at ``px`` or smaller down to
-    :data:`MIN_TEXT_PX` so that it fits the lane's width; two lines if even that does not fit."""
-    if layout.title_lines == 2 or "\n" not in title:
-        return title, px
+    for, and its text size. On one line where the layout asks for one, at ``px`` or smaller down to
+    :data:`MIN_TEXT_PX` so that it fits the lane's width (two lines if even that does not fit).
+    Else broken to the lane's width (:func:`wrap_title`) at the largest size from ``px`` down to
+    :data:`MIN_TEXT_PX` that takes no more lines than the layout gave it."""
+    if layout.title_lines >= 2 or "\n" not in title:
+        sizes = _title_sizes(px)
+        for size in sizes:
+            wrapped = wrap_title(title, layout.band.width, size)
+            if wrapped.count("\n") < max(layout.title_lines, 2):
+                return wrapped, size
+        return wrap_title(title, layout.band.width, sizes[-1]), sizes[-1]
     one = one_line(title)
     fit = px * layout.band.width / max(text_width(one, px), 1.0)
     return (one, min(px, fit)) if fit >= MIN_TEXT_PX else (title, px)
@@ -255,21 +324,23 @@ def canvas_layout(
     height: float,
     theme: Theme = NORMAL,
     legend_rows: int = LEGEND_ROWS,
-    one_line_titles: bool = True,
+    title_lines: int = 1,
 ) -> CanvasLayout:
     """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at
-    the bottom. On a canvas too short for the diagrams' plots to get :data:`MIN_PLOT_PX`, the lanes'
-    titles go on one line (unless ``one_line_titles`` is False: a scene whose titles are too long
-    for one, :func:`titles_fit_one_line`), and if that is not enough the text takes the desk theme's
-    sizes (never under :data:`MIN_TEXT_PX`; the lines keep their width): the first of these that
-    gives the plots their height, else the last."""
+    the bottom. ``title_lines``: 1 if the lanes' titles fit one line (:func:`titles_fit_one_line`),
+    else the lines they need (:func:`title_lines_needed`, at least 2). Titles that fit one line
+    take two, and on a canvas too short for the diagrams' plots to get :data:`MIN_PLOT_PX`, one;
+    if that is not enough (or they need two or more), the text takes the desk theme's sizes (never
+    under :data:`MIN_TEXT_PX`; the lines keep their width): the first of these that gives the
+    plots their height, else the last."""
     smaller = replace(theme, text_px=min(theme.text_px, NORMAL.text_px), title_px=min(theme.title_px, NORMAL.title_px))
-    layout = _canvas_layout(width, height, theme, legend_rows, 2)
-    steps = ((theme, 1), (smaller, 1)) if one_line_titles else ((smaller, 2),)
-    for t, lines in steps:
+    lines = max(2, title_lines)
+    layout = _canvas_layout(width, height, theme, legend_rows, lines)
+    steps = ((theme, 1), (smaller, 1)) if title_lines == 1 else ((smaller, lines),)
+    for t, n in steps:
         if layout.charts[0].plot.height >= MIN_PLOT_PX:
             break
-        layout = _canvas_layout(width, height, t, legend_rows, lines)
+        layout = _canvas_layout(width, height, t, legend_rows, n)
     return layout
 
 
