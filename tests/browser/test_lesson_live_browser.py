@@ -264,11 +264,20 @@ def test_follow_the_lecturers_tab(open_tab: OpenTab, shots: Path) -> None:
         wait_until(lambda: (node(student, "/shared/text/0") or {}).get("visible"), timeout=30)
         assert not (node(student, "/page/static") or {}).get("visible", True)
         assert node(lead, "/shared") is None and not lead.session.painter.renderer.still_lent
-        labels = student.page.evaluate(
-            "() => Array.from({length: 40}, (_, k) => window.__rigidrelPlayback.node('/shared/text/' + k))"
-            ".filter((n) => n && n.visible).map((n) => n.props.text)"
-        )
-        assert sorted(labels) == sorted(t.text for t in student.session.painter.painting.still.texts if t.text.strip())  # type: ignore[union-attr]
+
+        def shows_its_painting() -> bool:
+            """The page's shared texts are those of the painting the follower's session shows now (a
+            painting for a new canvas size may replace the first while its page is on its way)."""
+            labels = student.page.evaluate(
+                "() => Array.from({length: 40}, (_, k) => window.__rigidrelPlayback.node('/shared/text/' + k))"
+                ".filter((n) => n && n.visible).map((n) => n.props.text)"
+            )
+            painting = student.session.painter.painting
+            if painting is None:
+                return False
+            return sorted(labels) == sorted(t.text for t in painting.still.texts if t.text.strip())
+
+        wait_until(shows_its_painting, timeout=30)
         student.page.screenshot(path=str(shots / "follower-shared-page.png"))
         # a student's L: refused, said in the Lesson folder; the lecturer's tab does not move
         student.press("L")
