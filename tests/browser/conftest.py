@@ -32,7 +32,7 @@ CHROMIUM_ARGS = [
     "--disable-sync",
 ]
 ARTIFACTS = Path(__file__).resolve().parents[2] / "test-artifacts" / "screenshots"
-VIEWPORT: ViewportSize = {"width": 1440, "height": 900}
+VIEWPORT: ViewportSize = {"width": 1280, "height": 720}
 
 
 def launch_chromium(p: Playwright) -> Browser:

@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 import pytest
 from PIL import Image
+from playwright.sync_api import ViewportSize
 
 import rigidrel_core as rr
 from rigidrel_app.backends._viser import handle_uuid
@@ -68,12 +69,19 @@ def number_box(page: Any, label: str) -> Any:
 class AppPage:
     """One browser tab on the app, with the server-side session behind it."""
 
-    def __init__(self, browser: Any, app: App, device_scale_factor: float = 1.0, query: str = "") -> None:
+    def __init__(
+        self,
+        browser: Any,
+        app: App,
+        device_scale_factor: float = 1.0,
+        query: str = "",
+        viewport: ViewportSize = VIEWPORT,
+    ) -> None:
         """``query``: added to the app's address (``"?fixedDpr=1"`` holds viser's resolution)."""
         self.app = app
         self.errors: list[str] = []
         before = set(app.sessions)
-        self.page = browser.new_page(viewport=VIEWPORT, device_scale_factor=device_scale_factor)
+        self.page = browser.new_page(viewport=viewport, device_scale_factor=device_scale_factor)
         self.external: list[str] = []
 
         def route(r: Any) -> None:  # the app needs nothing beyond its own server
