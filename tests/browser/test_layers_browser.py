@@ -195,9 +195,14 @@ def test_hiding_the_world_tubes_and_the_length_panel_empties_their_regions(tab: 
         return problems
 
     show(tab, crash(DEFAULT_LAYERS - {Layer.WORLD_TUBE, Layer.INTERIOR_LINES, Layer.LENGTH_PANEL}), 0.5)
+    # the lanes and panels keep their places; a legend of fewer rows gives its room to the panels
     new = s.painter.layout
-    assert new is not None and new.lanes == layout.lanes  # the lanes keep their places
-    assert [c.outer.x0 for c in new.charts] == [c.outer.x0 for c in layout.charts]  # the panels their columns
+    assert new is not None and new.lanes == layout.lanes and new.theme == layout.theme
+    assert new.legend.z1 <= layout.legend.z1
+    for now_chart, was in zip(new.charts, layout.charts, strict=True):
+        a, b = now_chart.outer, was.outer
+        assert (a.x0, a.x1, a.z1) == (b.x0, b.x1, b.z1)
+        assert a.z0 - b.z0 == pytest.approx(new.legend.z1 - layout.legend.z1)
     bare = canvas_showing(tab, full, hidden)
     save(bare, shots / "no_tubes_no_lengths.png")
     texts = tab.texts()

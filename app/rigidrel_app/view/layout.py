@@ -215,6 +215,8 @@ TITLE_STEP_PX = 0.5
 
 
 def _title_sizes(px: float) -> list[float]:
+    """``px``, then down by :data:`TITLE_STEP_PX` while not under :data:`MIN_TEXT_PX` (``px`` alone
+    if it is already under)."""
     sizes = [px]
     while sizes[-1] - TITLE_STEP_PX >= MIN_TEXT_PX:
         sizes.append(sizes[-1] - TITLE_STEP_PX)
@@ -238,20 +240,21 @@ def title_lines_needed(titles: Sequence[str], layout: CanvasLayout) -> int:
 
 def lane_title_text(title: str, layout: LaneLayout, px: float) -> tuple[str, float]:
     """A lane's title (two lines: the frame and its time, the clock readings) as ``layout`` has room
-    for, and its text size. On one line where the layout asks for one, at ``px`` or smaller down to
-    :data:`MIN_TEXT_PX` so that it fits the lane's width (two lines if even that does not fit).
-    Else broken to the lane's width (:func:`wrap_title`) at the largest size from ``px`` down to
-    :data:`MIN_TEXT_PX` that takes no more lines than the layout gave it."""
-    if layout.title_lines >= 2 or "\n" not in title:
-        sizes = _title_sizes(px)
-        for size in sizes:
-            wrapped = wrap_title(title, layout.band.width, size)
-            if wrapped.count("\n") < max(layout.title_lines, 2):
-                return wrapped, size
-        return wrap_title(title, layout.band.width, sizes[-1]), sizes[-1]
-    one = one_line(title)
-    fit = px * layout.band.width / max(text_width(one, px), 1.0)
-    return (one, min(px, fit)) if fit >= MIN_TEXT_PX else (title, px)
+    for, and its text size. Two lines put on one where the layout asks for one, at ``px`` or
+    smaller down to :data:`MIN_TEXT_PX` so that it fits the lane's width (left on two if even that
+    does not fit). Else broken to the lane's width (:func:`wrap_title`) at the largest size from
+    ``px`` down to :data:`MIN_TEXT_PX` that takes no more lines than the layout gave it (at the
+    smallest, however many it takes)."""
+    if layout.title_lines == 1 and "\n" in title:
+        one = one_line(title)
+        fit = px * layout.band.width / max(text_width(one, px), 1.0)
+        return (one, min(px, fit)) if fit >= MIN_TEXT_PX else (title, px)
+    *larger, smallest = _title_sizes(px)
+    for size in larger:
+        wrapped = wrap_title(title, layout.band.width, size)
+        if wrapped.count("\n") < layout.title_lines:
+            return wrapped, size
+    return wrap_title(title, layout.band.width, smallest), smallest
 
 
 def clock_radius(theme: Theme) -> float:
