@@ -40,12 +40,13 @@ def launch_chromium(p: Playwright) -> Browser:
     return p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
 
 
-def element_png(page: Any, selector: str) -> np.ndarray:
+def element_png(page: Any, selector: str, timeout_ms: float = 30_000) -> np.ndarray:
     """What the first element matching ``selector`` shows now, as RGB (int16): a clip of the
     page's screenshot at the element's box, once two reads of that box 0.1 s apart agree (a page
     re-laid out after a resize has settled). Not ``locator.screenshot()``, whose own wait for a
     still element counts animation frames: a page playing in software WebGL on a busy machine
-    can take longer than playwright's 30 s to give two."""
+    can take longer than playwright's 30 s to give two. ``timeout_ms`` bounds the screenshot
+    itself, for a page that keeps the renderer busy."""
     element = page.locator(selector).first
     boxes: list[Any] = []
 
@@ -54,7 +55,7 @@ def element_png(page: Any, selector: str) -> np.ndarray:
         return boxes[-1] is not None and boxes[-2:] == [boxes[-1]] * 2 and boxes[-1]
 
     box = wait_until(box_settled, timeout=30, interval=0.1)
-    png = page.screenshot(clip=box)
+    png = page.screenshot(clip=box, timeout=timeout_ms)
     return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
 
 

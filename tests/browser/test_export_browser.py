@@ -46,9 +46,9 @@ class OfflinePage:
         self.page.on("pageerror", lambda e: self.errors.append(str(e)))
         self.page.goto(path.as_uri())
 
-    def png(self, selector: str | None = None) -> np.ndarray:
+    def png(self, selector: str | None = None, timeout_ms: float = 30_000) -> np.ndarray:
         if selector:
-            return element_png(self.page, selector).astype(int)
+            return element_png(self.page, selector, timeout_ms).astype(int)
         return np.asarray(Image.open(io.BytesIO(self.page.screenshot())).convert("RGB")).astype(int)
 
     def close(self) -> None:
@@ -116,7 +116,14 @@ def wait_for_plot(page: OfflinePage) -> dict[str, Any]:
 
 
 def test_3d_recording_plays_offline(browser: Any, exported: dict[str, Path], shots: Path) -> None:
-    page = OfflinePage(browser, exported["lanes"])
+    # The recording draws every animation frame in software WebGL. At 960x540 (a third fewer
+    # pixels than 1280x720) and with a minute for each screenshot, it is read on a loaded machine:
+    # in a full run on two cores one screenshot of it at 1280x860 waited past 30 s.
+    page = OfflinePage(browser, exported["lanes"], viewport=(960, 540))
+
+    def canvas() -> np.ndarray:
+        return page.png("canvas[data-engine]", timeout_ms=60_000)
+
     try:
         page.page.wait_for_selector("canvas[data-engine]", timeout=60_000)
 
@@ -125,18 +132,18 @@ def test_3d_recording_plays_offline(browser: Any, exported: dict[str, Path], sho
 
         # the rods are drawn, and where they are differs between two moments of playback
         def drawn() -> bool:
-            return rods(page.png("canvas[data-engine]")).mean() > 0.005
+            return rods(canvas()).mean() > 0.005
 
         wait_until(drawn, timeout=60)
-        a = page.png("canvas[data-engine]")
+        a = canvas()
         page.page.screenshot(path=str(shots / "playing_a.png"))
 
         def moved_on() -> bool:
-            b = page.png("canvas[data-engine]")
+            b = canvas()
             moved = np.abs(a - b).sum(axis=-1) > 60
             return bool(moved[rods(a) | rods(b)].mean() > 0.02)
 
-        wait_until(moved_on, timeout=30, interval=0.25)
+        wait_until(moved_on, timeout=60, interval=0.25)
         page.page.screenshot(path=str(shots / "playing_b.png"))
         assert page.requests == []
         assert page.errors == []
