@@ -66,11 +66,11 @@ def bench_rebuild() -> dict[str, float]:
     with App(port=0) as app, light_tab(app) as tab:
         session = tab.session
         for kind in rr.scene_descriptions():
-            session.change(Settings(kind))
+            session.asks.change(Settings(kind))
             times = []
             for new in sweep_settings(session.state.settings):
                 t0 = time.perf_counter()
-                session.change(new)  # what a slider's callback does
+                session.asks.change(new)  # what a slider's callback does
                 times.append(time.perf_counter() - t0)
             out[f"rebuild_median_ms[{kind}]"] = 1e3 * statistics.median(times)
             out[f"rebuild_max_ms[{kind}]"] = 1e3 * max(times)
@@ -123,16 +123,16 @@ def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
         with App(port=0) as app, light_tab(app) as tab:
             session = tab.session
             for kind in kinds or tuple(rr.scene_descriptions()):
-                session.change(Settings(kind))
+                session.asks.change(Settings(kind))
                 sweep = sweep_settings(session.state.settings)
                 for new in sweep:
-                    session.change(new)
-                session.change(Settings(kind))
+                    session.asks.change(new)
+                session.asks.change(Settings(kind))
                 spent.clear()
                 times = []
                 for new in sweep:
                     t0 = time.perf_counter()
-                    session.change(new)
+                    session.asks.change(new)
                     times.append(time.perf_counter() - t0)
                 out[f"redraw_median_ms[{kind}]"] = 1e3 * statistics.median(times)
                 for label, _, _ in PHASES:
@@ -185,7 +185,7 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15, runtime: bool = False)
             client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"], "updates": {"value": 1.5}})
         )
         wait_until(lambda: session.messages_handled > handled)
-        flush, change = session.client.flush, session.change
+        flush, change = session.client.flush, session.asks.change
         changed: list[tuple[float, float]] = []
 
         def timed_change(*args: Any, **kwargs: Any) -> None:
@@ -196,7 +196,7 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15, runtime: bool = False)
         previous = ""
         for k, v in enumerate(answer_values(per_scene)):
             if v.settings.scene != previous:
-                session.change(Settings(v.settings.scene))
+                session.asks.change(Settings(v.settings.scene))
                 previous = v.settings.scene
             control = session.controls.parameters[v.parameter].slider
             variant = ("flushed", "window")[k % 2]
@@ -264,7 +264,7 @@ def answer_values(per_scene: int = 6) -> list[AnswerValue]:
 
 
 def bench_drawing(repeats: int = 2, quiet: float = 0.15) -> dict[str, float]:
-    """The drawing a slider's answer makes, without viser: what ``Session._apply`` and its
+    """The drawing a slider's answer makes, without viser: what ``Session.apply`` and its
     ``draw_now`` compute (the scene, the three charts with their labels placed, their pictures, the
     legend, the lanes and the moving parts) on the 960 x 720 canvas of :func:`bench_answer`'s tab, over the
     values of :func:`answer_values`; each made ``quiet`` s after the last (as clicks come) and

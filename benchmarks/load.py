@@ -100,8 +100,8 @@ def run(clients: int, seconds: float, fps: float) -> dict[str, float]:
         if len(app.sessions) < clients:
             raise RuntimeError(f"only {len(app.sessions)} of {clients} clients connected")
         for session in list(app.sessions.values()):
-            session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
-            session.toggle_play()
+            session.asks.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
+            session.asks.toggle_play()
         # memory and CPU over the measured window, with every client connected at both ends
         time.sleep(SWARM_WARMUP - 0.5)
         mem0, cpu0, wall0 = rss_mb(), time.process_time(), time.perf_counter()

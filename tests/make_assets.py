@@ -56,13 +56,13 @@ class _Tab:
     def show(self, settings: Settings, now: float | None = None) -> None:
         """``settings`` paused at ``now`` (by default halfway between the scene's first and last event)."""
         with self.session.lock:
-            self.session.change(settings, refit=True)
+            self.session.asks.change(settings, refit=True)
             drawn = self.session.painter.drawn
             assert drawn is not None and drawn.resolved.scene.kind == settings.scene, settings
             if now is None:
                 times = [t for t, _ in drawn.resolved.scene.events_in(frame=drawn.resolved.frame).values()]
                 now = 0.5 * (min(times) + max(times))
-            self.session.seek(now)
+            self.session.asks.seek(now)
 
     def presenter(self, on: bool) -> None:
         if self.session.state.presenter != on:
@@ -182,7 +182,7 @@ def lesson_screenshot(path: Path, step: int = LESSON_STEP, now: float = LESSON_N
         with tab.session.lock:
             if tab.session.state.playback.playing:
                 tab.session.perform(Action.TOGGLE_PLAY)
-            tab.session.seek(now)
+            tab.session.asks.seek(now)
         tab.photograph(path)
         browser.close()
 

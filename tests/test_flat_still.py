@@ -111,14 +111,14 @@ def _visibility(messages: list[dict[str, Any]], name: str) -> list[bool]:
 def test_a_canvas_that_keeps_up_never_gets_the_image(tab: tuple[Session, Recorder]) -> None:
     session, client = tab
     with session.lock:
-        session.toggle_play()
+        session.asks.toggle_play()
     # A slow canvas has its image asked for FLAT_AFTER_S after the still picture and shown
     # FLAT_SWAP_S later. Frames are sent in order on one socket: once ten frames of playback that
     # left after that have arrived, an image asked for by then would have arrived before them.
     image_due = time.monotonic() + FLAT_AFTER_S + FLAT_SWAP_S
     wait_until(lambda: sum(t > image_due for t in client.stats.lane_times) >= 10, timeout=30)
     with session.lock:
-        session.toggle_play()
+        session.asks.toggle_play()
         assert session.painter.renderer.flat_version is None and session.painter.renderer.vectors_shown
     assert not any(m.get("name") == "/page/flat" for m in client.messages)
 
@@ -131,7 +131,7 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
         # the browser lowered its resolution: its frames come slow
         session.painter.canvas_size = replace(session.painter.canvas_size, resolution=0.75)
         session.painter.still_image.slow_canvas = True
-        session.toggle_play()
+        session.asks.toggle_play()
     roots = ("/page/static", "/page/static_dots", "/page/text")
     wait_until(lambda: all(_visibility(client.messages, root)[-1:] == [False] for root in roots), timeout=30)
     assert not r.vectors_shown
@@ -148,7 +148,7 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
     # a slider's answer: the nodes back in the batch that redraws them, the image hidden
     before = len(client.messages)
     other = presets()["Fig. 3: collision, M2 = 2 M1"]
-    session.checked(lambda: session.change(other))
+    session.checked(lambda: session.asks.change(other))
     wait_until(lambda: any(m.get("name") == "/page/flat" for m in client.messages[before:]), timeout=30)
     after = client.messages[before:]
     for root in roots:
@@ -158,7 +158,7 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
     # once the new picture stands, its own image follows, and the nodes go again
     wait_until(lambda: not r.vectors_shown and r.flat_version == r.version, timeout=30)
     with session.lock:
-        session.toggle_play()
+        session.asks.toggle_play()
 
 
 @pytest.mark.slow  # a served tab

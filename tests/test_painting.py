@@ -126,7 +126,7 @@ def test_followers_share_one_painting_per_canvas_and_get_their_own_back() -> Non
             assert all(s.painter.renderer.still_lent for s in followers) and not sessions[0].painter.renderer.still_lent
             assert all(c.pages and c.pages[-1][1] for c in clients[1:]) and not clients[0].pages
             # a follower's own move (a layer): its own picture comes back, the shared page goes
-            followers[0].set_layer(Layer.SIGNALS, Layer.SIGNALS not in followers[0].state.settings.layers)
+            followers[0].asks.set_layer(Layer.SIGNALS, Layer.SIGNALS not in followers[0].state.settings.layers)
             wait_until(lambda: clients[1].pages[-1] == (clients[1].pages[-1][0], False), timeout=30)
             assert followers[0].painter.painting is None and not followers[0].painter.renderer.still_lent
             errors: list[Any] = [e for c in clients for e in c.stats.errors]

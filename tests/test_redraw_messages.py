@@ -101,7 +101,7 @@ def camera_messages_of(session: Session, client: Recorder, act: Any) -> list[str
     n = len(client.messages)
     act()
     mark = f"sentinel {n}"
-    session.refuse(mark)
+    session.asks.refuse(mark)
     session.client.flush()
 
     def sentinel() -> int | None:
@@ -128,7 +128,8 @@ def test_a_redraw_with_auto_fit_sends_no_camera_when_it_fits_and_a_reset_always_
     np.testing.assert_allclose(camera.position, pose.position, atol=1e-9)
     # a slider's redraw: the camera is where the page fits, nothing to send
     assert (
-        camera_messages_of(session, client, lambda: session.change(session.state.settings.with_value("v", 0.5))) == []
+        camera_messages_of(session, client, lambda: session.asks.change(session.state.settings.with_value("v", 0.5)))
+        == []
     )
     # key R: the pose is sent whatever the server last heard (the browser may have moved since)
     reset = camera_messages_of(session, client, lambda: session.perform(Action.RESET_VIEW))
@@ -136,7 +137,7 @@ def test_a_redraw_with_auto_fit_sends_no_camera_when_it_fits_and_a_reset_always_
     # the browser reports an orbit away: the next redraw brings the camera back
     with session.lock:
         camera.position = np.asarray(pose.position) + np.array([50.0, 0.0, 0.0])
-    back = camera_messages_of(session, client, lambda: session.change(session.state.settings.with_value("v", 0.7)))
+    back = camera_messages_of(session, client, lambda: session.asks.change(session.state.settings.with_value("v", 0.7)))
     assert "SetCameraPositionMessage" in back
     np.testing.assert_allclose(camera.position, pose.position, atol=1e-9)
     np.testing.assert_allclose(camera.look_at, pose.look_at, atol=1e-9)

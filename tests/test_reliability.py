@@ -172,7 +172,7 @@ def test_hostile_number_values_are_refused_on_the_server(
             control.box.value = control.entry.text(v if v is not None else control.entry.lo)
         session.controls.speed.show(session.state.playback.speed)
         session.controls.beta.show(session.state.settings.beta)
-        session.refuse("")
+        session.asks.refuse("")
     handled = session.messages_handled
     answered(harness, session, client.send_raw(message))
     assert session.painter.drawn.resolved.scene is scene_before  # type: ignore[union-attr]
@@ -192,7 +192,7 @@ def test_hostile_choices_and_unknown_messages(harness: Harness, caplog: pytest.L
     _, bystander = harness.connect()
     client, session = harness.connect()
     # a custom frame: a refused Frame value must put the dropdown back on it
-    session.change(replace(session.state.settings, frame=CUSTOM_FRAME, beta=0.3))
+    session.asks.change(replace(session.state.settings, frame=CUSTOM_FRAME, beta=0.3))
     scene_before = session.painter.drawn.resolved.scene  # type: ignore[union-attr]
     for label, value in (
         ("Scene", "Warp drive"),
@@ -309,12 +309,12 @@ def test_stalled_clients_do_not_slow_the_others() -> None:
     try:
         readers = [h.connect() for _ in range(3)]
         for _, s in readers:
-            s.toggle_play()
+            s.asks.toggle_play()
         _playing([c for c, _ in readers])
         baseline = min(_fps([c for c, _ in readers], 4.0))
         stalled = [h.connect(read=False) for _ in range(3)]
         for _, s in stalled:
-            s.toggle_play()
+            s.asks.toggle_play()
         _playing([c for c, _ in readers])  # the readers go on with the stalled tabs playing too
         with_stalled = min(_fps([c for c, _ in readers], 4.0))
         # held up, they would freeze; the bound is loose as in-process windows of the same readers vary
@@ -334,7 +334,7 @@ def test_disconnects_and_reconnects_leak_nothing() -> None:
         threads_before = threading.active_count()
         for _ in range(8):
             c, s = h.connect()
-            s.toggle_play()
+            s.asks.toggle_play()
             _playing([c], frames=3)  # mid-animation
             c.stop()
             h.run(c.close())
@@ -360,7 +360,7 @@ def test_a_flooding_client_is_dropped_and_the_others_keep_playing() -> None:
     try:
         readers = [h.connect() for _ in range(3)]
         for _, s in readers:
-            s.toggle_play()
+            s.asks.toggle_play()
         flooder, flooding = h.connect()
         _playing([c for c, _ in readers])
         baseline = min(_fps([c for c, _ in readers], 3.0))

@@ -196,15 +196,15 @@ def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) 
 
     with App(port=0) as app, light_tab(app) as tab:
         session = tab.session
-        session.set_presenter(True)
+        session.asks.set_presenter(True)
         with session.lock:
             session._resize(CanvasSize.measured_by_page(1240, 560, 1.0))  # pyright: ignore[reportPrivateUsage]
-        session.change(Settings("pole-barn"))
+        session.asks.change(Settings("pole-barn"))
         layout = session.painter.layout
         assert layout is not None and layout.lanes[0].title_lines == 2 and session.painter.legend_rows != LEGEND_ROWS
         builds, placements = [], []
         build, place = painting_module.build_drawing, canvas.place_labels
         monkeypatch.setattr(painting_module, "build_drawing", lambda *a, **k: builds.append(1) or build(*a, **k))
         monkeypatch.setattr(canvas, "place_labels", lambda *a, **k: placements.append(1) or place(*a, **k))
-        session.change(session.state.settings.with_value("v", 0.7))
+        session.asks.change(session.state.settings.with_value("v", 0.7))
         assert (len(builds), len(placements)) == (1, 0)

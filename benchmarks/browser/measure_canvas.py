@@ -83,17 +83,17 @@ def measure(
                 page.keyboard.press("f")
                 wait_until(lambda: session.state.presenter and _width(session) > 0.9 * width, timeout=60)
             with session.lock:
-                session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
+                session.asks.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
                 layout = session.painter.layout
                 assert layout is not None
                 smallest = min([t.px for t in session.painter.renderer.still.texts] + [layout.theme.text_px])
-                session.toggle_play()
+                session.asks.toggle_play()
             time.sleep(warm)  # warm (viser's adaptive resolution steps every 2.5 s at most)
             f0, k0, m0 = page.evaluate(COUNTS)
             time.sleep(seconds)
             f1, k1, m1 = page.evaluate(COUNTS)
             with session.lock:
-                session.toggle_play()
+                session.asks.toggle_play()
             if presenter:
                 page.evaluate("() => document.activeElement && document.activeElement.blur()")
                 page.keyboard.press("f")

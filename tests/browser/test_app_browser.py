@@ -207,8 +207,8 @@ def show(tab: AppPage, settings: Settings, now: float) -> None:
     s = tab.session
     with s.lock:
         s.controls.fit.value = True
-        s.change(settings, refit=True)
-        s.seek(now)
+        s.asks.change(settings, refit=True)
+        s.asks.seek(now)
 
 
 def rod_runs(row: np.ndarray, color: str) -> list[tuple[int, int]]:

@@ -39,7 +39,7 @@ def test_the_image_shows_the_picture_its_nodes_draw(browser: Any, app_server: Ap
         lines = tab.canvas_after(np.zeros_like(tab.canvas()))
         s.painter.still_image.slow_canvas = True  # as when the browser has lowered its resolution
         with s.lock:
-            s.toggle_play()
+            s.asks.toggle_play()
         wait_until(
             lambda: (
                 s.painter.renderer.flat_version == s.painter.renderer.version and not s.painter.renderer.vectors_shown
@@ -47,8 +47,8 @@ def test_the_image_shows_the_picture_its_nodes_draw(browser: Any, app_server: Ap
             timeout=30,
         )
         with s.lock:
-            s.toggle_play()
-            s.seek(0.0)
+            s.asks.toggle_play()
+            s.asks.seek(0.0)
         assert not s.painter.renderer.vectors_shown
         flat = tab.canvas_after(np.zeros_like(lines))
         Image.fromarray(lines.astype(np.uint8)).save(shots / "lines.png")

@@ -141,7 +141,7 @@ def test_signals_are_drawn_in_the_diagrams_and_lanes_only_when_asked_for(tab: Ap
 
     # later, the pulse has moved on with the light (one unit of x per unit of t) in each lane
     with s.lock:
-        s.seek(0.8)
+        s.asks.seek(0.8)
     later = canvas_showing(tab, on, lambda img: pulse_problems(tab, img, 0.8))
     save(later, shots / "signals_later.png")
     for k, place in enumerate(layout.lanes):  # and on the screen: the bar has moved right

@@ -313,7 +313,7 @@ def test_a_locked_control_is_disabled_and_says_why(open_tab: OpenTab, shots: Pat
         tab.page.screenshot(path=str(shots / "locked.png"))
         # a value sent for the locked control anyway is refused on the server
         with tab.session.lock:
-            tab.session.change(tab.session.state.settings.with_value("v", 0.9))
+            tab.session.asks.change(tab.session.state.settings.with_value("v", 0.9))
         assert tab.session.state.settings.value("v") == 0.6 and "locked by step 1" in tab.session.state.notice.text
         tab.press("PageDown")
         tab.wait_caption("Free")

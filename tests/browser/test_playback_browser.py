@@ -25,7 +25,7 @@ def runtime_frames(tab: AppPage) -> int:
 def test_the_browser_plays_and_the_server_sends_nothing_per_frame(tab: AppPage, shots: Path) -> None:
     s = tab.session
     with s.lock:
-        s.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
+        s.asks.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
     tab.page.click("button:has-text('Play')")
     wait_until(lambda: s.player.playing, timeout=60)
     wait_until(lambda: runtime_frames(tab) > 5)
@@ -54,7 +54,7 @@ def test_every_tab_in_a_state_gets_the_one_timeline(browser: Any) -> None:
     try:
         for tab in (a, b):
             with tab.session.lock:
-                tab.session.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
+                tab.session.asks.change(presets()["Fig. 3: collision, M2 = 2 M1"], refit=True)
             tab.page.click("button:has-text('Play')")
         wait_until(lambda: a.session.player.playing and b.session.player.playing, timeout=60)
         assert a.session.player.timeline is b.session.player.timeline  # made once, for both

@@ -52,9 +52,10 @@ LINEAR_SLIDER_LABEL = "\u2002"
 
 
 class Actions(Protocol):
-    """What the controls ask of a session (:class:`~rigidrel_app.live.session.Session`)."""
+    """What the controls ask of a tab (:class:`~rigidrel_app.live.requests.Requests`)."""
 
-    state: TabState
+    @property
+    def state(self) -> TabState: ...
 
     def change(self, new: Settings, refit: bool | None = None) -> None: ...
     def set_parameter(self, parameter: rr.Parameter, value: float) -> None: ...

@@ -29,6 +29,7 @@ from .greeting import greet
 from .painting import PaintingCache
 from .playback import FRAME_RATE
 from .session import Session
+from .tab import Tab
 from .timeline import ProcessRecorder, TimelineCache
 
 #: 3-D lanes are redrawn at this rate per client while playing (>= 30 fps delivered, with margin).
@@ -315,7 +316,7 @@ class App:
                     self._followed += 1
 
     # ------------------------------------------------------------------ --follow
-    def step_changed(self, session: Session, index: int) -> None:
+    def step_changed(self, session: Tab, index: int) -> None:
         """A tab went to another step: if it leads, the others follow (on the animation loop's next
         round, so that no tab's lock is taken while another's is held)."""
         with self._lock:
@@ -328,7 +329,7 @@ class App:
         """The address the lecturer opens to lead (``follow``), else None."""
         return None if self.lead_token is None else f"{self.url}/?lead={self.lead_token}"
 
-    def lecturer(self, session: Session, token: str) -> bool:
+    def lecturer(self, session: Tab, token: str) -> bool:
         """A tab's address carried ``token``: if it is this server's, the tab is the lecturer's and
         leads from now on, at its own step."""
         if self.lead_token is None or not hmac.compare_digest(token.encode(), self.lead_token.encode()):
@@ -339,7 +340,7 @@ class App:
             self._followed += 1
         return True
 
-    def lead(self, session: Session) -> str | None:
+    def lead(self, session: Tab) -> str | None:
         """Key L: a lecturer's tab leads from now on, at its own step; any other tab is refused (the
         reason is returned)."""
         with self._lock:
