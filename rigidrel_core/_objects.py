@@ -133,6 +133,14 @@ class ObjectEvent:
     """What the object is from then on, as a title says it: ``"broken"``."""
     meaning: str = ""
     """What the event is, in words, as an events table gives it: ``"the barn's door closes"``."""
+    closes: bool = False
+    """Whether a body is open until this event and closed from it on (a door): drawn as a stub at
+    its top, then whole."""
+    before: str = ""
+    """What the object is until this event, as a title says it: ``"open"`` (``""``: nothing said)."""
+    outcome: str = ""
+    """What the event does to the rods, the same in every frame, as a title says it from the event
+    on: ``"Born-rigid pole spans the doorway, signal-limited pole inside"`` (``""``: nothing said)."""
 
     def in_frame(self, *, frame: Frame = LAB) -> tuple[float, float]:
         """The event as ``(t', x')`` of ``frame`` (one boost)."""
@@ -187,12 +195,27 @@ class SceneObject:
         """The object's event as ``(t', x')`` of ``frame``, or ``None`` (it has none)."""
         return None if self.event is None else self.event.in_frame(frame=frame)
 
-    def parted(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
-        """Whether the object is in two parts at times ``t'`` of ``frame``: from its event on, if that
-        parts it (``t' >= t'_event``); all ``False`` otherwise. Shape of ``t``."""
+    def happened(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
+        """Whether the object's event has happened by times ``t'`` of ``frame`` (``t' >= t'_event``,
+        the event's time in that frame, so the answer depends on the frame: the pole in the barn's
+        door closes at another instant of the pole's frame); all ``False`` without an event. Shape
+        of ``t``."""
         frame = check_frame(frame)
         tt = check_times("t", t)
         event = self.event
-        if event is None or not event.parts:
+        if event is None:
             return np.zeros(tt.shape, dtype=np.bool_)
         return tt >= event.in_frame(frame=frame)[0]
+
+    def parted(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
+        """Whether the object is in two parts at times ``t'`` of ``frame``: from its event on, if that
+        parts it (:meth:`happened`); all ``False`` otherwise. Shape of ``t``."""
+        happened = self.happened(t, frame=frame)
+        return happened if self.event is not None and self.event.parts else np.zeros_like(happened)
+
+    def closed(self, t: npt.ArrayLike, *, frame: Frame = LAB) -> npt.NDArray[np.bool_]:
+        """Whether the object is closed at times ``t'`` of ``frame``: a body whose event closes it
+        (a door), from that event on; any other object is never open, so always ``True``. Shape
+        of ``t``."""
+        happened = self.happened(t, frame=frame)
+        return happened if self.event is not None and self.event.closes else np.ones_like(happened)

@@ -10,6 +10,7 @@ import pytest
 import rigidrel_core as rr
 from rigidrel_app.cli import main
 from rigidrel_app.view.describe import describe
+from rigidrel_app.view.objects import object_words
 from rigidrel_app.view.signals import verdict_lines
 from rigidrel_app.view.state import Resolved, Settings, resolve
 
@@ -24,6 +25,11 @@ def _spoken(x: float) -> str:
     return f"{round(float(x), 3) + 0.0:.3f}".replace("-", "minus ")
 
 
+def _object_said(obj: rr.SceneObject, frame: rr.Frame, now: float) -> str:
+    value = None if obj.field is None else float(obj.field.values([now], frame=frame)[0])
+    return object_words(obj, value, bool(obj.happened([now], frame=frame)[0]))
+
+
 @pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
 def test_each_rod_of_each_lane_is_where_the_core_puts_it(kind: str) -> None:
     r = _resolved(kind)
@@ -36,8 +42,9 @@ def test_each_rod_of_each_lane_is_where_the_core_puts_it(kind: str) -> None:
             lengths = r.scene.lengths(now, frame=frame)
             switches = r.scene.switch_times(frame=frame)
             parts = lane.split(": ", 1)[1].rstrip(".").split("; ")
-            assert len(parts) == r.scene.n_rods
-            for k, (rod, part) in enumerate(zip(r.scene.rods, parts, strict=True)):
+            things = [_object_said(o, frame, now) for o in r.scene.objects]
+            assert parts[r.scene.n_rods :] == [t for t in things if t]  # after the rods, the door or the string
+            for k, (rod, part) in enumerate(zip(r.scene.rods, parts[: r.scene.n_rods], strict=True)):
                 assert part.startswith(rod.name + " from x")
                 assert f"= {_spoken(x[k, 0])} to {_spoken(x[k, 1])}, length {_spoken(lengths[k])}," in part
                 assert f"reading {_spoken(tau[k, 0])} (left) and {_spoken(tau[k, 1])} (right)" in part
@@ -84,3 +91,16 @@ def test_rigidrel_describe_prints_it_and_refuses_a_bad_time(capsys: pytest.Captu
         main(["describe", "impulsive-start", "--at", "inf"])
     assert bad.value.code == 2
     assert "--at must be a finite time" in capsys.readouterr().err
+
+
+def test_the_barn_door_is_said_open_or_closed_at_its_closing_instant_in_each_lane() -> None:
+    """Between the lab's closing instant and the pole's, the lab lane says the door is closed and
+    the pole's lane that it is still open (the event's time differs between the frames)."""
+    r = resolve(Settings("pole-barn", frame="pole before"))
+    assert isinstance(r, Resolved)
+    door = next(o for o in r.scene.objects if o.kind is rr.ObjectKind.BARN_DOOR)
+    lab_close, pole_close = door.event_in(frame=rr.LAB), door.event_in(frame=r.frame)
+    assert lab_close is not None and pole_close is not None and lab_close[0] < pole_close[0]
+    lab, pole = describe(r, 0.5 * (lab_close[0] + pole_close[0])).lanes
+    assert lab.endswith("; door closed (Born-rigid pole spans the doorway, signal-limited pole inside).")
+    assert pole.endswith("; door open.")

@@ -4,6 +4,7 @@ the pole-barn's two models one above the other (the lanes the app, the recording
 from __future__ import annotations
 
 import itertools
+from typing import Any
 
 import numpy as np
 import pytest
@@ -172,8 +173,10 @@ def test_pole_barn_lanes_show_both_poles_one_above_the_other_under_one_barn(now:
         assert len(barn) == len(lane.boxes) - 2
         if now == 0.5:  # the wall and the door both in view
             assert len(barn) == 2
-        for obstacle in barn:
-            assert _z_span(obstacle)[0] <= _z_span(signal)[0] and _z_span(obstacle)[1] >= _z_span(born)[1]
+        for obstacle in barn:  # a closed door and the wall span both rows; an open door hangs above them
+            assert _z_span(obstacle)[1] >= _z_span(born)[1]
+            low = _z_span(obstacle)[0]
+            assert low <= _z_span(signal)[0] or low > _z_span(born)[1]
         head = lane.title.split("\n")[0]
         assert "upper bar: Born-rigid pole; lower bar: signal-limited pole" in head
 
@@ -187,3 +190,44 @@ def test_the_barns_walls_stay_below_the_lane_titles_in_the_exports() -> None:
     for obstacle in st.boxes[2:]:
         assert _z_span(obstacle)[1] == pytest.approx(geo.clock_rows[1] + geo.clock_radius)
         assert _z_span(obstacle)[1] < title.y - 0.05
+
+
+@pytest.mark.parametrize("frame_name", ["lab", "pole before"])
+def test_the_barn_door_is_open_until_it_closes_in_the_lanes_own_frame(frame_name: str) -> None:
+    """The door is a raised stub, clear of the rods' bars, until its closing event's time in the
+    lane's frame, then a whole bar down to the rods' lowest edge; the title says open, then closed."""
+    scene = rr.build_scene("pole-barn")
+    frame, geo = scene.frame(frame_name), lane_geometry(scene)
+    door = next(o for o in scene.objects if o.kind is rr.ObjectKind.BARN_DOOR)
+    closing = door.event_in(frame=frame)
+    assert closing is not None
+    rods_top = max(_z_span(b)[1] for b in lane_state(scene, frame, closing[0], geo, "t", 0.0).boxes[:2])
+
+    def door_at(now: float) -> Any:
+        return object_picture(scene, door, frame, now, scene.positions([now], frame=frame)[:, :, 0] / geo.unit, geo)
+
+    before, after = door_at(closing[0] - 1e-9), door_at(closing[0])
+    assert (before.closed, after.closed) == (False, True)
+    outcome = "Born-rigid pole spans the doorway, signal-limited pole inside"  # the defaults' verdicts
+    assert (before.text, after.text) == ("door open", f"door closed ({outcome})")
+    (stub,), (whole,) = before.boxes, after.boxes
+    assert _z_span(whole) == pytest.approx((-0.5 * geo.rod_height, geo.wall_height - 0.5 * geo.rod_height))
+    assert _z_span(stub)[1] == pytest.approx(_z_span(whole)[1])  # hanging from the same top
+    assert _z_span(stub)[0] > rods_top  # the poles pass beneath it
+    assert (stub.x0, stub.x1) == pytest.approx((whole.x0, whole.x1))  # the door's face, 1e-9 later
+
+
+def test_the_door_closes_at_another_instant_of_the_poles_frame() -> None:
+    """The lab's closing instant t = 0 is not the pole's: at t = t' = 0.3 the lab lane shows the door
+    closed and the pole's lane shows it still open (the closing is at t' = γ (t − V x) there)."""
+    scene = rr.build_scene("pole-barn")
+    door = next(o for o in scene.objects if o.kind is rr.ObjectKind.BARN_DOOR)
+    pole_frame = scene.frame("pole before")
+    lab_close, pole_close = door.event_in(frame=rr.LAB), door.event_in(frame=pole_frame)
+    assert lab_close is not None and pole_close is not None
+    now = 0.5 * (lab_close[0] + pole_close[0])
+    assert lab_close[0] < now < pole_close[0]
+    geo = lane_geometry(scene)
+    lab_title = lane_state(scene, rr.LAB, now, geo, "t", 0.0).labels[0].text
+    pole_title = lane_state(scene, pole_frame, now, geo, "t", 0.0).labels[0].text
+    assert "door closed" in " ".join(lab_title.split()) and "door open" in " ".join(pole_title.split())

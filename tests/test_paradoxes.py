@@ -333,6 +333,15 @@ def test_the_door_outcome_is_what_every_frame_sees_as_the_door_closes(scene: rr.
     t_door, x_door = scene.door_closing_in(frame=frame)
     ends = scene.positions(np.array([t_door]), frame=frame)[:, :, 0]
     margin = 1e-9 * max(1.0, abs(t_door), abs(x_door))
+    door = scene.objects[1].event
+    assert door is not None and door.closes and (door.before, door.state) == ("open", "closed")
+    words = {
+        rr.DoorOutcome.CAUGHT: "inside",
+        rr.DoorOutcome.ON_POLE: "spans the doorway",
+        rr.DoorOutcome.SHUT_OUT: "outside",
+    }
+    said = ", ".join(f"{scene.rods[v.rod].name} {words[v.outcome]}" for v in scene.verdicts())
+    assert door.outcome == said  # what a lane's title says from the door's closing on
     for verdict in scene.verdicts():
         front, rear = ends[verdict.rod] - x_door
         outcome = verdict.outcome

@@ -329,7 +329,7 @@ def test_disconnects_and_reconnects_leak_nothing() -> None:
     h = Harness()
     try:
         keep, keep_session = h.connect()
-        keep_session.toggle_play()
+        keep_session.asks.toggle_play()
         _playing([keep])
         threads_before = threading.active_count()
         for _ in range(8):

@@ -43,7 +43,7 @@ open, ends entirely inside iff ``X <= D``: the same in every frame.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
 from types import MappingProxyType
 from typing import Literal
@@ -156,6 +156,14 @@ class DoorOutcome(StrEnum):
     the pole."""
     SHUT_OUT = "the door closes in front of the pole"
     """The front end has not passed the door (or reaches it as it closes): the pole would hit the closed door."""
+
+
+#: Each outcome as a lane's title says it once the door has closed, after the pole's name.
+OUTCOME_WORDS: dict[DoorOutcome, str] = {
+    DoorOutcome.CAUGHT: "inside",
+    DoorOutcome.ON_POLE: "spans the doorway",
+    DoorOutcome.SHUT_OUT: "outside",
+}
 
 
 @dataclass(frozen=True)
@@ -481,7 +489,14 @@ def pole_barn(
                 d,
                 REST,
                 side=1,
-                event=ObjectEvent("door closes", (t_d, d), meaning="the barn's front door closes"),
+                event=ObjectEvent(
+                    "door closes",
+                    (t_d, d),
+                    state="closed",
+                    meaning="the barn's front door closes",
+                    closes=True,
+                    before="open",
+                ),
             ),
         ),
         barn_length=d,
@@ -490,6 +505,10 @@ def pole_barn(
         models=models,
         heats=tuple(heats),
     )
+    door = scene.objects[1]
+    assert door.event is not None
+    outcome = ", ".join(f"{rod.name} {OUTCOME_WORDS[scene.door_outcome(i)]}" for i, rod in enumerate(scene.rods))
+    scene = replace(scene, objects=(scene.objects[0], replace(door, event=replace(door.event, outcome=outcome))))
     checked_scene(scene)
     return scene
 

@@ -153,10 +153,12 @@ def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND
     legend = drawn.legend()
     rows = legend_rows(legend, layout.legend.width, layout.theme)
     tried = layout_of(rows, 1)
-    titles = [p.title for p in drawn.lane_pictures(drawn.window[0], tried)]
-    needed = title_lines_needed(titles, tried)
+    # at both ends of playback: an object's words change at its event (a door open, then closed
+    # with what it did to the poles), and the lines must hold the longer
+    ends = [[p.title for p in drawn.lane_pictures(now, tried)] for now in drawn.window]
+    needed = max(title_lines_needed(titles, tried) for titles in ends)
     if tried.lanes[0].title_lines == 1:  # a short canvas: one line if they fit it
-        title_lines = 1 if titles_fit_one_line(titles, tried) else needed
+        title_lines = 1 if all(titles_fit_one_line(titles, tried) for titles in ends) else needed
     else:
         title_lines = 1 if needed == 2 else needed
     final = layout_of(rows, title_lines)

@@ -212,6 +212,12 @@ def rows_key(scene: rr.Scene) -> str:
     return "; ".join(f"{head}: {names[0]}" for head, names in named if len(names) == 1)
 
 
+#: An open body (a door before it closes) is drawn as this top share of its closed bar: raised like
+#: a barn's sliding door above the rods, which pass beneath it (their bars and clocks take the
+#: lower part of the bar's height).
+OPEN_SHARE = 0.2
+
+
 @dataclass(frozen=True)
 class ObjectPicture:
     """A scene object in a lane at one instant (:func:`object_picture`): its bars and its words."""
@@ -221,6 +227,8 @@ class ObjectPicture:
     """Its field at the lane's time (the core's), or ``None`` (it has none)."""
     parted: bool
     """Whether its event has parted it (a broken string: two loose ends)."""
+    closed: bool
+    """Whether it is closed (a door after its closing event; any other object always)."""
     color: str
     text: str
     """For the lane's title (:func:`.objects.object_words`): empty for a body without a field."""
@@ -233,19 +241,24 @@ def object_picture(
     (``x``: the rods' snapshot in lane units, ``(rods, TICK_FRACTIONS)``).
 
     A body (:data:`.objects.OBJECT_STYLES`' ``"bar"``) is a bar the height of the lane's bodies at its
-    face, on the side its matter lies; a tie is a thin bar from its first end to its second on the
-    row of its first end's rod, coloured on its style's ramp by its field from 0 (faint) to the
-    field's full scale (strong), and once its event parts it, two loose ends in the strongest colour.
+    face, on the side its matter lies; a body still open (a door before it closes, in ``frame``) is
+    only the top :data:`OPEN_SHARE` of that bar, raised clear of the rods' bars; a tie is a thin
+    bar from its first end to its second on the row of its first end's rod, coloured on its style's
+    ramp by its field from 0 (faint) to the field's full scale (strong), and once its event parts
+    it, two loose ends in the strongest colour.
     """
     style = object_style(obj)
     value = None if obj.field is None else float(obj.field.values([now], frame=frame)[0])
-    parted = bool(obj.parted([now], frame=frame)[0])
-    text = object_words(obj, value, parted)
+    happened = bool(obj.happened([now], frame=frame)[0])
+    parted, closed = bool(obj.parted([now], frame=frame)[0]), bool(obj.closed([now], frame=frame)[0])
+    text = object_words(obj, value, happened)
     if style.glyph == "bar":
         face = _lane_x(obj.worldlines[0], frame, now, x, geo)
         x0, x1 = (face - style.width, face) if obj.side < 0 else (face, face + style.width)
-        bar = Box(x0, x1, geo.wall_height, style.color, z=0.5 * (geo.wall_height - geo.rod_height))
-        return ObjectPicture((bar,), value, parted, style.color, text)
+        top = geo.wall_height - 0.5 * geo.rod_height  # the bar stands on the rods' lowest edge
+        height = geo.wall_height if closed else OPEN_SHARE * geo.wall_height
+        bar = Box(x0, x1, height, style.color, z=top - 0.5 * height)
+        return ObjectPicture((bar,), value, parted, closed, style.color, text)
     first, second = (_lane_x(w, frame, now, x, geo) for w in obj.worldlines[:2])
     color = style.color
     if obj.field is not None and value is not None:
@@ -258,7 +271,7 @@ def object_picture(
         boxes = (Box(first, first + loose, height, color, z), Box(second - loose, second, height, color, z))
     else:
         boxes = (Box(first, second, height, color, z),)
-    return ObjectPicture(boxes, value, parted, color, text)
+    return ObjectPicture(boxes, value, parted, closed, color, text)
 
 
 def _lane_x(

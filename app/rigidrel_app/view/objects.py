@@ -80,18 +80,21 @@ def _amount(field: rr.ObjectField, value: float, spec: str) -> str:
     return f"{100.0 * value:{spec}} %" if field.percent else f"{value:{spec}}"
 
 
-def object_words(obj: rr.SceneObject, value: float | None, parted: bool) -> str:
+def object_words(obj: rr.SceneObject, value: float | None, happened: bool) -> str:
     """What a lane's title says of ``obj`` at an instant: its field's ``value``, the frame it is measured
     in, and the colours' key (``"string strain 22.0 % in the rear ship's comoving frame (faint → strong:
-    0 → 25 %, breaks)"``), or, once its event has parted
-    it, that state (``"string broken (at its breaking strain 25 %)"``); empty for an object with
-    neither."""
+    0 → 25 %, breaks)"``), or, once its event has ``happened`` in the lane's frame, the state it
+    leaves, with what it did to the rods (``"string broken (at its breaking strain 25 %)"``, ``"door
+    closed (Born-rigid pole spans the doorway, signal-limited pole inside)"``), and before it the
+    state it ends (``"door open"``); empty for an object with none of these."""
     field, event = obj.field, obj.event
-    if parted and event is not None:
-        head = f"{obj.name} {event.state}"
+    if happened and event is not None and event.state:
+        head = f"{obj.name} {event.state}" + (f" ({event.outcome})" if event.outcome else "")
         if field is None:
             return head
         return f"{head} (at its {field.full_scale_name} {_amount(field, field.full_scale, '.3g')})"
+    if event is not None and event.before and not happened:
+        return f"{obj.name} {event.before}"
     if field is None or value is None:
         return ""
     now, scale = _amount(field, value, ".1f"), _amount(field, field.full_scale, ".3g")
