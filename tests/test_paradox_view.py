@@ -231,3 +231,31 @@ def test_the_door_closes_at_another_instant_of_the_poles_frame() -> None:
     lab_title = lane_state(scene, rr.LAB, now, geo, "t", 0.0).labels[0].text
     pole_title = lane_state(scene, pole_frame, now, geo, "t", 0.0).labels[0].text
     assert "door closed" in " ".join(lab_title.split()) and "door open" in " ".join(pole_title.split())
+
+
+@pytest.mark.parametrize("frame_name", ["lab", "ships after"])
+def test_the_length_panel_draws_the_strings_span_and_marks_its_break(frame_name: str) -> None:
+    """Bell's length panel: beside each ship's length, the string's (the gap between the ships it
+    spans, its ends' separation at equal time), in the lab and in the chosen frame, each sample the
+    core's; its break a square on that curve at the break's time in each frame, named once in the
+    legend."""
+    from rigidrel_app.view.diagrams import TIE_EVENT_SYMBOL, length_static
+    from rigidrel_app.view.vocabulary import Points, Polyline
+
+    frame = BELL.frame(frame_name)
+    (string,) = BELL.objects
+    window = BELL.time_window(frame=frame)
+    chart = length_static(BELL, rr.LAB, frame, window, (320.0, 180.0))
+    shown = [(rr.LAB, "string, lab (t)")] + ([] if frame_name == "lab" else [(frame, "string, ships after (t′)")])
+    breaks = [i for i in chart.items if isinstance(i, Points) and i.symbol == TIE_EVENT_SYMBOL]
+    assert len(breaks) == len(shown) and {b.style.name for b in breaks} == {"string: break"}
+    for (f, name), mark in zip(shown, breaks, strict=True):
+        (curve,) = [i for i in chart.items if isinstance(i, Polyline) and i.style.name == name]
+        ends = string.positions(curve.x, frame=f)
+        assert np.array_equal(curve.y, ends[1] - ends[0])  # every sample the core's, nothing interpolated
+        assert (curve.x[0], curve.x[-1]) == window
+        event = string.event_in(frame=f)
+        assert event is not None
+        at = string.positions([event[0]], frame=f)[:, 0]
+        assert (mark.x[0], mark.y[0]) == (event[0], at[1] - at[0])
+        assert chart.y_range[1] > float(np.max(curve.y))  # in view

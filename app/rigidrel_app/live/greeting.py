@@ -18,7 +18,7 @@ def greet(client: viser.ClientHandle, version: str, closed: Callable[[], bool]) 
     """
     storage = client.local_storage
     try:
-        seen = storage.get_item(VERSION_KEY, timeout=10.0)
+        seen = storage.get_item(VERSION_KEY, timeout=30.0)  # a slow machine, drawing its first page
         storage.set_item(VERSION_KEY, version)
     except (TimeoutError, RuntimeError):  # not a browser, or gone
         return

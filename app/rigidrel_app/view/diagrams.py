@@ -47,6 +47,8 @@ EVENT_LABEL_PX = 16.0
 #: Legend name and marker of the rods' ends at the current instant (not the events' black dots).
 ENDS_NOW_NAME = "rod ends now"
 ENDS_NOW_SYMBOL = "diamond-open"
+#: A tie's event on its curve in the length panel (the string's break), named in the legend.
+TIE_EVENT_SYMBOL = "square"
 LENGTH_NOW_NAME = "lengths now"
 #: The length plot's top, per the largest length: room above the rest length for event labels.
 LENGTH_HEADROOM = 1.3
@@ -348,7 +350,9 @@ def length_static(
     comoving: tuple[FloatArray, FloatArray, str] | None = None,
     label_px: float = EVENT_LABEL_PX,
 ) -> Chart:
-    """Equal-time length of each rod against time, in the lab and in the chosen frame (Fig. 2).
+    """Equal-time length of each rod against time, in the lab and in the chosen frame (Fig. 2), and
+    of each tie (Bell's string: its ends' separation, the gap between the ships), with its event
+    (the string's break) marked on it.
 
     ``panel_px`` is the plot area (width, height) in pixels; curves are sampled to half a pixel.
     ``comoving``: ``(t, lengths, name)``, the lengths ``(rods, n)`` in a riding point's comoving
@@ -364,6 +368,10 @@ def length_static(
     top = max(
         max(r.motion.length for r in scene.rods), *(float(scene.lengths(probe, frame=f).max()) for f, _, _ in frames)
     )
+    ties = [o for o in scene.objects if object_style(o).length_panel is not None]
+    grid = np.linspace(t_range[0], t_range[1], 17)  # a tie's gap may peak inside the window
+    for tie in ties:
+        top = max(top, *(float(np.max(np.diff(tie.positions(grid, frame=f), axis=0))) for f, _, _ in frames))
     if comoving is not None:
         top = max(top, float(np.max(comoving[1])))
         for r, rod in enumerate(scene.rods):
@@ -373,15 +381,27 @@ def length_static(
     px_per_length = panel_px[1] / (LENGTH_HEADROOM * top)
     half_px_t, half_px_length = 0.5 * (t_range[1] - t_range[0]) / panel_px[0], 0.5 / px_per_length
     for frame, prime, dash in frames:
+        short = "lab" if not prime else (frame.name or "custom")  # the chart's title gives β
         curves = sampler.lengths(scene, frame, t_range, px_per_length)
         for r, rod in enumerate(scene.rods):
             color = ROD_COLORS[r % len(ROD_COLORS)]
-            short = "lab" if not prime else (frame.name or "custom")  # the chart's title gives β
             name = f"{rod.name}, {short} (t{typeset_prime(prime)})"
             items.append(Polyline(curves[r].t, curves[r].x, Style(color, 2.5 if not prime else 2.0, dash, name=name)))
         # the named events on the curves; events on one spot (within half a pixel: Bell's two ships
         # have one length curve in the lab) share one dot and one label
         marks: list[tuple[float, float, list[str]]] = []
+        breaks: list[tuple[float, float, str]] = []  # a tie's event on its curve
+        for tie in ties:
+            look = object_style(tie).length_panel
+            assert look is not None
+            gap = sampler.tie_span(scene, tie, frame, t_range, px_per_length)
+            top = max(top, float(np.max(gap.x)))
+            name = f"{tie.name}, {short} (t{typeset_prime(prime)})"
+            items.append(Polyline(gap.t, gap.x, replace(look, dash=dash, name=name)))
+            event = tie.event_in(frame=frame)
+            if tie.event is not None and event is not None and t_range[0] <= event[0] <= t_range[1]:
+                at = tie.positions([event[0]], frame=frame)[:, 0]
+                breaks.append((event[0], float(at[1] - at[0]), f"{tie.name}: {tie.event.name}"))
         for name, (te, _) in scene.events_in(frame=frame).items():
             if t_range[0] <= te <= t_range[1]:
                 le = float(scene.lengths(np.array([te]), frame=frame)[scene.event_rod(name), 0])
@@ -394,6 +414,8 @@ def length_static(
             items.append(Points(np.array([te]), np.array([le]), Style(INK), size=7))
             text = ", ".join(event_label(name) for name in names) + (" (t′)" if prime else "")
             items.append(Label(te, le, text, Style(INK), size=label_px, movable=True))
+        for te, le, name in breaks:  # named in the legend, not by a label: the panel is crowded
+            items.append(Points(np.array([te]), np.array([le]), Style(INK, name=name), size=9, symbol=TIE_EVENT_SYMBOL))
     chart = Chart(
         items=tuple(items),
         x_title=LENGTH_TIME_TITLE,

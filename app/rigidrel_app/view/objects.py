@@ -54,6 +54,9 @@ class ObjectStyle:
     """Its field's colours, faint to strong."""
     loose_end_share: float = 0.0
     """Once parted (a broken string), each loose end is this share of the gap between its ends."""
+    length_panel: Style | None = None
+    """A tie's equal-time length (its ends' separation) in the length panel, in the lab (the chosen
+    frame's dashed, as the rods'); ``None``: not drawn there (a body has no length)."""
 
 
 #: The style table: every role's look.
@@ -65,7 +68,9 @@ OBJECT_STYLES: Mapping[rr.ObjectRole, ObjectStyle] = MappingProxyType(
         rr.ObjectRole.MARKER: ObjectStyle(
             "bar", MARKER_COLOR, 0.01, Style(MARKER_COLOR, 2.5, "dash"), Style(PRINT_GREY, 2.0, "dash")
         ),
-        rr.ObjectRole.TIE: ObjectStyle("tie", FIELD_RAMP[0], 0.35, None, None, FIELD_RAMP, 0.2),
+        rr.ObjectRole.TIE: ObjectStyle(
+            "tie", FIELD_RAMP[0], 0.35, None, None, FIELD_RAMP, 0.2, Style(FIELD_RAMP[-1], 2.0)
+        ),
     }
 )
 

@@ -134,6 +134,26 @@ def sample_lengths(
     return refine(lambda t: scene.lengths(t, frame=frame), knots, tol_px / px_per_length)
 
 
+def sample_tie_span(
+    scene: rr.Scene,
+    tie: rr.SceneObject,
+    frame: rr.Frame,
+    t_range: tuple[float, float],
+    px_per_length: float,
+    tol_px: float = TOLERANCE_PX,
+) -> Sampled:
+    """A tie's ends' equal-time separation ``x'_2 - x'_1`` against time of ``frame`` (Bell's string:
+    the ships' gap it spans), adaptively sampled from the rods' switch times (its ends move with
+    the rods' material points)."""
+    knots = _knots(scene.switch_times(frame=frame).ravel(), t_range)
+
+    def evaluate(t: FloatArray) -> FloatArray:
+        x = tie.positions(t, frame=frame)
+        return (x[1] - x[0])[np.newaxis]
+
+    return refine(evaluate, [knots], tol_px / px_per_length)[0]
+
+
 @dataclass(frozen=True)
 class Sampler:
     """How the diagrams sample their curves: adaptively to ``tol_px`` (the app, the exports), or,
@@ -161,6 +181,16 @@ class Sampler:
         t = np.linspace(t_range[0], t_range[1], self.fixed_n)
         lengths = scene.lengths(t, frame=frame)
         return [Sampled(t, lengths[r]) for r in range(scene.n_rods)]
+
+    def tie_span(
+        self, scene: rr.Scene, tie: rr.SceneObject, frame: rr.Frame, t_range: tuple[float, float], px_per_length: float
+    ) -> Sampled:
+        """A tie's ends' equal-time separation against frame time over ``t_range``."""
+        if self.fixed_n is None:
+            return sample_tie_span(scene, tie, frame, t_range, px_per_length, self.tol_px)
+        t = np.linspace(t_range[0], t_range[1], self.fixed_n)
+        x = tie.positions(t, frame=frame)
+        return Sampled(t, x[1] - x[0])
 
 
 #: The app's sampler: chord error below half a pixel.
