@@ -66,6 +66,10 @@ def number_box(page: Any, label: str) -> Any:
     return page.locator(f'label:text-is("{label}")').first.locator("xpath=following::input[1]")
 
 
+#: viser's note on a page drawn in software WebGL.
+SOFTWARE_NOTE = ".mantine-Notification-root:has-text('Software WebGL rendering detected')"
+
+
 class AppPage:
     """One browser tab on the app, with the server-side session behind it."""
 
@@ -118,8 +122,9 @@ class AppPage:
         )
         # the page's playback runtime draws the moving parts (the server only its answers' frames)
         wait_until(lambda: self.session.player.ready, timeout=60)
-        for button in self.page.locator(".mantine-Notification-root button").all():
-            button.click()
+        # viser's "Software WebGL rendering detected" (headless Chromium draws in software) would
+        # cover the lanes' titles: the page closes it by itself
+        wait_until(lambda: self.page.locator(SOFTWARE_NOTE).count() == 0, timeout=30)
 
     def close(self) -> None:
         self.page.close()

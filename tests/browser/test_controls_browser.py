@@ -18,8 +18,9 @@ import pytest
 from rigidrel_app.live.controls import LOG_SLIDER_LABEL
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS
 from rigidrel_app.live.server import App
+from rigidrel_app.view.pointer import BETA_PER_WIDTH
 from rigidrel_app.view.scenario import Scenario
-from rigidrel_app.view.state import NO_PRESET, Settings, event_times, preset_menu
+from rigidrel_app.view.state import CUSTOM_FRAME, NO_PRESET, Settings, event_times, preset_menu
 from rigidrel_app.view.vocabulary import ROD_COLORS
 from tests.browser.test_app_browser import AppPage
 from tests.viser_client import wait_until
@@ -138,6 +139,74 @@ def test_a_drag_a_wheel_and_ten_arrows_leave_the_picture_upright(tab: AppPage, s
     wait_until(lambda: np.allclose(camera.position, pose[0]) and np.allclose(camera.look_at, pose[1]))
     assert np.allclose(camera.up_direction, pose[2])
     assert tab.page.evaluate("() => window.__rigidrelPlayback.cameraLocked()")
+
+
+def test_the_mouse_scrubs_the_clock_chooses_a_cone_and_drags_beta(collision: AppPage, shots: Path) -> None:
+    """On Fig. 3 with a real mouse: a click on the lab's diagram puts the clock at the time under it
+    and a drag down it follows; a click on an event's dot draws that event's light cone; a drag
+    across the barycentric frame's diagram, away from its now-line, sets a custom β by the share
+    of the plot's width dragged. The camera never moves."""
+    tab = collision
+    s = tab.session
+    camera = s.client.camera
+    pose = camera.position.copy()
+    canvas = tab.page.locator("canvas[data-engine]").bounding_box()
+    assert canvas is not None
+    # the page laid out for the canvas as it is (a tab's first layout is for the size first reported)
+    wait_until(
+        lambda: (
+            s.painter.layout is not None
+            and abs(s.painter.layout.width - canvas["width"]) < 1
+            and abs(s.painter.layout.height - canvas["height"]) < 1
+        )
+    )
+
+    def mouse_at(px: float, pz: float) -> tuple[float, float]:  # a page point (z up) under the mouse
+        col, row = tab.page_to_pixel(px, pz)
+        return canvas["x"] + col, canvas["y"] + row
+
+    lab, chosen = s.painter.chart_frames[:2]
+    w = s.state.playback.window
+    per_px = (lab.y_range[1] - lab.y_range[0]) / lab.plot.height  # the time one pixel of the diagram spans
+    left = lab.x_range[0] + 0.03 * (lab.x_range[1] - lab.x_range[0])  # no event this far left
+    t1, t2 = w[0] + 0.3 * (w[1] - w[0]), w[0] + 0.7 * (w[1] - w[0])
+    tab.page.mouse.click(*mouse_at(*lab.px_one(left, t1)))
+    wait_until(lambda: abs(s.state.playback.now - t1) <= per_px)
+    tab.page.mouse.move(*mouse_at(*lab.px_one(left, t1)))
+    tab.page.mouse.down()
+    tab.page.mouse.move(*mouse_at(*lab.px_one(left, t2)), steps=8)
+    tab.page.mouse.up()
+    wait_until(lambda: abs(s.state.playback.now - t2) <= per_px)
+    assert not s.state.playback.playing
+    # an event with no other within reach of its dot
+    drawn = s.painter.drawn
+    assert drawn is not None
+    events = drawn.resolved.scene.events_in()
+    dots = {name: lab.px_one(x, t) for name, (t, x) in events.items()}
+    alone = [
+        n for n, (a, b) in dots.items() if all(np.hypot(a - c, b - d) > 30 for m, (c, d) in dots.items() if m != n)
+    ]
+    tab.page.mouse.click(*mouse_at(*dots[alone[0]]))
+    wait_until(lambda: s.painter.drawn is not None and s.painter.drawn.resolved.cone == alone[0])
+    # β: a drag of a fifth of the plot's width, along a line far from the now-line
+    beta = s.state.settings.beta if s.state.settings.frame == CUSTOM_FRAME else drawn.resolved.frame.beta
+    now_z = chosen.px_one(0.0, s.state.playback.now)[1]
+    z = chosen.plot.z0 + 0.1 * chosen.plot.height if now_z > chosen.plot.z0 + 0.5 * chosen.plot.height else (
+        chosen.plot.z1 - 0.1 * chosen.plot.height)  # fmt: skip
+    x0 = chosen.plot.x0 + 0.05 * chosen.plot.width
+    tab.page.mouse.move(*mouse_at(x0, z))
+    tab.page.mouse.down()
+    tab.page.mouse.move(*mouse_at(x0 + 0.2 * chosen.plot.width, z), steps=10)
+    tab.page.mouse.up()
+    expected = beta + 0.2 * BETA_PER_WIDTH
+    wait_until(lambda: s.state.settings.frame == CUSTOM_FRAME and abs(s.state.settings.beta - expected) < 0.01)
+    wait_until(lambda: s.painter.drawn is not None and abs(s.painter.drawn.resolved.frame.beta - expected) < 0.01)
+    drawn = s.painter.drawn
+    assert drawn is not None
+    beta_shown = f"custom (β = {drawn.resolved.frame.beta:.4g}) frame"  # as the lane's title has it
+    wait_until(lambda: (tab.nodes("/page/title/1")[0] or {}).get("props", {}).get("text", "").startswith(beta_shown))
+    tab.page.screenshot(path=str(shots / "after_mouse.png"))
+    assert np.allclose(camera.position, pose)
 
 
 def test_n_and_p_jump_to_the_named_events(collision: AppPage) -> None:

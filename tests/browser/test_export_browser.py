@@ -17,6 +17,7 @@ from rigidrel_app.export.recording import record_lanes_html
 from rigidrel_app.view.scene_view import build_drawing
 from rigidrel_app.view.state import Resolved, Settings
 from tests.browser.conftest import element_png
+from tests.browser.test_app_browser import SOFTWARE_NOTE
 from tests.sweeps import cases
 from tests.viser_client import wait_until
 
@@ -135,6 +136,7 @@ def test_3d_recording_plays_offline(browser: Any, exported: dict[str, Path], sho
             return rods(canvas()).mean() > 0.005
 
         wait_until(drawn, timeout=60)
+        wait_until(lambda: page.page.locator(SOFTWARE_NOTE).count() == 0)  # viser's note, closed by the page
         a = canvas()
         page.page.screenshot(path=str(shots / "playing_a.png"))
 

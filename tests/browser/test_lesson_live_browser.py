@@ -18,7 +18,7 @@ from rigidrel_app.live.session import Session
 from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.scenario import parse_scenario
 from tests.browser.conftest import element_png
-from tests.browser.test_app_browser import slider_of
+from tests.browser.test_app_browser import SOFTWARE_NOTE, slider_of
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
@@ -57,8 +57,7 @@ class LessonTab:
         new = wait_until(lambda: set(app.sessions) - before, timeout=60)
         self.session: Session = app.sessions[min(new)]
         wait_until(lambda: self.session.painter.drawn is not None, timeout=60)
-        for button in self.page.locator(".mantine-Notification-root button").all():
-            button.click()
+        wait_until(lambda: self.page.locator(SOFTWARE_NOTE).count() == 0, timeout=30)  # closed by the page
 
     def caption(self) -> str:
         band = self.page.locator("#rigidrel-caption")

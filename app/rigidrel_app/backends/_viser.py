@@ -48,7 +48,9 @@ The browser, private to viser's client (inventory; the scripts in ``live/assets/
   a ``label[for=uuid]`` in a ``p[unselectable=off]`` (Mantine's dimmed text), the number box
   ``.mantine-NumberInput-input`` beside it, icon buttons holding a ``tabler-icon-*`` svg, and the
   buttons' ``--button-color`` and the theme's ``--mantine-color-gray-filled`` variables under
-  ``html[data-mantine-color-scheme]``.
+  ``html[data-mantine-color-scheme]``; and viser's notification "Software WebGL rendering
+  detected" (``BrowserWarning.tsx``: a ``.mantine-Notification-root`` with that
+  ``.mantine-Notification-title``), closed by its close button.
 - the same context value's ``interaction.cameraLocks.acquire(reason)`` (the lock viser's gizmo
   drags take: its camera controls disabled, keyboard movement included) and
   ``useDevSettings.setState({enableOrbitCrosshair})``: the picture kept still under the mouse.

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
-from .runtime import parse_report
+from .runtime import Report
 from .tab import Tab
 from .timeline import Timeline, TimelineKey
 
@@ -27,11 +27,11 @@ class Playing:
         """Paused with the picture and the clock agreeing (no pause on its way back from the browser)."""
         return not self.tab.state.playback.playing and not self.tab.player.pausing
 
-    def reported(self, text: str) -> None:
-        """A report of the tab's runtime (:class:`~rigidrel_app.live.runtime.Report`), answered at once."""
-        tab, report = self.tab, parse_report(text)
+    def reported(self, report: Report) -> None:
+        """A report of the tab's runtime on its clock (ready, paused, ended), answered at once."""
+        tab = self.tab
         with tab.lock:
-            if report is None or tab.closed:
+            if tab.closed:
                 return
             with tab.client.atomic():
                 if report.event == "ready":

@@ -1,8 +1,9 @@
 """A tab's playback runtime, seen from the server: the script it runs, and what it reports.
 
 The runtime (``assets/runtime.js``) is sent to each tab when its session starts. It says it is
-ready, and later where it paused or ended, by setting a hidden text control of the tab's (the
-viser way a page tells the server anything): a :class:`Report` in JSON. Until it is ready, the
+ready, and later where it paused or ended, and where the pointer pressed, dragged or let go on
+the canvas, by setting a hidden text control of the tab's (the viser way a page tells the server
+anything): a :class:`Report` in JSON. Until it is ready, the
 server draws the tab's frames itself, as for a client without a browser.
 """
 
@@ -24,8 +25,12 @@ from .playback import FRAME_RATE
 #: The hidden control's label (it is never shown).
 REPORT_LABEL = "rigidrel playback"
 
-Event = Literal["ready", "paused", "ended"]
-EVENTS: tuple[Event, ...] = ("ready", "paused", "ended")
+Event = Literal["ready", "paused", "ended", "pointer"]
+EVENTS: tuple[Event, ...] = ("ready", "paused", "ended", "pointer")
+Phase = Literal["down", "move", "up"]
+PHASES: tuple[Phase, ...] = ("down", "move", "up")
+#: The largest canvas coordinate a pointer report may carry (CSS px).
+POINTER_LIMIT_PX = 100_000.0
 
 
 @dataclass(frozen=True)
@@ -39,6 +44,10 @@ class Report:
     """With ``ready``: the lead token the tab's address carried (``?lead=...``), if any."""
     still: bool = False
     """With ``ready``: the browser asks for reduced motion (``prefers-reduced-motion: reduce``)."""
+    phase: Phase | None = None
+    """With ``pointer``: the pointer went down on the canvas, moved while down, or went up."""
+    at: tuple[float, float] | None = None
+    """With ``pointer``: where, in the canvas' CSS px from its top left corner."""
 
 
 #: The longest lead token a report may carry (the server's are 22 characters).
@@ -60,6 +69,16 @@ def parse_report(text: str) -> Report | None:
         lead = raw.get("lead")
         lead = lead if isinstance(lead, str) and 0 < len(lead) <= LEAD_CHARS else None
         return Report("ready", lead=lead, still=raw.get("still") is True)
+    if event == "pointer":
+        phase, x, y = raw.get("phase"), raw.get("x"), raw.get("y")
+        numbers = [v for v in (x, y) if isinstance(v, int | float) and not isinstance(v, bool)]
+        if (
+            phase not in PHASES
+            or len(numbers) != 2
+            or not all(-POINTER_LIMIT_PX <= v <= POINTER_LIMIT_PX for v in numbers)
+        ):
+            return None  # NaN and infinities fail the range too
+        return Report("pointer", phase=phase, at=(float(numbers[0]), float(numbers[1])))
     if not isinstance(timeline, str) or not isinstance(frame, int) or isinstance(frame, bool) or frame < 0:
         return None
     return Report(event, timeline, frame)

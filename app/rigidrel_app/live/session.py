@@ -28,6 +28,7 @@ from ..view.vocabulary import Shade
 from .browser_player import BrowserPlayer
 from .canvas_report import add_canvas_report, decode
 from .controls import build_controls, notice_place
+from .gestures import Gestures
 from .key_actions import key_actions
 from .keys import Action
 from .lesson_part import GivenLesson, LessonPart, NoLesson
@@ -38,7 +39,7 @@ from .painting import PaintingCache
 from .playback import Playback
 from .playing import Playing
 from .requests import Requests
-from .runtime import RuntimeConfig, add_playback_report, clock_controls, runtime_script
+from .runtime import RuntimeConfig, add_playback_report, clock_controls, parse_report, runtime_script
 from .tab_state import TabState
 from .timeline import TimelineCache
 
@@ -86,6 +87,7 @@ class Session:
         self.asks = Requests(self)
         """What the controls and keys ask (:mod:`.requests`)."""
         self._keys = key_actions(self, self.asks, self.steps)
+        self.gestures = Gestures(self, self.asks)
         self._last_clock = 0.0
         asked, notice = settings or Settings(), ""
         resolved = resolve_settings(asked)
@@ -135,9 +137,24 @@ class Session:
 
         if runtime:  # the browser plays: its runtime, and the hidden control it reports through
             report = add_playback_report(client.gui)
-            report.on_update(lambda _: self.playing.reported(report.value))
+            report.on_update(lambda _: self._runtime_said(report.value))
             clock = clock_controls(self.controls.time.handles)
             run_javascript(client, runtime_script(RuntimeConfig(scene_owner(client), handle_uuid(report), clock)))
+
+    def _runtime_said(self, text: str) -> None:
+        """A report of the tab's runtime: on its clock (:class:`Playing`) or the pointer on the
+        canvas (:class:`Gestures`); anything else a client sends there is ignored."""
+        report = parse_report(text)
+        if report is None:
+            return
+        if report.event != "pointer":
+            self.playing.reported(report)
+            return
+        with self.lock:
+            if not self.closed:
+                with self.client.atomic():
+                    self.gestures.reported(report)
+        self.client.flush()
 
     def _resize(self, size: CanvasSize) -> None:
         drawn = self.painter.drawn

@@ -6,7 +6,9 @@
      an icon button, from what its icon means), again whenever viser draws the panel anew;
    - the keyboard's focus is always a ring;
    - the dimmed grey and the grey buttons are darkened in the light theme, the dimmed grey lightened
-     and the filled buttons' text white in the dark one: 4.5:1 or more everywhere. */
+     and the filled buttons' text white in the dark one: 4.5:1 or more everywhere;
+   - viser's note "Software WebGL rendering detected", which never closes by itself and covers the
+     top of the canvas, is closed. */
 if (!window.rigidrelA11y) (function () {  // a scope of its own: a page's global `name` is window.name
   window.rigidrelA11y = true;
   var ICONS = {
@@ -16,6 +18,7 @@ if (!window.rigidrelA11y) (function () {  // a scope of its own: a page's global
     'x': 'Close this message',
     'share': 'Share',
   };
+  var SOFTWARE_WEBGL = 'Software WebGL rendering detected';
   var named = function (el) {
     return (el.getAttribute('aria-label') || '').trim() || (el.getAttribute('aria-labelledby') || '').trim()
       || (el.id && document.querySelector('label[for="' + CSS.escape(el.id) + '"]'));
@@ -63,6 +66,16 @@ if (!window.rigidrelA11y) (function () {  // a scope of its own: a page's global
       if (named(el) || el.textContent.trim()) return;
       var label = iconName(el);
       if (label) el.setAttribute('aria-label', label);
+    });
+    // viser's note that WebGL runs in software never closes by itself and covers the lanes' titles,
+    // in a hall too: closed (the page says it on the console instead)
+    document.querySelectorAll('.mantine-Notification-root').forEach(function (el) {
+      var title = el.querySelector('.mantine-Notification-title');
+      var close = el.querySelector('.mantine-Notification-closeButton, .mantine-CloseButton-root');
+      if (!title || title.textContent.trim() !== SOFTWARE_WEBGL || !close || el.dataset.rigidrelClosed) return;
+      el.dataset.rigidrelClosed = '1';
+      console.info('rigidrel: ' + SOFTWARE_WEBGL + ' (the note viser shows is closed: it covered the canvas)');
+      close.click();
     });
   };
   var queued = false;

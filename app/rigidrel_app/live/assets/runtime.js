@@ -13,6 +13,7 @@
   const CONFIG = __CONFIG__;
   const FRAME_RATE = CONFIG.frameRate; // timeline frames per second of playback at speed 1
   const CLOCK_HZ = 10; // the time controls follow playback at this rate
+  const POINTER_MS = 50; // a drag is reported at most this often (as viser sends a dragged slider)
   const win = window;
   if (win.__rigidrelPlayback) win.__rigidrelPlayback.dispose();
 
@@ -173,6 +174,7 @@
       this.raf = null;
       this.clockAt = 0;
       this.stats = { frames: 0, messages: 0, waits: 0, blocks: 0 };
+      this.unwatch = []; // the pointer's listeners, removed when a new runtime replaces this one
       this.install();
     }
     install() {
@@ -193,6 +195,7 @@
       this.queue = queue;
       this.push = push;
       this.lockCamera(viewer);
+      this.watchPointer();
       const lead = leadToken();
       const ready = { event: "ready" };
       if (lead) ready.lead = lead;
@@ -214,6 +217,59 @@
       const dev = viewer.useDevSettings;
       if (dev && typeof dev.setState === "function") dev.setState({ enableOrbitCrosshair: false });
     }
+    // The pointer does physics (rigidrel_app/view/pointer.py): a press, a drag (reported at most
+    // every POINTER_MS) and a release on the canvas go to the server in the canvas' CSS px, from its
+    // top left corner. A touch is a pointer too; the page does not scroll or zoom under it.
+    watchPointer() {
+      const canvas = document.querySelector("canvas[data-engine]");
+      if (!canvas) {
+        if (!this.disposed && performance.now() < this.deadline) requestAnimationFrame(() => this.watchPointer());
+        return;
+      }
+      canvas.style.touchAction = "none";
+      let down = null; // the pointer pressed, if any
+      let pending = null;
+      let timer = null;
+      let last = 0;
+      const at = (e) => {
+        const r = canvas.getBoundingClientRect();
+        return { x: e.clientX - r.left, y: e.clientY - r.top };
+      };
+      const flush = () => {
+        timer = null;
+        if (!pending) return;
+        this.report({ event: "pointer", phase: "move", ...pending });
+        pending = null;
+        last = performance.now();
+      };
+      const on = (type, handler) => {
+        canvas.addEventListener(type, handler);
+        this.unwatch.push(() => canvas.removeEventListener(type, handler));
+      };
+      on("pointerdown", (e) => {
+        if (e.button !== 0 || down !== null) return;
+        down = e.pointerId;
+        canvas.setPointerCapture(e.pointerId);
+        this.report({ event: "pointer", phase: "down", ...at(e) });
+        last = performance.now();
+      });
+      on("pointermove", (e) => {
+        if (e.pointerId !== down) return;
+        pending = at(e);
+        const wait = POINTER_MS - (performance.now() - last);
+        if (wait <= 0) flush();
+        else if (timer === null) timer = setTimeout(flush, wait);
+      });
+      const up = (e) => {
+        if (e.pointerId !== down) return;
+        down = null;
+        if (timer !== null) clearTimeout(timer);
+        flush();
+        this.report({ event: "pointer", phase: "up", ...at(e) });
+      };
+      on("pointerup", up);
+      on("pointercancel", up);
+    }
     cameraLocked() {
       const control = this.viewer && this.viewer.mutable.current.cameraControl;
       return !!control && control.enabled === false;
@@ -221,6 +277,7 @@
     dispose() {
       this.disposed = true;
       if (this.releaseCamera) this.releaseCamera();
+      for (const undo of this.unwatch) undo();
       if (this.raf !== null) cancelAnimationFrame(this.raf);
       if (this.queue && this.push) this.queue.push = this.push;
     }

@@ -1,0 +1,128 @@
+"""The mouse (or a finger) on the canvas does physics, not camera: what a press, a drag and a release
+on the diagrams ask for. Pure: page coordinates in, a request out; the live layer carries it out
+(:mod:`rigidrel_app.live.gestures`), checked as any control's value is.
+
+On a press, by what lies under it (page px, z up, as :mod:`.canvas` lays the page out):
+
+- an event's dot on a Minkowski diagram (within :data:`EVENT_REACH_PX`): the light cone of that
+  event, or none if it is the one drawn (:class:`ChooseCone`);
+- elsewhere on the lab's diagram, or on the length panel: the clock jumps to the time under the
+  pointer, and follows it while dragged (:class:`Scrub`; the diagram's vertical axis is t, the
+  panel's horizontal one);
+- on the chosen frame's diagram, the now-line (within :data:`NOW_REACH_PX`) scrubs as well; a drag
+  anywhere else there changes the frame's velocity β, one unit of β per :data:`BETA_PER_WIDTH` of
+  the plot's width, kept to the β slider's range (:class:`DragBeta`);
+- anything else (the lanes, the legend, the margins): nothing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import rigidrel_core as rr
+
+from .canvas import ChartFrame
+from .state import CUSTOM_BETA
+
+#: How near an event's dot a press must be to choose its light cone (page px).
+EVENT_REACH_PX = 14.0
+#: How near the chosen frame's now-line a press must be to scrub rather than drag β (page px).
+NOW_REACH_PX = 10.0
+#: A drag across the whole plot's width changes β by this much.
+BETA_PER_WIDTH = 1.0
+
+
+@dataclass(frozen=True)
+class ChooseCone:
+    """Show the light cone of ``event`` (``None``: none)."""
+
+    event: str | None
+
+
+@dataclass(frozen=True)
+class Scrub:
+    """The clock to ``time``; a drag goes on reading time from ``chart``'s axis."""
+
+    chart: int
+    time: float
+
+
+@dataclass(frozen=True)
+class DragBeta:
+    """A drag that sets the chosen frame's β: ``beta`` when it started, on a plot ``width`` px wide,
+    from page x ``x0``."""
+
+    beta: float
+    width: float
+    x0: float
+
+
+Press = ChooseCone | Scrub | DragBeta | None
+
+
+@dataclass(frozen=True)
+class Diagrams:
+    """What a press is read against: the charts on the page (lab diagram, chosen frame's diagram,
+    length panel), the frame of each diagram, the events that may have a cone drawn, the one drawn,
+    the playback window and the chosen frame's β now."""
+
+    frames: Sequence[ChartFrame]
+    diagram_frames: tuple[rr.Frame, rr.Frame]
+    scene: rr.Scene
+    cone_events: tuple[str, ...]
+    cone: str | None
+    window: tuple[float, float]
+    beta: float
+
+
+def _inside(f: ChartFrame, x: float, z: float) -> bool:
+    p = f.plot
+    return p.x0 <= x <= p.x1 and p.z0 <= z <= p.z1
+
+
+def _data(f: ChartFrame, x: float, z: float) -> tuple[float, float]:
+    """The chart's data coordinates at page px ``(x, z)`` (the inverse of :meth:`ChartFrame.px_one`)."""
+    (a, b), (c, d) = f.x_range, f.y_range
+    p = f.plot
+    return a + (x - p.x0) * (b - a) / p.width, c + (z - p.z0) * (d - c) / p.height
+
+
+def _clock(t: float, window: tuple[float, float]) -> float:
+    return min(max(t, window[0]), window[1])
+
+
+def press(d: Diagrams, x: float, z: float, now: float) -> Press:
+    """What a press at page px ``(x, z)`` asks for, the clock at ``now`` (module docstring)."""
+    for k in (0, 1):
+        if k >= len(d.frames) or not _inside(d.frames[k], x, z):
+            continue
+        f = d.frames[k]
+        near: list[tuple[float, str]] = []
+        for name, (te, xe) in d.scene.events_in(frame=d.diagram_frames[k]).items():
+            if name in d.cone_events:
+                px, pz = f.px_one(xe, te)
+                near.append((float((px - x) ** 2 + (pz - z) ** 2) ** 0.5, name))
+        hit = min(near, default=None)
+        if hit is not None and hit[0] <= EVENT_REACH_PX:
+            return ChooseCone(None if hit[1] == d.cone else hit[1])
+        t = _data(f, x, z)[1]
+        if k == 0 or abs(f.px_one(0.0, now)[1] - z) <= NOW_REACH_PX:
+            return Scrub(k, _clock(t, d.window))
+        return DragBeta(d.beta, f.plot.width, x)
+    if len(d.frames) > 2 and _inside(d.frames[2], x, z):
+        return Scrub(2, _clock(_data(d.frames[2], x, z)[0], d.window))
+    return None
+
+
+def scrubbed(d: Diagrams, gesture: Scrub, x: float, z: float) -> float:
+    """The time a scrub that started as ``gesture`` reads, the pointer at page px ``(x, z)``
+    (anywhere on the page: a drag may leave its plot; the clock stays in the window)."""
+    f = d.frames[gesture.chart]
+    return _clock(_data(f, x, z)[0 if gesture.chart == 2 else 1], d.window)
+
+
+def dragged_beta(gesture: DragBeta, x: float) -> float:
+    """The β a drag that started as ``gesture`` sets, the pointer at page x ``x``."""
+    lo, hi = CUSTOM_BETA
+    return min(max(gesture.beta + BETA_PER_WIDTH * (x - gesture.x0) / gesture.width, lo), hi)
