@@ -92,13 +92,19 @@ def test_offline_by_keyboard(browser: Any, site: Path, shots: Path) -> None:
         diagram.locator("text=▶ V").first.click(force=True)  # sweeps V: every curve is redrawn
         wait_until(lambda: frame.evaluate(curves) != before, timeout=30)
         page.screenshot(path=str(shots / "step_1.png"), timeout=120_000)
-        # back to the step page itself, then on by clicker, and back
-        page.locator("h1").click()
+        # the clicker's key with the focus still inside the diagram's frame (its slider's play
+        # button was clicked last): the step page around it moves on
+        assert page.evaluate("() => document.activeElement && document.activeElement.tagName") == "IFRAME"
         page.keyboard.press("PageDown")
         arrive("step-02.html")
         page.wait_for_selector("text=It leaves at V′ = 0.6.")
-        page.keyboard.press("PageUp")
+        # a click into the lanes' frame, then ←: back
+        lanes = page.frame_locator("iframe.lanes")
+        lanes.locator("canvas[data-engine]").click(timeout=60_000)
+        assert page.evaluate("() => document.activeElement && document.activeElement.tagName") == "IFRAME"
+        page.keyboard.press("ArrowLeft")
         arrive("step-01.html")
+        page.locator("h1").click()
         page.keyboard.press("Home")
         arrive("index.html")
         assert requests == [], requests

@@ -8,7 +8,8 @@ opened straight from disk. Nothing in it asks the network for anything.
     DIR/plotly.min.js         one copy, shared by every diagram page
 
 Keys on a step page: → / PageDown / Space next, ← / PageUp previous, Home the index (a clicker
-sends PageUp/PageDown). A step page embeds in slides or a Jupyter Book as an iframe
+sends PageUp/PageDown), also with the focus inside its lanes or its diagram (after a click there;
+a control there with the focus keeps the arrows and Space). A step page embeds in slides or a Jupyter Book as an iframe
 (``docs/lessons.md`` has the snippets).
 """
 
@@ -64,15 +65,46 @@ a { color: #4DBFFF; }
 """
 
 _KEYS = """
+function rigidrelGo(key) {
+  var go = null;
+  if (key === "ArrowRight" || key === "PageDown" || key === " ") go = NEXT;
+  else if (key === "ArrowLeft" || key === "PageUp") go = PREV;
+  else if (key === "Home") go = "index.html";
+  if (go) window.location.href = go;
+  return go !== null;
+}
 document.addEventListener("keydown", function (e) {
   if (e.altKey || e.ctrlKey || e.metaKey) return;
-  var go = null;
-  if (e.key === "ArrowRight" || e.key === "PageDown" || e.key === " ") go = NEXT;
-  else if (e.key === "ArrowLeft" || e.key === "PageUp") go = PREV;
-  else if (e.key === "Home") go = "index.html";
-  if (go) { e.preventDefault(); window.location.href = go; }
+  if (rigidrelGo(e.key)) e.preventDefault();
+});
+// a key pressed while the focus is inside one of the step's frames (the lanes, the diagram)
+window.addEventListener("message", function (e) {
+  var ours = Array.prototype.some.call(document.querySelectorAll("iframe"), function (f) {
+    return f.contentWindow === e.source;
+  });
+  if (ours && e.data && typeof e.data.rigidrelKey === "string") rigidrelGo(e.data.rigidrelKey);
 });
 """
+
+#: Put into a step's lanes and diagram pages: a lesson's keys pressed inside the frame reach the step
+#: page around it. The clicker's PageUp, PageDown and Home always; the arrows and Space unless a
+#: control inside the frame has the focus (a slider's handle, a box, a button keep their keys).
+FRAME_KEYS = """<script>
+if (window.parent !== window) document.addEventListener("keydown", function (e) {
+  if (e.altKey || e.ctrlKey || e.metaKey || e.defaultPrevented) return;
+  var t = e.target;
+  var own = t && t.closest && t.closest("input, select, textarea, button, [role=slider], [contenteditable]");
+  var clicker = e.key === "PageDown" || e.key === "PageUp" || e.key === "Home";
+  var page = e.key === "ArrowRight" || e.key === "ArrowLeft" || e.key === " ";
+  if (clicker || (page && !own)) { e.preventDefault(); window.parent.postMessage({ rigidrelKey: e.key }, "*"); }
+});
+</script>"""
+
+
+def with_frame_keys(page: str) -> str:
+    """``page`` (an exported lanes or diagram page) passing a lesson's keys on to the page it is
+    framed in (:data:`FRAME_KEYS`)."""
+    return page.replace("</body>", FRAME_KEYS + "</body>", 1)
 
 
 #: Under the lanes: what their clocks read (each end's proper time, and where it is zero).
@@ -171,8 +203,9 @@ def export_lesson(
     for k, step in enumerate(lesson.steps):
         name = step_name(k)
         resolved = step.resolved
-        write(out / f"{name}-lanes.html", record_lanes_html(build_drawing(resolved), seconds, fps, shade=shade))
+        lanes = record_lanes_html(build_drawing(resolved), seconds, fps, shade=shade)
+        write(out / f"{name}-lanes.html", with_frame_keys(lanes))
         settings = settings_for(resolved.scene, resolved.frame).with_layers(step.layers)
-        write(out / f"{name}-diagram.html", diagram_html(settings, "beside", shade))
+        write(out / f"{name}-diagram.html", with_frame_keys(diagram_html(settings, "beside", shade)))
         write(out / f"{name}.html", _step_page(lesson, k, step, shade))
     return written
