@@ -266,7 +266,7 @@ def test_minkowski_diagrams_carry_worldlines_events_cone_and_axes() -> None:
     ev = np.array(list(scene.events.values()))
     assert np.array_equal(pts.y, ev[:, 0]) and np.array_equal(pts.x, ev[:, 1])
     now = minkowski_now(View(lab, bary, "", "'"), 0.3, 10.0, scene.positions([0.3])[:, :, 0])
-    other_now = next(i for i in now if isinstance(i, Polyline) and i.style.name and "t' = 0.3" in i.style.name)
+    other_now = next(i for i in now if isinstance(i, Polyline) and i.style.name and "t′ = 0.3" in i.style.name)
     # the chosen frame's line of simultaneity t' = 0.3, drawn in the lab
     t_prime = (bary @ np.stack([other_now.y, other_now.x], axis=-1))[:, 0]
     assert np.allclose(t_prime, 0.3, atol=1e-12)
@@ -390,7 +390,7 @@ def test_playback_markers_come_from_the_core() -> None:
     assert events and all((m.symbol, m.style.color) != (events[0].symbol, events[0].style.color) for m in markers)
     names = {e.name for e in d.legend()}
     assert NOW_MARKER_NAME in names and "events" in names
-    assert {n for n in names if n.startswith("now")} == {"now: t", "now: t'"}  # no number in the legend
+    assert {n for n in names if n.startswith("now")} == {"now: t", "now: t′"}  # no number in the legend
 
 
 #: Settings at the sliders' extremes: every lane must keep its rods in view and large enough.
@@ -693,3 +693,22 @@ def test_a_value_for_no_parameter_of_the_scene_is_an_error_not_ignored() -> None
     with pytest.raises(KeyError, match="its parameters: v1, "):
         s.with_value("V1", 0.9)
     assert s.with_value("v1", 0.9).value("v1") == 0.9
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_the_legend_names_each_look_of_a_body_once(kind: str) -> None:
+    """The length panel's lab curve of a rod looks as the rod does on the diagrams (its colour, solid):
+    the legend has it once, under the rod's name; the chosen frame's dashed curve keeps its entry."""
+    r = resolve(Settings(kind))
+    assert isinstance(r, Resolved)
+    entries = build_drawing(r).legend()
+    looks = {e.name: (e.style.color, e.style.dash, e.dot) for e in entries}
+    for e in entries:
+        body = e.name.split(", ")[0]
+        if body != e.name and body in looks:
+            assert looks[body] != looks[e.name], e.name
+    names = [e.name for e in entries]
+    for rod in r.scene.rods:
+        assert rod.name in names and f"{rod.name}, lab (t)" not in names
+        if not r.frame.same_velocity(rr.LAB):
+            assert any(n.startswith(f"{rod.name}, ") and n.endswith("(t′)") for n in names), names

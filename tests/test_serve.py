@@ -208,3 +208,42 @@ def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) 
         monkeypatch.setattr(canvas, "place_labels", lambda *a, **k: placements.append(1) or place(*a, **k))
         session.asks.change(session.state.settings.with_value("v", 0.7))
         assert (len(builds), len(placements)) == (1, 0)
+
+
+def test_pointer_events_are_taken_once_each_in_their_order() -> None:
+    """A report callback reads the report box's newest value, so the same events may come twice and a
+    later report's may come first: each pointer event is taken once, in its order. A click on an
+    event's dot draws its cone; the same report read again does not take it away; a second click does."""
+    import json
+
+    from rigidrel_app.live.runtime import parse_report
+    from rigidrel_app.live.server import App
+    from rigidrel_app.view.scenario import Scenario
+    from rigidrel_app.view.state import Settings
+    from tests.viser_client import light_tab
+
+    with App(port=0, start=Scenario(Settings("rod-collision"))) as app, light_tab(app) as tab:
+        session = tab.session
+        layout, drawn = session.painter.layout, session.painter.drawn
+        assert layout is not None and drawn is not None
+        lab = session.painter.chart_frames[0]
+        name, (t, x) = next(iter(drawn.resolved.scene.events_in().items()))
+        px, pz = lab.px_one(x, t)
+        y = layout.height - pz  # the canvas' CSS px, y down
+
+        def report(run: str, *events: tuple[int, str]) -> None:
+            text = json.dumps({"event": "pointer", "run": run, "events": [
+                {"seq": seq, "phase": phase, "x": px, "y": y} for seq, phase in events]})  # fmt: skip
+            parsed = parse_report(text)
+            assert parsed is not None
+            with session.lock:
+                session.gestures.reported(parsed)
+
+        report("a", (1, "down"), (2, "up"))
+        assert session.state.settings.cone == name
+        report("a", (1, "down"), (2, "up"))  # read again: nothing new
+        assert session.state.settings.cone == name
+        report("a", (1, "down"), (2, "up"), (3, "down"), (4, "up"))
+        assert session.state.settings.cone is None
+        report("b", (1, "down"), (2, "up"))  # a new runtime numbers from 1
+        assert session.state.settings.cone == name

@@ -17,7 +17,7 @@ import pytest
 
 from rigidrel_app.backends._viser import RecordingScene, SceneFold
 from rigidrel_app.backends.viser import PageRenderer
-from rigidrel_app.live.runtime import Report, RuntimeConfig, parse_report, runtime_script
+from rigidrel_app.live.runtime import PointerEvent, Report, RuntimeConfig, parse_report, runtime_script
 from rigidrel_app.live.timeline import (
     QUANTUM,
     Mirror,
@@ -218,14 +218,23 @@ def test_the_mirror_sends_its_nodes_once_and_every_frame_whole(fig3: tuple[Timel
         ('{"event": "paused", "timeline": "ab", "frame": true}', None),
         ('{"event": "paused", "frame": 3}', None),
         ('{"event": "flood"}', None),
-        ('{"event": "pointer", "phase": "down", "x": 12, "y": 30.5}', Report("pointer", phase="down", at=(12.0, 30.5))),
-        ('{"event": "pointer", "phase": "up", "x": -3.5, "y": 0}', Report("pointer", phase="up", at=(-3.5, 0.0))),
-        ('{"event": "pointer", "phase": "hover", "x": 1, "y": 1}', None),
-        ('{"event": "pointer", "phase": "move", "x": "1", "y": 1}', None),
-        ('{"event": "pointer", "phase": "move", "x": true, "y": 1}', None),
-        ('{"event": "pointer", "phase": "move", "x": 1e9, "y": 1}', None),
-        ('{"event": "pointer", "phase": "move", "x": NaN, "y": 1}', None),
-        ('{"event": "pointer", "phase": "move", "x": 1}', None),
+        (
+            '{"event": "pointer", "run": "r1", "events": [{"seq": 1, "phase": "down", "x": 12, "y": 30.5}, '
+            '{"seq": 2, "phase": "up", "x": -3.5, "y": 0}]}',
+            Report(
+                "pointer", pointer=(PointerEvent(1, "down", 12.0, 30.5), PointerEvent(2, "up", -3.5, 0.0)), run="r1"
+            ),
+        ),
+        ('{"event": "pointer", "run": "r1", "events": []}', None),
+        ('{"event": "pointer", "events": [{"seq": 1, "phase": "down", "x": 1, "y": 1}]}', None),
+        ('{"event": "pointer", "run": "r1", "events": [{"seq": 1, "phase": "hover", "x": 1, "y": 1}]}', None),
+        ('{"event": "pointer", "run": "r1", "events": [{"seq": 0, "phase": "down", "x": 1, "y": 1}]}', None),
+        ('{"event": "pointer", "run": "r1", "events": [{"seq": 1, "phase": "down", "x": "1", "y": 1}]}', None),
+        ('{"event": "pointer", "run": "r1", "events": [{"seq": 1, "phase": "down", "x": true, "y": 1}]}', None),
+        ('{"event": "pointer", "run": "r1", "events": [{"seq": 1, "phase": "down", "x": 1e9, "y": 1}]}', None),
+        ('{"event": "pointer", "run": "r1", "events": [{"seq": 1, "phase": "down", "x": NaN, "y": 1}]}', None),
+        ('{"event": "pointer", "run": "r1", "events": [{"seq": 1, "phase": "down", "x": 1}]}', None),
+        ('{"event": "pointer", "run": "r1", "events": [{"seq": 1, "phase": "move", "x": 1, "y": 1}, 5]}', None),
         ("[1, 2]", None),
         ("not json", None),
         ("", None),
@@ -253,3 +262,9 @@ def test_a_ready_report_carries_a_lead_token_only_of_a_sane_length() -> None:
     assert parse_report('{"event": "ready", "lead": ""}') == Report("ready")
     assert parse_report('{"event": "ready", "lead": 5}') == Report("ready")
     assert parse_report(json.dumps({"event": "ready", "lead": "x" * 65})) == Report("ready")
+
+
+def test_a_pointer_report_carries_at_most_its_latest_events() -> None:
+    events = [{"seq": k, "phase": "move", "x": 1, "y": 1} for k in range(1, 18)]
+    assert parse_report(json.dumps({"event": "pointer", "run": "r", "events": events[:16]})) is not None
+    assert parse_report(json.dumps({"event": "pointer", "run": "r", "events": events})) is None

@@ -113,7 +113,7 @@ def test_the_canvas_carries_the_diagrams_event_labels_and_legend(tab: AppPage) -
     assert "Equal-time length (Fig. 2)" in texts
     for label in ("T₁", "T′₁", "T₂", "T′₂"):
         assert sum(t.startswith(label) for t in texts) >= 2, label  # on both Minkowski diagrams
-    for name in ("rod 1", "rod 2", "light cone of the origin", "events", "rods now", "now: t", "now: t'"):
+    for name in ("rod 1", "rod 2", "light cone of the origin", "events", "rods now", "now: t", "now: t′"):
         assert name in texts, name
     assert any("axes of barycentric" in t for t in texts)
     assert {"rod 1, lab (t)", "rod 2, lab (t)"} <= set(texts)

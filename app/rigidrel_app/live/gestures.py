@@ -17,7 +17,7 @@ import rigidrel_core as rr
 from ..view.pointer import ChooseCone, Diagrams, DragBeta, Scrub, dragged_beta, press, scrubbed
 from ..view.state import CUSTOM_FRAME, cone_events
 from .requests import Requests
-from .runtime import Report
+from .runtime import PointerEvent, Report
 from .tab import Tab
 
 
@@ -28,6 +28,8 @@ class Gestures:
         self.tab, self.asks = tab, asks
         self.gesture: Scrub | DragBeta | None = None
         """The drag under way, if any."""
+        self.run, self.seen = "", 0
+        """The runtime whose events these are, and the last of them taken."""
 
     def _diagrams(self) -> Diagrams | None:
         tab = self.tab
@@ -46,20 +48,29 @@ class Gestures:
         )
 
     def reported(self, report: Report) -> None:
-        """A pointer report: a press reads what lies under it, a drag carries its gesture on, a
-        release ends it. Called under the tab's lock, in one batch."""
-        tab, at = self.tab, report.at
+        """A pointer report: each event not seen yet, in its order. Called under the tab's lock, in
+        one batch."""
+        if report.run != self.run:  # a runtime of its own numbers its events from 1
+            self.run, self.seen = report.run, 0
+        for event in report.pointer:
+            if event.seq > self.seen:
+                self.seen = event.seq
+                self._event(event)
+
+    def _event(self, event: PointerEvent) -> None:
+        """A press reads what lies under it, a drag carries its gesture on, a release ends it."""
+        tab = self.tab
         layout = tab.painter.layout
-        if at is None or layout is None:
+        if layout is None:
             return
-        x, z = at[0], layout.height - at[1]  # the canvas' CSS px, y down, to the page's px, z up
-        if report.phase == "up":
+        x, z = event.x, layout.height - event.y  # the canvas' CSS px, y down, to the page's px, z up
+        if event.phase == "up":
             self.gesture = None
             return
         d = self._diagrams()
         if d is None:
             return
-        if report.phase == "down":
+        if event.phase == "down":
             self.gesture = None
             asked = press(d, x, z, tab.state.playback.now)
             if asked is None:

@@ -31,6 +31,8 @@ Phase = Literal["down", "move", "up"]
 PHASES: tuple[Phase, ...] = ("down", "move", "up")
 #: The largest canvas coordinate a pointer report may carry (CSS px).
 POINTER_LIMIT_PX = 100_000.0
+#: The pointer events one report carries at most (the runtime's latest).
+POINTER_EVENTS = 16
 
 
 @dataclass(frozen=True)
@@ -44,14 +46,41 @@ class Report:
     """With ``ready``: the lead token the tab's address carried (``?lead=...``), if any."""
     still: bool = False
     """With ``ready``: the browser asks for reduced motion (``prefers-reduced-motion: reduce``)."""
-    phase: Phase | None = None
-    """With ``pointer``: the pointer went down on the canvas, moved while down, or went up."""
-    at: tuple[float, float] | None = None
-    """With ``pointer``: where, in the canvas' CSS px from its top left corner."""
+    pointer: tuple[PointerEvent, ...] = ()
+    """With ``pointer``: the runtime's latest pointer events, oldest first (the server takes those
+    it has not seen: a callback reads the report control's newest value, which may already be a
+    later report than the one that called it)."""
+    run: str = ""
+    """With ``pointer``: which runtime numbered them (its sequence starts again in a new one)."""
+
+
+@dataclass(frozen=True)
+class PointerEvent:
+    """The pointer went down on the canvas, moved while down, or went up, at ``(x, y)`` in the
+    canvas' CSS px from its top left corner; ``seq`` numbers the runtime's events from 1."""
+
+    seq: int
+    phase: Phase
+    x: float
+    y: float
 
 
 #: The longest lead token a report may carry (the server's are 22 characters).
 LEAD_CHARS = 64
+
+
+def _pointer_event(raw: object) -> PointerEvent | None:
+    """One pointer event of a report, or None if it is not one (any field missing or out of range)."""
+    if not isinstance(raw, dict):
+        return None
+    seq, phase, x, y = raw.get("seq"), raw.get("phase"), raw.get("x"), raw.get("y")
+    numbers = [v for v in (x, y) if isinstance(v, int | float) and not isinstance(v, bool)]
+    in_range = all(-POINTER_LIMIT_PX <= v <= POINTER_LIMIT_PX for v in numbers)  # NaN and inf fail it
+    if not isinstance(seq, int) or isinstance(seq, bool) or seq < 1 or phase not in PHASES:
+        return None
+    if len(numbers) != 2 or not in_range:
+        return None
+    return PointerEvent(seq, phase, float(numbers[0]), float(numbers[1]))
 
 
 def parse_report(text: str) -> Report | None:
@@ -70,15 +99,15 @@ def parse_report(text: str) -> Report | None:
         lead = lead if isinstance(lead, str) and 0 < len(lead) <= LEAD_CHARS else None
         return Report("ready", lead=lead, still=raw.get("still") is True)
     if event == "pointer":
-        phase, x, y = raw.get("phase"), raw.get("x"), raw.get("y")
-        numbers = [v for v in (x, y) if isinstance(v, int | float) and not isinstance(v, bool)]
-        if (
-            phase not in PHASES
-            or len(numbers) != 2
-            or not all(-POINTER_LIMIT_PX <= v <= POINTER_LIMIT_PX for v in numbers)
-        ):
-            return None  # NaN and infinities fail the range too
-        return Report("pointer", phase=phase, at=(float(numbers[0]), float(numbers[1])))
+        run, events = raw.get("run"), raw.get("events")
+        if not isinstance(run, str) or not 0 < len(run) <= LEAD_CHARS or not isinstance(events, list):
+            return None
+        if not 0 < len(events) <= POINTER_EVENTS:
+            return None
+        read = [_pointer_event(e) for e in events]
+        if any(e is None for e in read):
+            return None
+        return Report("pointer", pointer=tuple(e for e in read if e is not None), run=run)
     if not isinstance(timeline, str) or not isinstance(frame, int) or isinstance(frame, bool) or frame < 0:
         return None
     return Report(event, timeline, frame)

@@ -626,12 +626,18 @@ class LegendEntry:
 
 
 def legend_entries(items: Iterable[Item]) -> list[LegendEntry]:
-    """Named items, each name once, in order."""
+    """Named items, each name once, in order; and each look once per body: an entry that draws as
+    an earlier one of the same body does (its colour, dash and dot) is that entry again (the
+    length panel's "rod 1, lab (t)", solid blue, is the diagrams' "rod 1"), so the legend keeps
+    the first and the frames that differ ("rod 1, barycentric (t′)", dashed)."""
     out: dict[str, LegendEntry] = {}
     for it in items:
         if isinstance(it, Label) or it.style.name is None or it.style.name in out:
             continue
         dot = _dot_shape(it.symbol) if isinstance(it, Points) else None
+        body = out.get(it.style.name.split(", ")[0])
+        if body is not None and (body.style.color, body.style.dash, body.dot) == (it.style.color, it.style.dash, dot):
+            continue
         out[it.style.name] = LegendEntry(it.style.name, it.style, dot)
     return list(out.values())
 

@@ -326,14 +326,20 @@ def minkowski_now(view: View, now: float, span: float, ends: FloatArray) -> tupl
     """
     items: list[Item] = [
         Polyline(
-            np.array([-span, span]), np.array([now, now]), Style(INK, 1.2, name=f"now: t{view.prime} = {now:.3g}")
+            np.array([-span, span]),
+            np.array([now, now]),
+            Style(INK, 1.2, name=f"now: t{typeset_prime(view.prime)} = {now:.3g}"),
         ),
     ]
     if view.compares:
         # the other frame's line of simultaneity t_o = now, drawn in this frame
         e = _to_view(view, np.array([[now, -span], [now, span]]))
         items.append(
-            Polyline(e[:, 1], e[:, 0], Style(FRAME_COLOR, 1.2, "dot", name=f"now: t{view.other_prime} = {now:.3g}"))
+            Polyline(
+                e[:, 1],
+                e[:, 0],
+                Style(FRAME_COLOR, 1.2, "dot", name=f"now: t{typeset_prime(view.other_prime)} = {now:.3g}"),
+            )
         )
     now_style = Style(INK, name=ENDS_NOW_NAME, group="ends-now")
     items.append(Points(ends.ravel(), np.full(ends.size, now), now_style, size=11, symbol=ENDS_NOW_SYMBOL))

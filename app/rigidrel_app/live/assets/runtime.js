@@ -14,6 +14,7 @@
   const FRAME_RATE = CONFIG.frameRate; // timeline frames per second of playback at speed 1
   const CLOCK_HZ = 10; // the time controls follow playback at this rate
   const POINTER_MS = 50; // a drag is reported at most this often (as viser sends a dragged slider)
+  const POINTER_EVENTS = 16; // a report carries the latest this many pointer events
   const win = window;
   if (win.__rigidrelPlayback) win.__rigidrelPlayback.dispose();
 
@@ -235,10 +236,20 @@
         const r = canvas.getBoundingClientRect();
         return { x: e.clientX - r.left, y: e.clientY - r.top };
       };
+      // each report carries the latest events, numbered: the server takes those it has not seen
+      // (it reads the report box's newest value, which a later report may already have replaced)
+      const run = Math.random().toString(36).slice(2, 12);
+      const log = [];
+      let seq = 0;
+      const send = (phase, where) => {
+        log.push({ seq: ++seq, phase, x: where.x, y: where.y });
+        if (log.length > POINTER_EVENTS) log.shift();
+        this.report({ event: "pointer", run, events: log });
+      };
       const flush = () => {
         timer = null;
         if (!pending) return;
-        this.report({ event: "pointer", phase: "move", ...pending });
+        send("move", pending);
         pending = null;
         last = performance.now();
       };
@@ -250,7 +261,7 @@
         if (e.button !== 0 || down !== null) return;
         down = e.pointerId;
         canvas.setPointerCapture(e.pointerId);
-        this.report({ event: "pointer", phase: "down", ...at(e) });
+        send("down", at(e));
         last = performance.now();
       });
       on("pointermove", (e) => {
@@ -265,7 +276,7 @@
         down = null;
         if (timer !== null) clearTimeout(timer);
         flush();
-        this.report({ event: "pointer", phase: "up", ...at(e) });
+        send("up", at(e));
       };
       on("pointerup", up);
       on("pointercancel", up);
