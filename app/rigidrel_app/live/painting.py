@@ -28,6 +28,7 @@ import numpy.typing as npt
 from ..backends._viser import RecordingScene, SceneFold
 from ..backends.viser import SHARED_ROOT, PageRenderer
 from ..view.canvas import ChartFrame, PagePicture, legend_rows, still_picture
+from ..view.headline import headline
 from ..view.layout import LEGEND_ROWS, CanvasLayout, Theme, canvas_layout, title_lines_needed, titles_fit_one_line
 from ..view.scene_view import Drawn, build_drawing
 from ..view.state import Resolved, Settings
@@ -166,6 +167,9 @@ def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND
         drawn = draw(final)
         legend = drawn.legend()
     chart_frames, picture = still_picture(drawn.charts, final.charts, legend, final.legend, final.theme)
+    named = headline(key.settings, [titles[0] for titles in ends], final.lanes[0], final.theme.title_px)
+    if named is not None:  # the scene and its parameters, where the lab lane's first line leaves room
+        picture = picture + PagePicture(texts=(named,))
     return Painting(key, resolved, drawn, final, rows, title_lines, tuple(chart_frames), picture)
 
 

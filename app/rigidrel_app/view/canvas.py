@@ -23,7 +23,7 @@ from .placement import AXIS_NAME_DROP_EM, AXIS_NAME_INSET_PX, place_labels
 from .vocabulary import Area, Chart, Dash, Item, Label, Points, Polyline, Segments, Style, rgb, unicode_subscript
 
 FloatArray = npt.NDArray[np.float64]
-Anchor = Literal["center-left", "center-right", "center-center", "top-left", "top-center", "bottom-left"]
+Anchor = Literal["center-left", "center-right", "center-center", "top-left", "top-center", "top-right", "bottom-left"]
 DotShape = Literal["circle", "diamond", "square"]
 
 #: Dash patterns (on, off, on, off, ... in px at line width 2), as plotly draws them.
