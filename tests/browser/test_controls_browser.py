@@ -148,8 +148,6 @@ def test_the_mouse_scrubs_the_clock_chooses_a_cone_and_drags_beta(collision: App
     of the plot's width dragged. The camera never moves."""
     tab = collision
     s = tab.session
-    camera = s.client.camera
-    pose = camera.position.copy()
     canvas = tab.page.locator("canvas[data-engine]").bounding_box()
     assert canvas is not None
     # the page laid out for the canvas as it is (a tab's first layout is for the size first reported)
@@ -160,6 +158,9 @@ def test_the_mouse_scrubs_the_clock_chooses_a_cone_and_drags_beta(collision: App
             and abs(s.painter.layout.height - canvas["height"]) < 1
         )
     )
+    camera = s.client.camera  # as the browser reports it, once it looks at that page's centre
+    wait_until(lambda: abs(camera.position[0] - 0.5 * canvas["width"]) < 1)
+    pose = camera.position.copy()
 
     def mouse_at(px: float, pz: float) -> tuple[float, float]:  # a page point (z up) under the mouse
         col, row = tab.page_to_pixel(px, pz)
