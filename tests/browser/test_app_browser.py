@@ -251,6 +251,20 @@ def measured_rods(tab: AppPage, img: np.ndarray) -> list[list[tuple[int, int]]]:
     return out
 
 
+def rods_drawn(tab: AppPage, timeout: float = 30.0) -> list[list[tuple[int, int]]]:
+    """:func:`measured_rods` on the canvas once every rod is where its lane puts it now: the still
+    picture and the instant's frame reach the canvas one after the other, and a canvas that held
+    still between the two shows the new page with the old rods, or none."""
+
+    def drawn() -> list[list[tuple[int, int]]] | None:
+        try:
+            return measured_rods(tab, tab.canvas())
+        except AssertionError:
+            return None
+
+    return wait_until(drawn, timeout=timeout, interval=0.2)
+
+
 # ====================================================================== tests
 def test_page_loads_and_renders(tab: AppPage, shots: Path) -> None:
     def drawn() -> tuple[int, int] | None:

@@ -19,7 +19,7 @@ import pytest
 
 import rigidrel_core as rr
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings
-from tests.browser.test_app_browser import PIXEL_TOLERANCE, AppPage, measured_rods, show, tab_on_own_server
+from tests.browser.test_app_browser import PIXEL_TOLERANCE, AppPage, rods_drawn, show, tab_on_own_server
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
@@ -51,9 +51,9 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     show(tab, settings, now)
     scene = tab.session.painter.drawn.resolved.scene  # type: ignore[union-attr]
     frame = tab.session.painter.drawn.resolved.frame  # type: ignore[union-attr]
-    img = tab.canvas_after(default_scene)
+    tab.canvas_after(default_scene)
+    found = rods_drawn(tab)
     tab.page.screenshot(path=str(shots / "collision_beta_0.8_t_0.4.png"))
-    found = measured_rods(tab, img)
     separation = []
     for lane, runs, lane_frame in zip(tab.session.painter.renderer_lanes, found, (rr.LAB, frame), strict=True):
         x = scene.positions(np.array([now]), frame=lane_frame)[:, :, 0]
@@ -93,12 +93,13 @@ def test_rods_stay_large_at_the_sliders_extremes(
     d = build_drawing_for(settings)
     now = d.window[0] + fraction * (d.window[1] - d.window[0])
     show(tab, settings, now)
-    img = tab.canvas_after(before)
+    tab.canvas_after(before)
+    measured = rods_drawn(tab)
     tab.page.screenshot(path=str(shots / f"{name}.png"))
     layout = tab.session.painter.layout
     assert layout is not None
     rest = np.array([rod.motion.length for rod in d.resolved.scene.rods])
-    for place, runs in zip(layout.lanes, measured_rods(tab, img), strict=True):
+    for place, runs in zip(layout.lanes, measured, strict=True):
         for r, (a, b) in enumerate(runs):
             need = max(min(LEGIBLE_SHARE * rest[r] / rest.max() * place.track.width, 12.0), 8.0)
             assert b - a >= need, (name, r, b - a, need)

@@ -15,7 +15,7 @@ import pytest
 from rigidrel_app.view.comoving import RidePoint
 from rigidrel_app.view.state import RIDE_FRAME, Settings
 from rigidrel_app.view.vocabulary import LIGHT_COLOR
-from tests.browser.test_app_browser import PIXEL_TOLERANCE, AppPage, measured_rods, show
+from tests.browser.test_app_browser import PIXEL_TOLERANCE, AppPage, rods_drawn, show
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
@@ -42,8 +42,8 @@ def test_the_riding_lane_keeps_the_rod_at_rest_length(tab: AppPage, shots: Path)
         tab.type_into_slider("t, t'", now)
         wait_until(lambda now=now: abs(tab.session.state.playback.now - now) < 1e-9, timeout=60)
         img = tab.canvas_after(img)
+        lab, riding = rods_drawn(tab)
         tab.page.screenshot(path=str(shots / f"riding_back_end_t_{now}.png"))
-        lab, riding = measured_rods(tab, img)
         lane = tab.session.painter.renderer_lanes[1]
         expected = 1.0 * lane.scale  # the rest length, L0 = 1, in this lane's pixels
         (a, b) = riding[0]
