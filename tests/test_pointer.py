@@ -9,6 +9,7 @@ import pytest
 
 import rigidrel_core as rr
 from rigidrel_app.live.painting import PaintingKey, paint
+from rigidrel_app.live.playback import Playback
 from rigidrel_app.view.layout import NORMAL
 from rigidrel_app.view.pointer import (
     BETA_PER_WIDTH,
@@ -28,8 +29,13 @@ def _diagrams(settings: Settings, cone: str | None = None) -> Diagrams:
     r = resolve(settings)
     assert isinstance(r, Resolved)
     painting = paint(r, PaintingKey(settings, 960, 720, NORMAL))
-    window = painting.drawn.window
-    return Diagrams(painting.chart_frames, (rr.LAB, r.frame), r.scene, cone_events(r.scene), cone, window, r.frame.beta)
+    return Diagrams(painting.chart_frames, (rr.LAB, r.frame), r.scene, cone_events(r.scene), cone, r.frame.beta)
+
+
+def _window(settings: Settings) -> tuple[float, float]:
+    r = resolve(settings)
+    assert isinstance(r, Resolved)
+    return paint(r, PaintingKey(settings, 960, 720, NORMAL)).drawn.window
 
 
 FIG3 = Settings("rod-collision")
@@ -53,9 +59,9 @@ def test_a_press_on_an_events_dot_chooses_its_cone_and_a_second_takes_it_away() 
 
 
 def test_a_press_on_the_lab_diagram_or_the_length_panel_scrubs_to_the_time_under_it() -> None:
-    d = _diagrams(FIG3)
+    d, window = _diagrams(FIG3), _window(FIG3)
     lab, panel = d.frames[0], d.frames[2]
-    t = 0.5 * (d.window[0] + d.window[1]) + 0.1
+    t = 0.5 * (window[0] + window[1]) + 0.1
     x_free = lab.x_range[0] + 0.02 * (lab.x_range[1] - lab.x_range[0])  # the plot's left edge: no event there
     px, pz = lab.px_one(x_free, t)
     asked = press(d, px, pz, 0.0)
@@ -63,15 +69,20 @@ def test_a_press_on_the_lab_diagram_or_the_length_panel_scrubs_to_the_time_under
     qx, qz = panel.px_one(t, panel.y_range[0] + 0.95 * (panel.y_range[1] - panel.y_range[0]))
     asked = press(d, qx, qz, 0.0)
     assert isinstance(asked, Scrub) and asked.chart == 2 and asked.time == pytest.approx(t, abs=1e-12)
-    # dragged beyond the plot, the clock stays in the window
-    assert scrubbed(d, Scrub(0, t), px, lab.plot.z1 + 500.0) == d.window[1]
-    assert scrubbed(d, Scrub(2, t), panel.plot.x0 - 500.0, qz) == d.window[0]
+    # dragged beyond the plot: a time beyond the window, which the tab's clock keeps to its ends
+    later, earlier = (
+        scrubbed(d, Scrub(0, t), px, lab.plot.z1 + 500.0),
+        scrubbed(d, Scrub(2, t), panel.plot.x0 - 500.0, qz),
+    )
+    assert later > window[1] and earlier < window[0]
+    clock = Playback.start(window)
+    assert (clock.seek(later).now, clock.seek(earlier).now) == (window[1], window[0])
 
 
 def test_the_chosen_frames_now_line_scrubs_and_elsewhere_a_drag_sets_beta_in_the_sliders_range() -> None:
-    d = _diagrams(FIG3)
+    d, window = _diagrams(FIG3), _window(FIG3)
     f = d.frames[1]
-    now = 0.5 * (d.window[0] + d.window[1])
+    now = 0.5 * (window[0] + window[1])
     x_free = f.x_range[0] + 0.02 * (f.x_range[1] - f.x_range[0])
     px, pz = f.px_one(x_free, now)
     on_line = press(d, px, pz + 3.0, now)

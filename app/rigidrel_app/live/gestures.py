@@ -43,7 +43,6 @@ class Gestures:
             r.scene,
             cone_events(r.scene),
             state.shown.cone,
-            state.playback.window,
             r.frame.beta,
         )
 

@@ -115,6 +115,12 @@ class ChartFrame:
         p = self.plot
         return p.x0 + (float(x) - a) * (p.width / (b - a)), p.z0 + (float(y) - c) * (p.height / (d - c))
 
+    def data_one(self, px: float, pz: float) -> tuple[float, float]:
+        """The data coordinates at page px ``(px, pz)``: the inverse of :meth:`px_one`."""
+        (a, b), (c, d) = self.x_range, self.y_range
+        p = self.plot
+        return a + (px - p.x0) * (b - a) / p.width, c + (pz - p.z0) * (d - c) / p.height
+
     def px(self, x: FloatArray, y: FloatArray) -> tuple[FloatArray, FloatArray]:
         (a, b), (c, d) = self.x_range, self.y_range
         p = self.plot

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import rigidrel_core as rr
 
 from .diagrams import frame_title
-from .objects import object_words
+from .objects import object_words_at
 from .signals import verdict_lines
 from .state import Resolved, format_value
 
@@ -75,14 +75,8 @@ def _lane(scene: rr.Scene, frame: rr.Frame, now: float, name: str) -> str:
             f"{rod.name} from x{prime} = {_number(x[k, 0])} to {_number(x[k, 1])}, length {_number(lengths[k])}, "
             f"{accel}, its clocks reading {_number(tau[k, 0])} (left) and {_number(tau[k, 1])} (right)"
         )
-    things = [_object_words(o, frame, now) for o in scene.objects]  # the door open or closed, the string
+    things = [object_words_at(o, frame, now) for o in scene.objects]  # the door open or closed, the string
     return f"The {name} lane at t{prime} = {_number(now)}: " + "; ".join(rods + [t for t in things if t]) + "."
-
-
-def _object_words(obj: rr.SceneObject, frame: rr.Frame, now: float) -> str:
-    """What the lane's title says of ``obj`` at ``now`` of ``frame`` (:func:`.objects.object_words`)."""
-    value = None if obj.field is None else float(obj.field.values([now], frame=frame)[0])
-    return object_words(obj, value, bool(obj.happened([now], frame=frame)[0]))
 
 
 def _passed(scene: rr.Scene, frame: rr.Frame, now: float, name: str) -> str:

@@ -85,6 +85,13 @@ def _amount(field: rr.ObjectField, value: float, spec: str) -> str:
     return f"{100.0 * value:{spec}} %" if field.percent else f"{value:{spec}}"
 
 
+def object_words_at(obj: rr.SceneObject, frame: rr.Frame, now: float) -> str:
+    """:func:`object_words` at time ``now`` of ``frame``, its field's value and its event's having
+    happened taken from the core (what a lane's title says of ``obj`` then)."""
+    value = None if obj.field is None else float(obj.field.values([now], frame=frame)[0])
+    return object_words(obj, value, bool(obj.happened([now], frame=frame)[0]))
+
+
 def object_words(obj: rr.SceneObject, value: float | None, happened: bool) -> str:
     """What a lane's title says of ``obj`` at an instant: its field's ``value``, the frame it is measured
     in, and the colours' key (``"string strain 22.0 % in the rear ship's comoving frame (faint → strong:

@@ -7,8 +7,8 @@ On a press, by what lies under it (page px, z up, as :mod:`.canvas` lays the pag
 - an event's dot on a Minkowski diagram (within :data:`EVENT_REACH_PX`): the light cone of that
   event, or none if it is the one drawn (:class:`ChooseCone`);
 - elsewhere on the lab's diagram, or on the length panel: the clock jumps to the time under the
-  pointer, and follows it while dragged (:class:`Scrub`; the diagram's vertical axis is t, the
-  panel's horizontal one);
+  pointer (kept in the playback window by the clock itself), and follows it while dragged
+  (:class:`Scrub`; the diagram's vertical axis is t, the panel's horizontal one);
 - on the chosen frame's diagram, the now-line (within :data:`NOW_REACH_PX`) scrubs as well; a drag
   anywhere else there changes the frame's velocity β, one unit of β per :data:`BETA_PER_WIDTH` of
   the plot's width, kept to the β slider's range (:class:`DragBeta`);
@@ -64,32 +64,20 @@ Press = ChooseCone | Scrub | DragBeta | None
 @dataclass(frozen=True)
 class Diagrams:
     """What a press is read against: the charts on the page (lab diagram, chosen frame's diagram,
-    length panel), the frame of each diagram, the events that may have a cone drawn, the one drawn,
-    the playback window and the chosen frame's β now."""
+    length panel), the frame of each diagram, the events that may have a cone drawn, the one drawn
+    and the chosen frame's β now."""
 
     frames: Sequence[ChartFrame]
     diagram_frames: tuple[rr.Frame, rr.Frame]
     scene: rr.Scene
     cone_events: tuple[str, ...]
     cone: str | None
-    window: tuple[float, float]
     beta: float
 
 
 def _inside(f: ChartFrame, x: float, z: float) -> bool:
     p = f.plot
     return p.x0 <= x <= p.x1 and p.z0 <= z <= p.z1
-
-
-def _data(f: ChartFrame, x: float, z: float) -> tuple[float, float]:
-    """The chart's data coordinates at page px ``(x, z)`` (the inverse of :meth:`ChartFrame.px_one`)."""
-    (a, b), (c, d) = f.x_range, f.y_range
-    p = f.plot
-    return a + (x - p.x0) * (b - a) / p.width, c + (z - p.z0) * (d - c) / p.height
-
-
-def _clock(t: float, window: tuple[float, float]) -> float:
-    return min(max(t, window[0]), window[1])
 
 
 def press(d: Diagrams, x: float, z: float, now: float) -> Press:
@@ -106,20 +94,19 @@ def press(d: Diagrams, x: float, z: float, now: float) -> Press:
         hit = min(near, default=None)
         if hit is not None and hit[0] <= EVENT_REACH_PX:
             return ChooseCone(None if hit[1] == d.cone else hit[1])
-        t = _data(f, x, z)[1]
         if k == 0 or abs(f.px_one(0.0, now)[1] - z) <= NOW_REACH_PX:
-            return Scrub(k, _clock(t, d.window))
+            return Scrub(k, f.data_one(x, z)[1])
         return DragBeta(d.beta, f.plot.width, x)
     if len(d.frames) > 2 and _inside(d.frames[2], x, z):
-        return Scrub(2, _clock(_data(d.frames[2], x, z)[0], d.window))
+        return Scrub(2, d.frames[2].data_one(x, z)[0])
     return None
 
 
 def scrubbed(d: Diagrams, gesture: Scrub, x: float, z: float) -> float:
     """The time a scrub that started as ``gesture`` reads, the pointer at page px ``(x, z)``
-    (anywhere on the page: a drag may leave its plot; the clock stays in the window)."""
-    f = d.frames[gesture.chart]
-    return _clock(_data(f, x, z)[0 if gesture.chart == 2 else 1], d.window)
+    (anywhere on the page: a drag may leave its plot; the tab's clock keeps the time in its window
+    as it does a typed one)."""
+    return d.frames[gesture.chart].data_one(x, z)[0 if gesture.chart == 2 else 1]
 
 
 def dragged_beta(gesture: DragBeta, x: float) -> float:
