@@ -31,7 +31,10 @@ def per_frame_ms(preset: str, layers: frozenset[Layer]) -> tuple[float, float]:
     r = resolve(presets()[preset].with_layers(layers))
     assert isinstance(r, Resolved), r
     d = build_drawing(r, areas=layout.chart_areas)
-    frames = [chart_picture(c, p, layout.theme)[0] for c, p in zip(d.charts, layout.charts, strict=True)]
+    frames = [
+        None if p is None else chart_picture(c, p, layout.theme)[0]
+        for c, p in zip(d.charts, layout.charts, strict=True)
+    ]
 
     def draw(now: float) -> None:
         lanes = d.lane_pictures(now, layout)

@@ -33,6 +33,7 @@ from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, 
 from rigidrel_app.view.lanes import ROD_SHARE, TICK_FRACTIONS, lane_geometry, lane_state
 from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.layout import (
+    ALL_PANELS,
     LEGEND_ROWS,
     MIN_PLOT_PX,
     MIN_TEXT_PX,
@@ -454,17 +455,17 @@ def test_the_canvas_layout_keeps_text_large_and_regions_apart() -> None:
         assert theme.text_px >= 14.0 and theme.title_px >= theme.text_px and theme.line_px >= 2.0
         lab, frame = layout.lanes
         assert lab.band.z0 > frame.band.z1  # the lanes do not overlap
-        top_of_charts = max(c.outer.z1 for c in layout.charts)
-        assert frame.band.z0 > top_of_charts and min(c.outer.z0 for c in layout.charts) > layout.legend.z1
+        top_of_charts = max(c.outer.z1 for c in layout.shown_charts)
+        assert frame.band.z0 > top_of_charts and min(c.outer.z0 for c in layout.shown_charts) > layout.legend.z1
         for lane in layout.lanes:  # title above the dials above the rod above the ruler, the wall below the title
             assert lane.title_z - 2.4 * theme.title_px > lane.dial_z[1] + lane.clock_px
             assert lane.dial_z[0] - lane.clock_px > lane.rod_z + 0.5 * lane.rod_px
             assert lane.rod_z - lane.rod_px / 2 - lane.wall_px + lane.wall_px <= lane.dial_z[1] + lane.clock_px + 1e-9
             assert lane.ruler_z < lane.rod_z - 0.5 * lane.rod_px
             assert lane.ruler_z - lane.tick_px - 1.3 * theme.text_px >= lane.band.z0 - 1e-9
-        for a, b in zip(layout.charts, layout.charts[1:]):
+        for a, b in zip(layout.shown_charts, layout.shown_charts[1:]):
             assert a.outer.x1 < b.outer.x0
-        assert all(c.plot.width > 150 and c.plot.height > 120 for c in layout.charts), (w, h, theme.name)
+        assert all(c.plot.width > 150 and c.plot.height > 120 for c in layout.shown_charts), (w, h, theme.name)
 
 
 @pytest.mark.parametrize(("w", "h"), [(1280, 624), (1280, 594), (1280, 560), (936, 590)])
@@ -472,17 +473,17 @@ def test_a_short_canvas_puts_lane_titles_on_one_line_then_steps_the_text_down(w:
     """Under a lesson's caption at 1280x720 the diagrams still get MIN_PLOT_PX of height: the lanes'
     titles take one line first, then the text takes the desk sizes (never under MIN_TEXT_PX)."""
     for theme in (NORMAL, PRESENTER):
-        full = _canvas_layout(w, h, theme, LEGEND_ROWS, 2)
+        full = _canvas_layout(w, h, theme, LEGEND_ROWS, 2, ALL_PANELS)
         layout = canvas_layout(w, h, theme)
-        if full.charts[0].plot.height >= MIN_PLOT_PX:
+        if full.lab_chart.plot.height >= MIN_PLOT_PX:
             assert layout == full
             continue
-        assert layout.charts[0].plot.height >= MIN_PLOT_PX, (w, h, theme.name)
+        assert layout.lab_chart.plot.height >= MIN_PLOT_PX, (w, h, theme.name)
         assert all(lane.title_lines == 1 for lane in layout.lanes)
         assert layout.theme.text_px >= MIN_TEXT_PX and layout.theme.line_px == theme.line_px
         assert layout.theme.name == theme.name and layout.theme.shade == theme.shade
         lab, frame = layout.lanes
-        assert lab.band.z0 > frame.band.z1 and frame.band.z0 > max(c.outer.z1 for c in layout.charts)
+        assert lab.band.z0 > frame.band.z1 and frame.band.z0 > max(c.outer.z1 for c in layout.shown_charts)
         for lane in layout.lanes:  # one title line above the dials
             assert lane.title_z - 1.2 * layout.theme.title_px > lane.dial_z[1] + lane.clock_px
 
@@ -525,7 +526,7 @@ def test_chart_pictures_stay_in_their_plots_at_light_speed_45_degrees(settings: 
     assert isinstance(r, Resolved)
     layout = canvas_layout(936, 720)
     d = build_drawing(r, areas=layout.chart_areas)
-    for chart, place in zip(d.charts, layout.charts, strict=True):
+    for chart, place in zip(d.charts, layout.shown_charts, strict=True):
         f, picture = chart_picture(chart, place, NORMAL)
         p = f.plot
         curves = [ln for ln in picture.lines if ln.layer >= CURVES]
@@ -554,7 +555,7 @@ def test_the_now_lines_sit_at_the_lanes_time() -> None:
     now = 0.37
     lanes = d.lane_pictures(now, layout)
     assert lanes[0].title.startswith(f"lab frame:   t = {now:+.3f}")
-    for items, chart, place in zip(d.moving_items(now, [lane.ends for lane in lanes]), d.charts, layout.charts):
+    for items, chart, place in zip(d.moving_items(now, [lane.ends for lane in lanes]), d.charts, layout.shown_charts):
         f, _ = chart_picture(chart, place, NORMAL)
         now_line = items_picture(tuple(items)[:1], f, NORMAL, MOVING)  # the first moving item
         _, z_now = f.px(np.array([0.0]), np.array([now]))
@@ -610,7 +611,7 @@ def test_separate_segments_are_stroked_as_one_by_one(kind: str) -> None:
     layout = canvas_layout(936, 720)
     d = build_drawing(r, areas=layout.chart_areas)
     checked = 0
-    for chart, place in zip(d.charts, layout.charts, strict=True):
+    for chart, place in zip(d.charts, layout.shown_charts, strict=True):
         f = canvas.chart_frame(chart, place.plot)
         for it in chart.items:
             if not isinstance(it, Segments):
@@ -672,7 +673,7 @@ def test_a_run_of_solid_curves_is_stroked_as_each_alone(kind: str) -> None:
         return pts, colors, keys
 
     runs = 0
-    for chart, place in zip(d.charts, layout.charts, strict=True):
+    for chart, place in zip(d.charts, layout.shown_charts, strict=True):
         f = canvas.chart_frame(chart, place.plot)
         together = canvas.items_picture(chart.items, f, NORMAL)
         alone = [canvas.items_picture((it,), f, NORMAL) for it in chart.items]

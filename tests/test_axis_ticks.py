@@ -18,6 +18,7 @@ from rigidrel_app.view.canvas import MIN_AXIS_TICKS, chart_picture, nice_ticks
 from rigidrel_app.view.layout import NORMAL, PRESENTER, CanvasLayout, Theme, canvas_layout
 from rigidrel_app.view.scene_view import Drawn, build_drawing
 from rigidrel_app.view.state import Settings, build, presets
+from tests.viser_client import shown
 
 #: A desk's canvas (the panel docked at 1280x720) and a projector's.
 CANVASES: tuple[tuple[float, float, Theme], ...] = ((936, 720, NORMAL), (1280, 720, PRESENTER))
@@ -35,8 +36,8 @@ def _drawn(settings: Settings, layout: CanvasLayout) -> Drawn:
 
 def _axis_numbers(chart_index: int, d: Drawn, layout: CanvasLayout) -> tuple[list[float], list[float]]:
     """The numbers a diagram's x axis (below the plot) and t axis (left of it) carry on the canvas."""
-    _, picture = chart_picture(d.charts[chart_index], layout.charts[chart_index], layout.theme)
-    plot = layout.charts[chart_index].plot
+    _, picture = chart_picture(d.charts[chart_index], shown(layout.charts[chart_index]), layout.theme)
+    plot = shown(layout.charts[chart_index]).plot
     xs, ts = [], []
     for t in picture.texts:
         if not re.fullmatch(r"-?\d+(\.\d+)?", t.text):

@@ -81,6 +81,15 @@ def test_the_summary_names_the_scene_its_parameters_and_both_frames() -> None:
     assert d.full.splitlines()[:2] == [d.scene, d.frames]
 
 
+def test_a_lab_step_is_said_as_its_one_lane() -> None:
+    """The chosen frame the lab's own: the canvas shows one lane (and one diagram), and says so."""
+    r = resolve(Settings("wall-collision", frame="lab"))
+    assert isinstance(r, Resolved) and r.lab_only
+    d = describe(r, 0.0)
+    assert "One lane: the lab frame" in d.summary and "Lower lane" not in d.full
+    assert len(d.lanes) == len(d.events) == 1 and d.lanes[0].startswith("The lab lane")
+
+
 def test_rigidrel_describe_prints_it_and_refuses_a_bad_time(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["describe", "impulsive-start", "--v", "0.8", "--at", "0.25"]) == 0
     out = capsys.readouterr().out

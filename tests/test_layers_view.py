@@ -10,21 +10,21 @@ import numpy as np
 import pytest
 
 import rigidrel_core as rr
-from rigidrel_app.view.canvas import chart_frame, chart_picture
+from rigidrel_app.view.canvas import chart_frame, still_picture
 from rigidrel_app.view.layers import DEFAULT_LAYERS, Layer
 from rigidrel_app.view.layout import canvas_layout
 from rigidrel_app.view.placement import Box, _to_px, label_box, overlaps, place_labels
 from rigidrel_app.view.scene_view import (
-    LENGTH_HIDDEN_NOTE,
-    LENGTH_HIDDEN_TITLE,
     Drawn,
     build_drawing,
+    panels,
     readout_markdown,
     signals_readout,
 )
 from rigidrel_app.view.signals import GROUP, verdict_lines
 from rigidrel_app.view.state import CUSTOM_FRAME, Resolved, Settings, presets, resolve
 from rigidrel_app.view.vocabulary import LIGHT_COLOR, Area, Item, Label, Points, Polyline, Segments
+from tests.viser_client import shown
 
 LAYOUT = canvas_layout(1280, 720)
 CRASH = presets()["Sec. 5: crash into a wall, V = 0.6"]
@@ -66,14 +66,17 @@ def test_world_tubes_and_interior_lines_are_separate_layers() -> None:
     assert counts(DEFAULT_LAYERS - {Layer.WORLD_TUBE, Layer.INTERIOR_LINES}) == (0, 0)
 
 
-def test_the_length_panel_hidden_is_a_note_without_axes() -> None:
+def test_the_length_panel_hidden_gives_its_room_to_the_diagrams() -> None:
     d = drawn(CRASH, DEFAULT_LAYERS - {Layer.LENGTH_PANEL})
-    assert d.length_chart.title == LENGTH_HIDDEN_TITLE
-    assert [it.text for it in d.length_chart.items if isinstance(it, Label)] == [LENGTH_HIDDEN_NOTE]
-    assert d.moving_items(0.3, [np.zeros((1, 2))] * 2)[2] == ()
-    _, picture = chart_picture(d.length_chart, LAYOUT.charts[2], LAYOUT.theme)
-    assert picture.lines == () and picture.dots == ()  # no axes, grid or ticks
-    assert {t.text for t in picture.texts} == {LENGTH_HIDDEN_TITLE, LENGTH_HIDDEN_NOTE}
+    assert d.length_chart.items == () and d.moving_items(0.3, [np.zeros((1, 2))] * 2)[2] == ()
+    layout = canvas_layout(LAYOUT.width, LAYOUT.height, LAYOUT.theme, panels=panels(d.resolved))
+    assert layout.charts[2] is None and len(layout.lanes) == 2
+    lab, chosen = (shown(c) for c in layout.charts[:2])
+    assert lab.outer.width == pytest.approx(chosen.outer.width)
+    assert lab.outer.width > 1.4 * shown(LAYOUT.charts[0]).outer.width
+    assert chosen.outer.x1 == pytest.approx(shown(LAYOUT.charts[2]).outer.x1)
+    frames, picture = still_picture(d.charts, layout.charts, [], layout.legend, layout.theme)
+    assert frames[2] is None and not [t for t in picture.texts if t.text.startswith("Equal-time length")]
 
 
 def test_simultaneity_hidden_leaves_no_now_lines() -> None:
@@ -124,7 +127,7 @@ def test_signals_are_drawn_in_both_diagrams_only_when_asked_for() -> None:
 def test_no_label_overprints_another_with_the_signals(settings: Settings, frame: str | None, beta: float) -> None:
     s = replace(settings, frame=CUSTOM_FRAME if beta else frame, beta=beta)
     d = drawn(s, ALL)
-    for chart, place in zip(d.charts[:2], LAYOUT.charts[:2], strict=True):
+    for chart, place in zip(d.charts[:2], LAYOUT.shown_charts[:2], strict=True):
         assert overlaps(chart) == []
         assert chart.area_px is not None
         # and as the canvas places them again for its plot area
@@ -179,7 +182,7 @@ def test_no_label_covers_a_marker_as_the_canvas_draws_it(size: tuple[float, floa
     r = resolve(s)
     assert isinstance(r, Resolved)
     d = build_drawing(r, areas=layout.chart_areas)
-    for chart, place in zip(d.charts[:2], layout.charts[:2], strict=True):
+    for chart, place in zip(d.charts[:2], layout.shown_charts[:2], strict=True):
         f = chart_frame(chart, place.plot)
         area = (f.plot.width, f.plot.height)
         placed = place_labels(chart, area)

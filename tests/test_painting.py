@@ -5,17 +5,19 @@ one painting per canvas size."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
 import pytest
 
-from rigidrel_app.backends.viser import SHARED_ROOT
+from rigidrel_app.backends.viser import SHARED_ROOT, shared_root
+from rigidrel_app.live.controls import caption_reserve
 from rigidrel_app.live.painting import PaintingCache, PaintingKey, paint
 from rigidrel_app.live.timeline import TimelineKey, record_timeline
 from rigidrel_app.view.layers import Layer
-from rigidrel_app.view.layout import LEGEND_ROWS, NORMAL, PRESENTER
-from rigidrel_app.view.state import Resolved, Settings, resolve
+from rigidrel_app.view.layout import LEGEND_ROWS, MIN_PLOT_PX, NORMAL, PRESENTER, Theme, canvas_layout
+from rigidrel_app.view.state import CUSTOM_FRAME, Resolved, Settings, resolve
 from tests.test_timeline import read_payload, same
 
 
@@ -96,6 +98,56 @@ def test_a_frame_is_the_moving_parts_as_the_timeline_draws_them(settings: Settin
             if key[-1].startswith("batched_"):  # the timeline reserves instances for its busiest frame
                 theirs_value = np.asarray(theirs_value).ravel()[: np.size(value)]
             assert same(value, theirs_value), key
+
+
+LAB_STEP = Settings("bell-spaceships", frame="lab")  # the lesson's Bell step: the chosen frame is the lab
+
+
+@pytest.mark.parametrize("theme", [NORMAL, PRESENTER])
+def test_a_lab_step_under_a_caption_shows_the_lab_once_with_diagrams_of_150_px(theme: Theme) -> None:
+    """At 1280x720 under a lesson's caption band (the rest of the viewport beyond the canvas
+    height the band leaves, :func:`caption_reserve`, at most 30 %), Bell's lab step (titles of four
+    lines) gets one lane, one Minkowski diagram and the lengths chart, and its plots 150 px or more;
+    its legend names nothing of a frame not shown."""
+    canvas_px = caption_reserve(theme)
+    band = min(720 - canvas_px, 0.3 * 720)
+    assert band >= 4 * 23  # a title and three lines of the caption at 17 px
+    width = 1280 if theme is PRESENTER else 1280 - 345  # presenter mode folds the panel away
+    painting = paint(resolved_of(LAB_STEP), PaintingKey(LAB_STEP, width, 720 - band, theme))
+    layout = painting.layout
+    assert len(layout.lanes) == 1 and layout.charts[1] is None and layout.charts[2] is not None
+    assert all(c.plot.height >= MIN_PLOT_PX for c in layout.shown_charts), layout
+    assert painting.chart_frames[1] is None
+    names = {e.name for e in painting.drawn.legend()}
+    assert "now: t" in names and not any("′" in n for n in names), names
+    lanes = painting.drawn.lane_pictures(painting.drawn.window[0], layout)
+    assert [lane.title.split(":")[0] for lane in lanes] == ["lab frame"]
+    # the same scene in a custom frame of β = 0 keeps both lanes (a slider dragged through 0)
+    custom = replace(LAB_STEP, frame=CUSTOM_FRAME, beta=0.0)
+    two = paint(resolved_of(custom), PaintingKey(custom, width, 720 - band, theme)).layout
+    assert len(two.lanes) == 2 and None not in two.charts
+
+
+def test_every_canvas_at_the_reserve_gives_the_diagrams_their_height() -> None:
+    """:func:`caption_reserve` is the height at which two lanes with one-line titles leave the plots
+    MIN_PLOT_PX, at the desk's sizes (to which a short canvas steps presenter text down)."""
+    for theme in (NORMAL, PRESENTER):
+        h = caption_reserve(theme)
+        for w in (935.0, 1280.0, 1575.0, 1920.0):
+            layout = canvas_layout(w, h, theme, LEGEND_ROWS, 1)
+            assert layout.lab_chart.plot.height >= MIN_PLOT_PX, (theme.name, w)
+            assert canvas_layout(w, h - 12, theme, LEGEND_ROWS, 1).lab_chart.plot.height < MIN_PLOT_PX
+
+
+def test_a_new_picture_is_drawn_under_a_root_of_its_own() -> None:
+    """Two paintings' pages hang under roots named for each (:func:`shared_root`): viser's client
+    draws a new page's labels as new nodes, never an old label moved before its text changes."""
+    a = paint(resolved_of(LAB_STEP), PaintingKey(LAB_STEP, 935.0, 546.0, NORMAL))
+    b = paint(resolved_of(POLE), PaintingKey(POLE, 935.0, 546.0, NORMAL))
+    (head_a, _), (head_b, _) = read_payload(a.page()), read_payload(b.page())
+    assert head_a["nodes"][:2] == [SHARED_ROOT, shared_root(a.id)] and shared_root(a.id) != shared_root(b.id)
+    labels = [n for n in head_b["nodes"] if "/text/" in n]
+    assert labels and all(n.startswith(shared_root(b.id) + "/text/") for n in labels)
 
 
 # ---------------------------------------------------------------------------- a hall that follows

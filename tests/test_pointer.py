@@ -23,6 +23,7 @@ from rigidrel_app.view.pointer import (
     scrubbed,
 )
 from rigidrel_app.view.state import CUSTOM_BETA, Resolved, Settings, cone_events, resolve
+from tests.viser_client import shown
 
 
 def _diagrams(settings: Settings, cone: str | None = None) -> Diagrams:
@@ -45,22 +46,22 @@ def test_a_press_on_an_events_dot_chooses_its_cone_and_a_second_takes_it_away() 
     d = _diagrams(FIG3)
     for k in (0, 1):
         for name, (t, x) in d.scene.events_in(frame=d.diagram_frames[k]).items():
-            px, pz = d.frames[k].px_one(x, t)
+            px, pz = shown(d.frames[k]).px_one(x, t)
             asked = press(d, px + 0.5 * EVENT_REACH_PX, pz, 0.0)
             assert isinstance(asked, ChooseCone)
             # the nearest dot wins: events drawn on one spot give one of them
             tn, xn = d.scene.events_in(frame=d.diagram_frames[k])[asked.event or ""]
-            qx, qz = d.frames[k].px_one(xn, tn)
+            qx, qz = shown(d.frames[k]).px_one(xn, tn)
             assert abs(qx - px) <= EVENT_REACH_PX and abs(qz - pz) <= EVENT_REACH_PX, (name, asked)
         name, (t, x) = next(iter(d.scene.events_in(frame=d.diagram_frames[k]).items()))
     chosen = _diagrams(FIG3, cone=name)
-    px, pz = chosen.frames[1].px_one(x, t)
+    px, pz = shown(chosen.frames[1]).px_one(x, t)
     assert press(chosen, px, pz, 0.0) == ChooseCone(None)
 
 
 def test_a_press_on_the_lab_diagram_or_the_length_panel_scrubs_to_the_time_under_it() -> None:
     d, window = _diagrams(FIG3), _window(FIG3)
-    lab, panel = d.frames[0], d.frames[2]
+    lab, panel = shown(d.frames[0]), shown(d.frames[2])
     t = 0.5 * (window[0] + window[1]) + 0.1
     x_free = lab.x_range[0] + 0.02 * (lab.x_range[1] - lab.x_range[0])  # the plot's left edge: no event there
     px, pz = lab.px_one(x_free, t)
@@ -71,8 +72,8 @@ def test_a_press_on_the_lab_diagram_or_the_length_panel_scrubs_to_the_time_under
     assert isinstance(asked, Scrub) and asked.chart == 2 and asked.time == pytest.approx(t, abs=1e-12)
     # dragged beyond the plot: a time beyond the window, which the tab's clock keeps to its ends
     later, earlier = (
-        scrubbed(d, Scrub(0, t), px, lab.plot.z1 + 500.0),
-        scrubbed(d, Scrub(2, t), panel.plot.x0 - 500.0, qz),
+        shown(scrubbed(d, Scrub(0, t), px, lab.plot.z1 + 500.0)),
+        shown(scrubbed(d, Scrub(2, t), panel.plot.x0 - 500.0, qz)),
     )
     assert later > window[1] and earlier < window[0]
     clock = Playback.start(window)
@@ -81,7 +82,7 @@ def test_a_press_on_the_lab_diagram_or_the_length_panel_scrubs_to_the_time_under
 
 def test_the_chosen_frames_now_line_scrubs_and_elsewhere_a_drag_sets_beta_in_the_sliders_range() -> None:
     d, window = _diagrams(FIG3), _window(FIG3)
-    f = d.frames[1]
+    f = shown(d.frames[1])
     now = 0.5 * (window[0] + window[1])
     x_free = f.x_range[0] + 0.02 * (f.x_range[1] - f.x_range[0])
     px, pz = f.px_one(x_free, now)
@@ -97,6 +98,6 @@ def test_the_chosen_frames_now_line_scrubs_and_elsewhere_a_drag_sets_beta_in_the
 
 def test_a_press_on_the_lanes_the_legend_or_a_margin_asks_for_nothing() -> None:
     d = _diagrams(FIG3)
-    top = max(f.plot.z1 for f in d.frames)
+    top = max(f.plot.z1 for f in d.frames if f is not None)
     assert press(d, 100.0, top + 80.0, 0.0) is None  # the lanes, above the diagrams
-    assert press(d, d.frames[0].plot.x0 - 5.0, d.frames[0].plot.z0 + 5.0, 0.0) is None  # the axis' margin
+    assert press(d, shown(d.frames[0]).plot.x0 - 5.0, shown(d.frames[0]).plot.z0 + 5.0, 0.0) is None  # the axis' margin

@@ -16,6 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.viser_client import shown
+
 ROOT = Path(__file__).resolve().parents[1]
 pytestmark = pytest.mark.slow
 URL = re.compile(r"rigidrel: serving on (http://127\.0\.0\.1:(\d+))")
@@ -226,7 +228,7 @@ def test_pointer_events_are_taken_once_each_in_their_order() -> None:
         session = tab.session
         layout, drawn = session.painter.layout, session.painter.drawn
         assert layout is not None and drawn is not None
-        lab = session.painter.chart_frames[0]
+        lab = shown(session.painter.chart_frames[0])
         name, (t, x) = next(iter(drawn.resolved.scene.events_in().items()))
         px, pz = lab.px_one(x, t)
         y = layout.height - pz  # the canvas' CSS px, y down

@@ -39,6 +39,12 @@ _DECOMPRESS = zstandard.ZstdDecompressor()
 T = TypeVar("T")
 
 
+def shown(part: T | None) -> T:
+    """``part`` (a chart's layout or frame) of a chart the test knows is shown on its canvas."""
+    assert part is not None, "a chart the canvas does not show"
+    return part
+
+
 def wait_until(predicate: Callable[[], T | None], timeout: float = 20.0, interval: float = 0.05) -> T:
     """Poll ``predicate`` until it returns something truthy (returned); AssertionError on timeout."""
     end = time.monotonic() + timeout

@@ -29,7 +29,7 @@ from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import Settings
 from rigidrel_app.view.vocabulary import ROD_COLORS
 from tests.browser.conftest import VIEWPORT, element_png
-from tests.viser_client import wait_until
+from tests.viser_client import shown, wait_until
 
 pytestmark = pytest.mark.browser
 
@@ -307,7 +307,7 @@ def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
     # the diagrams' area of the canvas changed (the curves follow V), not only the lanes
     layout = tab.session.painter.layout
     assert layout is not None
-    top = round(layout.height - layout.charts[0].outer.z1)
+    top = round(layout.height - layout.lab_chart.outer.z1)
     assert _changed_fraction(after[top:], img[top:]) > 1e-3
     tab.page.screenshot(path=str(shots / "after_V_0.85.png"))
     assert tab.errors == []
@@ -402,7 +402,7 @@ def test_playback_keeps_lanes_and_diagrams_at_one_instant(tab: AppPage, shots: P
     diagram's now-line is on the canvas at the lanes' t."""
     tab.page.click("button:has-text('Play')")
     wait_until(lambda: tab.session.player.playing)  # the browser plays the state's timeline
-    f = tab.session.painter.chart_frames[0]
+    f = shown(tab.session.painter.chart_frames[0])
     seen = set()
     for _ in range(20):  # during playback, the page as the browser holds it: both from one frame
         title, zs = tab.title_and_now_lines()
@@ -421,7 +421,7 @@ def test_playback_keeps_lanes_and_diagrams_at_one_instant(tab: AppPage, shots: P
     now = tab.session.state.playback.now
     img = tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.page.screenshot(path=str(shots / "paused.png"))
-    f = tab.session.painter.chart_frames[0]
+    f = shown(tab.session.painter.chart_frames[0])
     _, z_now = f.px(np.array([0.0]), np.array([now]))
     _, row = tab.page_to_pixel(0.0, float(z_now[0]))
     x0, _ = tab.page_to_pixel(f.plot.x0 + 2, 0.0)

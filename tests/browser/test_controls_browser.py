@@ -23,7 +23,7 @@ from rigidrel_app.view.scenario import Scenario
 from rigidrel_app.view.state import CUSTOM_FRAME, NO_PRESET, Settings, event_times, preset_menu
 from rigidrel_app.view.vocabulary import ROD_COLORS
 from tests.browser.test_app_browser import AppPage
-from tests.viser_client import wait_until
+from tests.viser_client import shown, wait_until
 
 pytestmark = pytest.mark.browser
 
@@ -166,7 +166,7 @@ def test_the_mouse_scrubs_the_clock_chooses_a_cone_and_drags_beta(collision: App
         col, row = tab.page_to_pixel(px, pz)
         return canvas["x"] + col, canvas["y"] + row
 
-    lab, chosen = s.painter.chart_frames[:2]
+    lab, chosen = (shown(f) for f in s.painter.chart_frames[:2])
     w = s.state.playback.window
     per_px = (lab.y_range[1] - lab.y_range[0]) / lab.plot.height  # the time one pixel of the diagram spans
     left = lab.x_range[0] + 0.03 * (lab.x_range[1] - lab.x_range[0])  # no event this far left

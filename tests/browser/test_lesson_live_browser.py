@@ -11,11 +11,14 @@ from typing import Any
 import numpy as np
 import pytest
 
+from rigidrel_app.backends.viser import shared_root
 from rigidrel_app.lessons import builtin_lesson, parse_lesson
+from rigidrel_app.live.controls import caption_reserve
 from rigidrel_app.live.keys import Action
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
 from rigidrel_app.view.layers import Layer
+from rigidrel_app.view.layout import MIN_PLOT_PX, NORMAL, CanvasLayout
 from rigidrel_app.view.scenario import parse_scenario
 from tests.browser.conftest import element_png
 from tests.browser.test_app_browser import SOFTWARE_NOTE, slider_of
@@ -210,6 +213,48 @@ def test_presenter_caption_at_1920(open_tab: OpenTab, lesson_app: App, shots: Pa
     tab.screenshot(shots / "presenter-step-6-1920.png")
 
 
+@pytest.mark.parametrize(("width", "height"), [(1280, 720), (1920, 1080)])
+def test_bell_and_the_barn_keep_their_diagrams_under_their_captions(
+    open_tab: OpenTab, lesson_app: App, shots: Path, width: int, height: int
+) -> None:
+    """Steps 13 and 14 (captions of five to seven lines, both in the lab frame): the band takes what
+    the viewport has beyond the canvas the diagrams need (at most 30 %), the rest of the caption
+    scrolls in it, and the canvas shows the lab once, its plots 150 px high or more."""
+    tab = open_tab(lesson_app, width, height)
+    tab.wait_caption(PAPER.steps[0].title)
+    band_px = max(min(height - caption_reserve(NORMAL), 0.3 * height), 88)
+    band = tab.page.locator("#rigidrel-caption")
+    for index in (12, 13):
+        tab.session.go_to_step(index)
+        tab.wait_caption(PAPER.steps[index].title)
+
+        def laid_out() -> CanvasLayout | None:
+            box, canvas = band.bounding_box(), tab.page.locator("canvas[data-engine]").bounding_box()
+            size, layout = tab.session.painter.canvas_size, tab.session.painter.layout
+            if box is None or canvas is None or layout is None or not size.measured:
+                return None
+            fits = (size.width, size.height) == (round(canvas["width"]), round(canvas["height"]))
+            return layout if fits and (layout.width, layout.height) == (size.width, size.height) else None
+
+        layout = wait_until(laid_out, timeout=60)
+        box = band.bounding_box()
+        assert box is not None and abs(box["height"] - band_px) <= 1, (box, band_px)
+        assert len(layout.lanes) == 1 and layout.charts[1] is None
+        assert all(c.plot.height >= MIN_PLOT_PX for c in layout.shown_charts), layout.shown_charts
+        # a caption longer than its band (at 720 px) scrolls there, and says so; one that fits does not
+        more = band.evaluate("(b) => [b.scrollHeight > b.clientHeight, b.classList.contains('rr-more'), b.tabIndex]")
+        assert more == ([True, True, 0] if height == 720 else [False, False, -1]), more
+        tab.screenshot(shots / f"step-{index + 1}-{width}.png")
+    if height != 720:
+        return
+    # the band scrolled by the keys that read it; a clicker's PageUp still moves the lesson
+    band.focus()
+    tab.page.keyboard.press("ArrowDown")
+    wait_until(lambda: band.evaluate("(b) => b.scrollTop") > 0, timeout=10)
+    tab.page.keyboard.press("PageUp")
+    tab.wait_caption(PAPER.steps[12].title)
+
+
 def test_the_riding_step_rides_its_point(open_tab: OpenTab, lesson_app: App, shots: Path) -> None:
     """The built-in lesson's riding step, reached from the step list: its lower lane rides the rod's
     back end (the lane's title says so, and the rod keeps its rest length there)."""
@@ -260,20 +305,25 @@ def test_follow_the_lecturers_tab(open_tab: OpenTab, shots: Path) -> None:
             return tab.page.evaluate("(n) => window.__rigidrelPlayback.node(n)", name)
 
         # the follower shows the step's shared page (its own still picture hidden), the leader its own
-        wait_until(lambda: (node(student, "/shared/text/0") or {}).get("visible"), timeout=30)
+        def root() -> str:
+            painting = student.session.painter.painting
+            return "" if painting is None else shared_root(painting.id)
+
+        wait_until(lambda: (node(student, f"{root()}/text/0") or {}).get("visible"), timeout=30)
         assert not (node(student, "/page/static") or {}).get("visible", True)
         assert node(lead, "/shared") is None and not lead.session.painter.renderer.still_lent
 
         def shows_its_painting() -> bool:
             """The page's shared texts are those of the painting the follower's session shows now (a
             painting for a new canvas size may replace the first while its page is on its way)."""
-            labels = student.page.evaluate(
-                "() => Array.from({length: 40}, (_, k) => window.__rigidrelPlayback.node('/shared/text/' + k))"
-                ".filter((n) => n && n.visible).map((n) => n.props.text)"
-            )
             painting = student.session.painter.painting
             if painting is None:
                 return False
+            labels = student.page.evaluate(
+                "(root) => Array.from({length: 40}, (_, k) => window.__rigidrelPlayback.node(root + '/text/' + k))"
+                ".filter((n) => n && n.visible).map((n) => n.props.text)",
+                shared_root(painting.id),
+            )
             return sorted(labels) == sorted(t.text for t in painting.still.texts if t.text.strip())
 
         wait_until(shows_its_painting, timeout=30)

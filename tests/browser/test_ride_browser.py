@@ -68,13 +68,17 @@ def test_an_event_chosen_from_the_list_gets_its_light_cone_on_both_diagrams(tab:
     img = tab.canvas_after(default_scene)
     layout = tab.session.painter.layout
     assert layout is not None
-    top = round(layout.height - layout.charts[0].outer.z1)  # the diagrams' part of the canvas
-    before = [_light_pixels(img[top:, round(c.outer.x0) : round(c.outer.x1)], LIGHT_COLOR) for c in layout.charts[:2]]
+    top = round(layout.height - layout.lab_chart.outer.z1)  # the diagrams' part of the canvas
+    before = [
+        _light_pixels(img[top:, round(c.outer.x0) : round(c.outer.x1)], LIGHT_COLOR) for c in layout.shown_charts[:2]
+    ]
     tab.choose("Light cone of", "T_1")
     wait_until(lambda: tab.session.painter.drawn.resolved.cone == "T_1", timeout=60)  # type: ignore[union-attr]
     img = tab.canvas_after(img)
     tab.page.screenshot(path=str(shots / "light_cone_of_T1.png"))
-    after = [_light_pixels(img[top:, round(c.outer.x0) : round(c.outer.x1)], LIGHT_COLOR) for c in layout.charts[:2]]
+    after = [
+        _light_pixels(img[top:, round(c.outer.x0) : round(c.outer.x1)], LIGHT_COLOR) for c in layout.shown_charts[:2]
+    ]
     for b, a in zip(before, after, strict=True):  # the cone's dashed rays, in both diagrams
         assert a > b + 150, (before, after)
     assert "--cone T_1" in tab.session.controls.scenario_shown.content

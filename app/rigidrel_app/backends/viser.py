@@ -127,9 +127,18 @@ class _LabelPool:
     """Label nodes under one name prefix, grown when needed and never re-added: changing a
     label costs ~60 us, creating one ~500 us. Unused nodes are hidden."""
 
-    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
+    def __init__(self, scene: viser.SceneApi, prefix: str, renew: bool = False) -> None:
+        """``renew``: a label given new text at a new place is made anew (a node of a new name, the
+        old one removed) instead of updated. viser's client moves a label at once (its pose, outside
+        React) but changes its text when React draws next, which in software WebGL can be frames
+        later: a still picture's labels updated in place showed the old picture's words at the new
+        one's places. A new node is drawn with its text and place together. Not for labels that
+        move and change every frame (a lane's titles, its ruler's numbers): a recorded playback
+        makes no node after its first frame."""
         self._scene = scene
         self._prefix = prefix
+        self._renew = renew
+        self._made = 0
         self._handles: list[viser.LabelHandle] = []
         self._shown: list[tuple[str, tuple[float, float, float], float, str] | None] = []
 
@@ -318,9 +327,18 @@ class _Texts:
     """Label nodes under one name prefix, grown when needed and never re-added (changing a label
     costs ~60 us, creating one ~500 us); only what changed is assigned; unused ones are hidden."""
 
-    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
+    def __init__(self, scene: viser.SceneApi, prefix: str, renew: bool = False) -> None:
+        """``renew``: a label given new text at a new place is made anew (a node of a new name, the
+        old one removed) instead of updated. viser's client moves a label at once (its pose, outside
+        React) but changes its text when React draws next, which in software WebGL can be frames
+        later: a still picture's labels updated in place showed the old picture's words at the new
+        one's places. A new node is drawn with its text and place together. Not for labels that
+        move and change every frame (a lane's titles, its ruler's numbers): a recorded playback
+        makes no node after its first frame."""
         self._scene = scene
         self._prefix = prefix
+        self._renew = renew
+        self._made = 0
         self._handles: list[viser.LabelHandle] = []
         self._shown: list[tuple[str, tuple[float, float, float], float, str] | None] = []
 
@@ -353,6 +371,18 @@ class _Texts:
         if state == self._shown[k]:
             return
         h, old = self._handles[k], self._shown[k]
+        if self._renew and old is not None and old[0] != text and old[1] != position:
+            h.remove()
+            self._made += 1
+            self._handles[k] = self._scene.add_label(
+                f"{self._prefix}/{k}r{self._made}",
+                text,
+                position=position,
+                font_screen_scale=scale,
+                anchor=anchor,  # type: ignore[arg-type]
+            )
+            self._shown[k] = state
+            return
         changes: dict[str, object] = {}
         if old is None or old[0] != text:
             changes["text"] = text
@@ -524,6 +554,11 @@ class _Ruler:
     def handles(self) -> tuple[viser.SceneNodeHandle, ...]:
         return (*self._texts.handles, self._node)
 
+    def hide(self) -> None:
+        """No numbers: the ruler's lane is not shown."""
+        for slot in range(RULER_SLOTS):
+            self._texts.hide(slot)
+
     def show(self, lane: LanePicture, z: float, px: float) -> None:
         """Every tick's number as the lane has it (:attr:`LanePicture.ruler_numbers`), below the
         tick at height ``z``, at ``px``; tick ``n`` in slot ``n % RULER_SLOTS``."""
@@ -556,6 +591,15 @@ _FLAT_Y = 0.5 * _PAGE_ROD_DEPTH + 0.5
 _VECTOR_ROOTS = ("static", "static_dots", "text")
 #: Where a page shared by many tabs (:func:`record_still`) is drawn: one node, removed whole.
 SHARED_ROOT = "/shared"
+
+
+def shared_root(picture_id: str) -> str:
+    """Where the shared still picture ``picture_id`` hangs: under :data:`SHARED_ROOT`, in a node named
+    for it. Each picture's labels are then new nodes, which viser's client draws with their own text
+    at their own places; nodes of the same name would be updated in place, and the client moved an
+    old label to its new place frames before it changed its text (a step change showed the old
+    step's event names on the new step's curves)."""
+    return f"{SHARED_ROOT}/p{picture_id}"
 
 
 @dataclass(frozen=True)
@@ -606,8 +650,10 @@ class PageRenderer:
             scene.configure_default_lights(enabled=False)
             scene.add_light_ambient("/page/ambient", intensity=AMBIENT)
             scene.add_light_directional("/page/front_light", intensity=FRONT, position=(0.0, -10.0, 4.0))
-        else:  # one node to remove it whole
-            scene.add_frame(still_root, show_axes=False)
+        else:  # one node to remove it whole, and under it one of the picture's own (:func:`shared_root`)
+            scene.add_frame(SHARED_ROOT, show_axes=False)
+            if still_root != SHARED_ROOT:
+                scene.add_frame(still_root, show_axes=False)
         # the still picture's nodes hang under these (before any of them exists), so that one
         # message each shows or hides them all
         self._vector_roots = tuple(scene.add_frame(f"{still_root}/{name}", show_axes=False) for name in _VECTOR_ROOTS)
@@ -629,8 +675,8 @@ class PageRenderer:
         """When it was sent (``time.monotonic``)."""
         self._static_lines = _LineNodes(scene, f"{still_root}/static")
         self._static_dots = _DotNodes(scene, f"{still_root}/static_dots")
-        self.static_texts = _Texts(scene, f"{still_root}/text")
-        self.axis_names = _Texts(scene, f"{still_root}/axis_name")
+        self.static_texts = _Texts(scene, f"{still_root}/text", renew=True)
+        self.axis_names = _Texts(scene, f"{still_root}/axis_name", renew=True)
         self.layout: CanvasLayout | None = None
         self._make_moving(moving)
 
@@ -688,7 +734,7 @@ class PageRenderer:
         self._static_dots.show(picture.dots)
         names = [
             PageText(lane.band.x0, lane.ruler_z, name, layout.theme.title_px, "center-left")
-            for lane, name in zip(layout.lanes, axis_names, strict=True)
+            for lane, name in zip(layout.lanes, axis_names)  # one lane: the lab's name only
         ]
         self.static_texts.show(picture.texts)
         self.axis_names.show(names)
@@ -791,8 +837,12 @@ class PageRenderer:
             + [edge_text(m, theme.text_px) for lane in lanes for m in lane.edge_marks]
             + [PageText(n.x, n.z, n.text, n.px, "center-center") for lane in lanes for n in lane.names]
         )
-        for ruler, place, lane in zip(self._rulers, layout.lanes, lanes, strict=True):
-            ruler.show(lane, place.ruler_z - place.tick_px - 2.0, theme.text_px)
+        for k, ruler in enumerate(self._rulers):
+            if k < len(lanes):
+                place = layout.lanes[k]
+                ruler.show(lanes[k], place.ruler_z - place.tick_px - 2.0, theme.text_px)
+            else:  # a lane not shown (:class:`~rigidrel_app.view.layout.Panels`)
+                ruler.hide()
         self._moving_lines.show(moving.lines)
         self._moving_dots.show(moving.dots)
 

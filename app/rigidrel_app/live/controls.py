@@ -16,6 +16,7 @@ import functools
 import html
 import itertools
 import json
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Protocol, TypeVar
@@ -30,6 +31,7 @@ from ..lessons import Lesson
 from ..lessons.tour import LAYER_LABELS, step_labels
 from ..view.entry import NumberEntry, Refuse, Typing, Use, Verdict, control_value, refusal
 from ..view.layers import Layer
+from ..view.layout import NORMAL, Theme, height_for_plots
 from ..view.notice import Notice, Place, notice_markup
 from ..view.scenario import format_scenario
 from ..view.scene_view import CONTROL_PX, Drawn, nice_step
@@ -641,11 +643,23 @@ def page_style(shade: Shade) -> str:
     return "" if shade == "light" else DARK_CANVAS_CSS + " " + CAPTION_DARK_CSS
 
 
-def caption_message(band_html: str, shown: bool, shade: Shade = "light") -> str:
+def caption_message(band_html: str, shown: bool, shade: Shade = "light", theme: Theme = NORMAL) -> str:
     """What the server puts in the tab's localStorage for the band and the page's style (read by
-    :data:`_CAPTION_JS`); ``band_html`` "" and ``shown`` False for a tab without a lesson."""
+    :data:`_CAPTION_JS`); ``band_html`` "" and ``shown`` False for a tab without a lesson. Its
+    ``reserve`` is the canvas height the band leaves (:func:`caption_reserve`)."""
     band = CAPTION_CSS + band_html if band_html else ""
-    return json.dumps({"html": band, "shown": shown, "style": page_style(shade)})
+    message = {"html": band, "shown": shown, "style": page_style(shade), "reserve": caption_reserve(theme)}
+    return json.dumps(message)
+
+
+def caption_reserve(theme: Theme) -> int:
+    """The canvas height (CSS px) a lesson's caption band leaves below it, whatever the step: what
+    two lanes with one-line titles and diagrams of :data:`~rigidrel_app.view.layout.MIN_PLOT_PX`
+    take at ``theme``'s sizes stepped down to the desk's (as
+    :func:`~rigidrel_app.view.layout.canvas_layout` steps them on a short canvas). The page gives
+    the band the rest of the viewport (at most 30 % of it); a longer caption scrolls in its band."""
+    desk = replace(theme, text_px=min(theme.text_px, NORMAL.text_px), title_px=min(theme.title_px, NORMAL.title_px))
+    return math.ceil(height_for_plots(desk))
 
 
 def said_message(text: str, count: int) -> str:

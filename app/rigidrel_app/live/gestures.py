@@ -85,7 +85,9 @@ class Gestures:
             return
         gesture = self.gesture
         if isinstance(gesture, Scrub):
-            self.asks.seek(scrubbed(d, gesture, x, z))
+            t = scrubbed(d, gesture, x, z)
+            if t is not None:
+                self.asks.seek(t)
         elif isinstance(gesture, DragBeta):
             beta = dragged_beta(gesture, x)
             if beta != tab.state.settings.beta or tab.state.settings.frame != CUSTOM_FRAME:

@@ -12,6 +12,7 @@ from typing import Protocol
 
 from ..lessons import Lesson
 from ..lessons.tour import Arrival, arrival, caption_html, clamp_step, lock_notice, lock_reason
+from ..view.layout import NORMAL, PRESENTER
 from .controls import caption_message
 from .tab_state import TabState
 
@@ -126,7 +127,8 @@ class GivenLesson:
         key = (k, state.presenter, off_step, state.caption_shown, state.shade)
         if key not in self._captions:  # the band's Markdown is rendered once
             band = caption_html(self.lesson.steps[k], state.presenter, off_step)
-            self._captions[key] = caption_message(band, state.caption_shown, state.shade)
+            theme = PRESENTER if state.presenter else NORMAL
+            self._captions[key] = caption_message(band, state.caption_shown, state.shade, theme)
         return self._captions[key]
 
     def said(self, state: TabState) -> str:

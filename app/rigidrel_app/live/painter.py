@@ -46,7 +46,7 @@ class Painter:
         self.renderer = PageRenderer(client.scene)
         self.layout: CanvasLayout | None = None
         self.drawn: Drawn | None = None
-        self.chart_frames: tuple[ChartFrame, ...] = ()
+        self.chart_frames: tuple[ChartFrame | None, ...] = ()
         """Each diagram's data -> page px (the plot areas of this layout)."""
         self.legend_rows = LEGEND_ROWS
         """The legend's rows in the page last laid out (the first guess for the next drawing's)."""

@@ -26,11 +26,11 @@ import numpy as np
 import numpy.typing as npt
 
 from ..backends._viser import RecordingScene, SceneFold
-from ..backends.viser import SHARED_ROOT, PageRenderer
+from ..backends.viser import SHARED_ROOT, PageRenderer, shared_root
 from ..view.canvas import ChartFrame, PagePicture, legend_rows, still_picture
 from ..view.headline import headline
 from ..view.layout import LEGEND_ROWS, CanvasLayout, Theme, canvas_layout, title_lines_needed, titles_fit_one_line
-from ..view.scene_view import Drawn, build_drawing
+from ..view.scene_view import Drawn, build_drawing, panels
 from ..view.state import Resolved, Settings
 from .timeline import Mirror, as_u8, encode_payload, frame_pictures, room
 
@@ -63,7 +63,7 @@ class Painting:
     layout: CanvasLayout
     legend_rows: int
     title_lines: int
-    chart_frames: tuple[ChartFrame, ...]
+    chart_frames: tuple[ChartFrame | None, ...]
     still: PagePicture
     _shared: _Shared = field(default_factory=lambda: _Shared(), repr=False, compare=False)
 
@@ -78,7 +78,7 @@ class Painting:
         with shared.lock:
             if shared.page is None:
                 recording = RecordingScene()
-                renderer = PageRenderer(recording.scene, recording.scene, still_root=SHARED_ROOT)
+                renderer = PageRenderer(recording.scene, recording.scene, still_root=shared_root(self.id))
                 renderer.set_static(self.layout, self.still, self.drawn.ruler_names)
                 fold = SceneFold()
                 for m in recording.take():
@@ -142,8 +142,10 @@ def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND
     the final layout's plot areas. ``guess``: the legend rows and title lines to try first (a tab's
     last painting's: a slider's answer then draws once); the result does not depend on it."""
 
+    shown = panels(resolved)
+
     def layout_of(rows: int, title_lines: int) -> CanvasLayout:
-        return canvas_layout(key.width, key.height, key.theme, rows, title_lines)
+        return canvas_layout(key.width, key.height, key.theme, rows, title_lines, shown)
 
     def draw(layout: CanvasLayout) -> Drawn:
         return build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)

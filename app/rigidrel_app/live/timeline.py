@@ -238,7 +238,7 @@ FramePicture = tuple[list[LanePicture], PagePicture]
 
 
 def frame_pictures(
-    drawn: Drawn, layout: CanvasLayout, chart_frames: Sequence[ChartFrame], times: npt.NDArray[np.float64]
+    drawn: Drawn, layout: CanvasLayout, chart_frames: Sequence[ChartFrame | None], times: npt.NDArray[np.float64]
 ) -> list[FramePicture]:
     """The lanes and the diagrams' moving parts at each of ``times`` (the app's own drawing)."""
     out: list[FramePicture] = []

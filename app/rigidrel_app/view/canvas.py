@@ -700,24 +700,34 @@ def _legend_picture(entries: tuple[LegendEntry, ...], box: Rect, theme: Theme) -
 
 
 def still_picture(
-    charts: Sequence[Chart], chart_places: Sequence[ChartLayout], legend: Sequence[LegendEntry], box: Rect, theme: Theme
-) -> tuple[tuple[ChartFrame, ...], PagePicture]:
-    """What a page shows that does not move with playback: each chart's picture
-    (:func:`chart_picture`, on its place) and the legend's (in ``box``); and each chart's
-    data -> px frame, on which its moving parts are drawn (:func:`moving_picture`)."""
-    frames: list[ChartFrame] = []
+    charts: Sequence[Chart],
+    chart_places: Sequence[ChartLayout | None],
+    legend: Sequence[LegendEntry],
+    box: Rect,
+    theme: Theme,
+) -> tuple[tuple[ChartFrame | None, ...], PagePicture]:
+    """What a page shows that does not move with playback: each shown chart's picture
+    (:func:`chart_picture`, on its place; a place ``None`` is a chart not shown) and the legend's
+    (in ``box``); and each chart's data -> px frame, on which its moving parts are drawn
+    (:func:`moving_picture`), ``None`` for a chart not shown."""
+    frames: list[ChartFrame | None] = []
     picture = PagePicture()
     for chart, place in zip(charts, chart_places, strict=True):
+        if place is None:
+            frames.append(None)
+            continue
         f, p = chart_picture(chart, place, theme)
         frames.append(f)
         picture += p
     return tuple(frames), picture + legend_picture(legend, box, theme)
 
 
-def moving_picture(frames: Sequence[ChartFrame], items: Sequence[Iterable[Item]], theme: Theme) -> PagePicture:
-    """The charts' moving parts at one instant (``items``: each chart's, on its frame), in the
-    :data:`MOVING` layer."""
+def moving_picture(frames: Sequence[ChartFrame | None], items: Sequence[Iterable[Item]], theme: Theme) -> PagePicture:
+    """The shown charts' moving parts at one instant (``items``: each chart's, on its frame; a
+    frame ``None``: a chart not shown), in the :data:`MOVING` layer."""
     picture = PagePicture()
     for f, its in zip(frames, items, strict=True):
+        if f is None:
+            continue
         picture += items_picture(its, f, theme, MOVING)
     return picture

@@ -103,8 +103,12 @@ def describe(resolved: Resolved, now: float) -> Description:
     ride = ""
     if resolved.ride is not None:
         ride = f" The lower lane rides {resolved.ride.label(scene)}; described here in the {lower} frame."
-    frames_text = f"Upper lane: the lab frame. Lower lane: the {lower} frame.{ride}"
-    lanes = (_lane(scene, rr.LAB, now, "lab"), _lane(scene, frame, now, "lower"))
-    events = (_passed(scene, rr.LAB, now, "lab"), _passed(scene, frame, now, "lower"))
+    if resolved.lab_only:  # one lane, one diagram: the chosen frame is the lab
+        frames_text = "One lane: the lab frame (the frame chosen)."
+        lanes, events = (_lane(scene, rr.LAB, now, "lab"),), (_passed(scene, rr.LAB, now, "lab"),)
+    else:
+        frames_text = f"Upper lane: the lab frame. Lower lane: the {lower} frame.{ride}"
+        lanes = (_lane(scene, rr.LAB, now, "lab"), _lane(scene, frame, now, "lower"))
+        events = (_passed(scene, rr.LAB, now, "lab"), _passed(scene, frame, now, "lower"))
     verdicts = tuple(f"Causality: {line}" for line in verdict_lines(scene))
     return Description(scene_text, frames_text, lanes, events, verdicts)

@@ -9,6 +9,7 @@ arithmetic, no drawing library.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
@@ -114,20 +115,60 @@ class ChartLayout:
 
 
 @dataclass(frozen=True)
+class Panels:
+    """Which of the canvas' parts are shown. The lab's lane and diagram always are; the chosen
+    frame's lane and diagram not where that frame is the lab itself (a lesson step in the lab: the
+    same lane twice says nothing twice), and the lengths chart not while its layer is hidden. The
+    parts shown share the room of those that are not."""
+
+    chosen_frame: bool = True
+    """The chosen frame's lane and Minkowski diagram."""
+    lengths: bool = True
+    """The equal-time lengths chart."""
+
+    @property
+    def charts(self) -> tuple[bool, bool, bool]:
+        """Whether each chart is shown: the lab diagram, the chosen frame's, the lengths."""
+        return True, self.chosen_frame, self.lengths
+
+    @property
+    def lanes(self) -> int:
+        return 2 if self.chosen_frame else 1
+
+
+ALL_PANELS = Panels()
+
+
+@dataclass(frozen=True)
 class CanvasLayout:
     width: float
     height: float
     theme: Theme
-    lanes: tuple[LaneLayout, LaneLayout]
-    """The lab lane (top) and the chosen frame's."""
-    charts: tuple[ChartLayout, ChartLayout, ChartLayout]
-    """The lab diagram, the chosen frame's diagram, the equal-time lengths."""
+    lanes: tuple[LaneLayout, ...]
+    """The lab lane (top) and, if shown (:class:`Panels`), the chosen frame's."""
+    charts: tuple[ChartLayout | None, ChartLayout | None, ChartLayout | None]
+    """The lab diagram, the chosen frame's diagram, the equal-time lengths; ``None`` for one not
+    shown (:class:`Panels`)."""
     legend: Rect
 
     @property
+    def lab_chart(self) -> ChartLayout:
+        """The lab's Minkowski diagram (always shown)."""
+        chart = self.charts[0]
+        assert chart is not None, "the lab diagram is always shown"
+        return chart
+
+    @property
+    def shown_charts(self) -> tuple[ChartLayout, ...]:
+        """The charts shown, left to right."""
+        return tuple(c for c in self.charts if c is not None)
+
+    @property
     def chart_areas(self) -> tuple[tuple[float, float], tuple[float, float]]:
-        """Plot-area sizes (px) of the Minkowski diagrams and of the lengths chart."""
-        a, c = self.charts[0].plot, self.charts[2].plot
+        """Plot-area sizes (px) of the Minkowski diagrams and of the lengths chart (the diagrams'
+        for a lengths chart not shown: nothing is drawn on it)."""
+        a = self.lab_chart.plot
+        c = a if self.charts[2] is None else self.charts[2].plot
         return (a.width, a.height), (c.width, c.height)
 
 
@@ -172,7 +213,7 @@ def titles_fit_one_line(titles: Sequence[str], layout: CanvasLayout) -> bool:
     :data:`TITLE_SPARE` to spare."""
     return all(
         text_width(one_line(t), MIN_TEXT_PX * TITLE_SPARE) <= lane.band.width
-        for t, lane in zip(titles, layout.lanes, strict=True)
+        for t, lane in zip(titles, layout.lanes, strict=False)
     )
 
 
@@ -233,7 +274,7 @@ def title_lines_needed(titles: Sequence[str], layout: CanvasLayout) -> int:
         2,
         *(
             wrap_title(t, lane.band.width / TITLE_SPARE, px).count("\n") + 1
-            for t, lane in zip(titles, layout.lanes, strict=True)
+            for t, lane in zip(titles, layout.lanes, strict=False)
         ),
     )
 
@@ -328,6 +369,7 @@ def canvas_layout(
     theme: Theme = NORMAL,
     legend_rows: int = LEGEND_ROWS,
     title_lines: int = 1,
+    panels: Panels = ALL_PANELS,
 ) -> CanvasLayout:
     """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at
     the bottom. ``title_lines``: 1 if the lanes' titles fit one line (:func:`titles_fit_one_line`),
@@ -335,25 +377,37 @@ def canvas_layout(
     take two, and on a canvas too short for the diagrams' plots to get :data:`MIN_PLOT_PX`, one;
     if that is not enough (or they need two or more), the text takes the desk theme's sizes (never
     under :data:`MIN_TEXT_PX`; the lines keep their width): the first of these that gives the
-    plots their height, else the last."""
+    plots their height, else the last. ``panels``: the lanes and charts shown (:class:`Panels`)."""
     smaller = replace(theme, text_px=min(theme.text_px, NORMAL.text_px), title_px=min(theme.title_px, NORMAL.title_px))
     lines = max(2, title_lines)
-    layout = _canvas_layout(width, height, theme, legend_rows, lines)
+    layout = _canvas_layout(width, height, theme, legend_rows, lines, panels)
     steps = ((theme, 1), (smaller, 1)) if title_lines == 1 else ((smaller, lines),)
     for t, n in steps:
-        if layout.charts[0].plot.height >= MIN_PLOT_PX:
+        if layout.lab_chart.plot.height >= MIN_PLOT_PX:
             break
-        layout = _canvas_layout(width, height, t, legend_rows, n)
+        layout = _canvas_layout(width, height, t, legend_rows, n, panels)
     return layout
 
 
-def _canvas_layout(width: float, height: float, theme: Theme, legend_rows: int, title_lines: int) -> CanvasLayout:
+def height_for_plots(theme: Theme, width: float = 1000.0, panels: Panels = ALL_PANELS) -> float:
+    """The canvas height (CSS px) at which the diagrams' plots get :data:`MIN_PLOT_PX` with the lanes'
+    titles on one line and the legend on :data:`LEGEND_ROWS` rows, in ``theme``: what a lesson's
+    caption band leaves the canvas (:func:`rigidrel_app.live.controls.caption_message`). It hardly
+    depends on ``width`` (the lanes and the plots' heights do not)."""
+    tall = 4000.0
+    layout = _canvas_layout(width, tall, theme, LEGEND_ROWS, 1, panels)
+    return math.ceil(tall - (layout.lab_chart.plot.height - MIN_PLOT_PX))
+
+
+def _canvas_layout(
+    width: float, height: float, theme: Theme, legend_rows: int, title_lines: int, panels: Panels
+) -> CanvasLayout:
     w, h = max(width, 320.0), max(height, 240.0)
     lane_h = lane_height(theme, title_lines)
     lanes: list[LaneLayout] = []
     top = h - MARGIN
     gutter = text_width("x′", theme.title_px) + 12.0
-    for _ in range(2):
+    for _ in range(panels.lanes):
         band = Rect(MARGIN, top - lane_h, w - MARGIN, top)
         r = clock_radius(theme)
         title_z = band.z1
@@ -384,14 +438,19 @@ def _canvas_layout(width: float, height: float, theme: Theme, legend_rows: int, 
     legend = Rect(MARGIN, MARGIN, w - MARGIN, MARGIN + legend_h)
     charts_top, charts_bottom = top - 4.0, legend.z1 + 4.0
     gap = 12.0
-    cw = (w - 2 * MARGIN - 2 * gap) / 3.0
-    charts: list[ChartLayout] = []
+    shown = panels.charts
+    cw = (w - 2 * MARGIN - (sum(shown) - 1) * gap) / sum(shown)
+    charts: list[ChartLayout | None] = []
+    x0 = MARGIN
     for k in range(3):
-        x0 = MARGIN + k * (cw + gap)
+        if not shown[k]:
+            charts.append(None)
+            continue
         outer = Rect(x0, charts_bottom, x0 + cw, max(charts_top, charts_bottom + 60.0))
         left = 3.6 * theme.text_px  # the time axis' numbers
         bottom = 1.5 * theme.text_px + 6.0  # the x axis' numbers
         head = 2.5 * theme.title_px  # the title, on up to two lines
         plot = Rect(outer.x0 + left, outer.z0 + bottom, outer.x1 - 6.0, max(outer.z1 - head, outer.z0 + bottom + 30.0))
         charts.append(ChartLayout(outer, plot))
-    return CanvasLayout(w, h, theme, (lanes[0], lanes[1]), (charts[0], charts[1], charts[2]), legend)
+        x0 += cw + gap
+    return CanvasLayout(w, h, theme, tuple(lanes), (charts[0], charts[1], charts[2]), legend)

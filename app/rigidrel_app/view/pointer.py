@@ -67,7 +67,7 @@ class Diagrams:
     length panel), the frame of each diagram, the events that may have a cone drawn, the one drawn
     and the chosen frame's β now."""
 
-    frames: Sequence[ChartFrame]
+    frames: Sequence[ChartFrame | None]
     diagram_frames: tuple[rr.Frame, rr.Frame]
     scene: rr.Scene
     cone_events: tuple[str, ...]
@@ -75,17 +75,21 @@ class Diagrams:
     beta: float
 
 
-def _inside(f: ChartFrame, x: float, z: float) -> bool:
+def _shown_at(d: Diagrams, k: int, x: float, z: float) -> ChartFrame | None:
+    """Chart ``k``'s frame if that chart is shown and ``(x, z)`` is on its plot, else ``None``."""
+    f = d.frames[k] if k < len(d.frames) else None
+    if f is None:
+        return None
     p = f.plot
-    return p.x0 <= x <= p.x1 and p.z0 <= z <= p.z1
+    return f if p.x0 <= x <= p.x1 and p.z0 <= z <= p.z1 else None
 
 
 def press(d: Diagrams, x: float, z: float, now: float) -> Press:
     """What a press at page px ``(x, z)`` asks for, the clock at ``now`` (module docstring)."""
     for k in (0, 1):
-        if k >= len(d.frames) or not _inside(d.frames[k], x, z):
+        f = _shown_at(d, k, x, z)
+        if f is None:
             continue
-        f = d.frames[k]
         near: list[tuple[float, str]] = []
         for name, (te, xe) in d.scene.events_in(frame=d.diagram_frames[k]).items():
             if name in d.cone_events:
@@ -97,16 +101,17 @@ def press(d: Diagrams, x: float, z: float, now: float) -> Press:
         if k == 0 or abs(f.px_one(0.0, now)[1] - z) <= NOW_REACH_PX:
             return Scrub(k, f.data_one(x, z)[1])
         return DragBeta(d.beta, f.plot.width, x)
-    if len(d.frames) > 2 and _inside(d.frames[2], x, z):
-        return Scrub(2, d.frames[2].data_one(x, z)[0])
-    return None
+    lengths = _shown_at(d, 2, x, z)
+    return None if lengths is None else Scrub(2, lengths.data_one(x, z)[0])
 
 
-def scrubbed(d: Diagrams, gesture: Scrub, x: float, z: float) -> float:
+def scrubbed(d: Diagrams, gesture: Scrub, x: float, z: float) -> float | None:
     """The time a scrub that started as ``gesture`` reads, the pointer at page px ``(x, z)``
     (anywhere on the page: a drag may leave its plot; the tab's clock keeps the time in its window
-    as it does a typed one)."""
-    return d.frames[gesture.chart].data_one(x, z)[0 if gesture.chart == 2 else 1]
+    as it does a typed one); ``None`` if its chart is no longer shown (a lesson's step changed the
+    page under the drag)."""
+    f = d.frames[gesture.chart] if gesture.chart < len(d.frames) else None
+    return None if f is None else f.data_one(x, z)[0 if gesture.chart == 2 else 1]
 
 
 def dragged_beta(gesture: DragBeta, x: float) -> float:

@@ -46,7 +46,7 @@ from .lanes import (
     steady_width,
 )
 from .layers import Layer
-from .layout import CanvasLayout
+from .layout import CanvasLayout, Panels
 from .sampling import ADAPTIVE, Sampler
 from .signals import Signals, event_cone_items, key_definition, signals_in, signals_window_end, verdict_lines
 from .state import Resolved, format_value
@@ -152,8 +152,11 @@ class Drawn:
         lengths in both frames. The now-lines' legend names carry no number (the lanes show it).
         While the lower lane rides a point, its ends are in the point's comoving frame at the ride's
         ``instant`` (:meth:`ride_instant`, found here if not given), and :meth:`_riding_items` draws them.
+        With one lane (the chosen frame is the lab, :func:`panels`), ``ends`` has the lab's alone.
         """
         r = self.resolved
+        if len(ends) == 1:
+            ends = [ends[0], ends[0]]
         if r.ride is not None:
             return self._riding_items(now, ends, instant or self.ride_instant(now))
         lab_view, frame_view = self.views
@@ -199,21 +202,25 @@ class Drawn:
         return lab, frame, length
 
     def legend(self) -> list[LegendEntry]:
-        """Every named item of the three charts, static or moving, each name once."""
+        """Every named item of the charts shown (:func:`panels`), static or moving, each name once."""
         moving = self.moving_items(self.window[0], [np.zeros((self.resolved.scene.n_rods, 2))] * 2)
-        items = [it for chart in self.charts for it in chart.items] + [it for m in moving for it in m]
+        shown = panels(self.resolved).charts
+        items = [it for chart, on in zip(self.charts, shown, strict=True) if on for it in chart.items]
+        items += [it for m, on in zip(moving, shown, strict=True) if on for it in m]
         return legend_entries(items)
 
     def lane_pictures(
         self, now: float, layout: CanvasLayout, instant: ComovingInstant | None = None
     ) -> list[LanePicture]:
-        """Both lanes at playback time ``now`` on the canvas: the lab at t = now, the chosen frame at
-        t' = now; or, riding a point, its comoving frame at the ride's ``instant`` (:meth:`ride_instant`,
-        found here if not given), centred on the point, which stays still on screen."""
+        """The lanes ``layout`` has at playback time ``now``: the lab at t = now, then (if shown: not
+        where the chosen frame is the lab, :func:`panels`) the chosen frame at t' = now; or, riding
+        a point, its comoving frame at the ride's ``instant`` (:meth:`ride_instant`, found here if
+        not given), centred on the point, which stays still on screen."""
         r = self.resolved
         if r.ride is not None:
             instant = instant or self.ride_instant(now)
-        titles = lane_titles(r, now, instant)
+        n = len(layout.lanes)
+        titles = lane_titles(r, now, instant)[:n]
         # each lane: its frame, its time and the point it keeps still (a riding lane: the ridden point)
         shown: list[tuple[rr.Frame, float, float | None]] = [(_LAB, now, None)]
         if instant is None:
@@ -221,11 +228,12 @@ class Drawn:
         else:
             t_ride, x_point = instant.event
             shown.append((instant.frame, t_ride, x_point))
+        shown = shown[:n]
         rest = np.array([rod.motion.length for rod in r.scene.rods])
         snaps = [r.scene.snapshot(t, frame=f, fractions=TICK_FRACTIONS) for f, t, _ in shown]
         fits = [lane_fit(x[:, [0, -1]], rest, c) for (x, _), (_, _, c) in zip(snaps, shown, strict=True)]
         tracks = [place.track.width for place in layout.lanes]
-        scales = lane_scales(fits, tracks, self.steady_widths, self.lane_scale)
+        scales = lane_scales(fits, tracks, self.steady_widths[:n], self.lane_scale)
         lanes = [
             lane_picture(r.scene, f, t, scale, place, title, fit, snap, zoom)
             for (f, t, _), scale, place, title, fit, snap, zoom in zip(
@@ -239,7 +247,7 @@ class Drawn:
             signals = (signals[0], signals[0].seen_from(instant.frame))
         times = (now, now if instant is None else instant.event[0])
         out = []
-        for lane, place, sig, t in zip(lanes, layout.lanes, signals, times, strict=True):
+        for lane, place, sig, t in zip(lanes, layout.lanes, signals[:n], times[:n], strict=True):
             light = pulse_segments(sig.pulses_at(t), sig.far_arrivals, lane, place)
             out.append(replace(lane, segments=(*lane.segments, light)))
         return out
@@ -273,6 +281,12 @@ def _now_items(items: tuple[Item, ...], x: FloatArray, y: FloatArray, now_lines:
 def _is_lab(r: Resolved) -> bool:
     """Whether the chosen frame is the lab's (a lab step, or a preset at rest in the lab), unridden."""
     return r.ride is None and r.frame.same_velocity(_LAB)
+
+
+def panels(r: Resolved) -> Panels:
+    """The lanes and charts the canvas shows for ``r``: the chosen frame's unless it is the lab's
+    own (:attr:`~.state.Resolved.lab_only`), the lengths chart while its layer is shown."""
+    return Panels(chosen_frame=not r.lab_only, lengths=Layer.LENGTH_PANEL in r.layers)
 
 
 def ruler_names(r: Resolved) -> tuple[str, str]:
@@ -356,7 +370,7 @@ def build_drawing(
         comoving = None if track is None else (track.t, track.lengths, RIDE_LENGTH_NAME)
         length_chart = length_static(scene, lab, frame, window, length_area, sampler, comoving, label_px)
     else:
-        length_chart = hidden_chart(LENGTH_HIDDEN_TITLE, LENGTH_HIDDEN_NOTE)
+        length_chart = NO_CHART  # not shown: the diagrams take its room (:func:`panels`)
     return Drawn(
         resolved=resolved,
         window=window,
@@ -409,16 +423,8 @@ def _with_horizon(chart: Chart, event: tuple[float, float]) -> Chart:
     return replace(chart, items=(*chart.items, mark))
 
 
-#: The length panel's place when its layer is hidden: a title and a note say so and how to bring it
-#: back (the panel keeps its place, so the diagrams do not jump while a lecturer toggles it).
-LENGTH_HIDDEN_TITLE = "Equal-time length (hidden)"
-LENGTH_HIDDEN_NOTE = "The length panel is hidden:\nturn on its layer to show it."
-
-
-def hidden_chart(title: str, note: str) -> Chart:
-    """A panel that shows only ``title`` and ``note`` (no axes: its chart has no axis names)."""
-    text = Label(0.5, 0.5, note, Style(INK), anchor="center", size=15.0)
-    return Chart(items=(text,), x_title="", y_title="", x_range=(0.0, 1.0), y_range=(0.0, 1.0), title=title)
+#: A chart the canvas does not show (:class:`~.layout.Panels`): nothing to draw.
+NO_CHART = Chart(items=(), x_title="", y_title="", x_range=(0.0, 1.0), y_range=(0.0, 1.0), title="")
 
 
 def _round_outward(t0: float, t1: float) -> tuple[float, float]:

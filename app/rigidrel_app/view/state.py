@@ -143,6 +143,14 @@ class Resolved:
     cone: str | None = None
     """The event whose light cone the diagrams draw (checked against the scene), or ``None``."""
 
+    @property
+    def lab_only(self) -> bool:
+        """Whether the chosen frame is the scene's own lab preset, unridden: its lane and diagram
+        would repeat the lab's, so the canvas shows the lab once
+        (:func:`~rigidrel_app.view.scene_view.panels`). A custom β of 0 is not: a slider dragged
+        through 0 keeps its lane."""
+        return self.ride is None and self.frame.name == "lab" and self.frame.same_velocity(rr.LAB)
+
 
 def event_times(resolved: Resolved) -> tuple[float, ...]:
     """The times of the scene's named events on the playback clock, sorted, each once: their lab
