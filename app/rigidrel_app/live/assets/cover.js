@@ -1,6 +1,6 @@
 /* The page's cover (rigidrel_app/live/cover.py), run as the page is parsed, before any of viser's
    code. The cover is in the page's markup, so it is the first thing painted; it keeps everything
-   else in <body> hidden (cover.css) until the server says that the tab's first page is sent
+   else in the body hidden (cover.css) until the server says that the tab's first page is sent
    (window.rigidrelCover.ready(), after that page's messages) and the canvas has drawn it; then it
    leaves. If the page cannot reach the server, at first or later, the cover comes back and says so
    in plain words; once the server answers again it says that the scene is loading, until the new
