@@ -21,6 +21,10 @@ Python, private to viser (inventory):
 - ``ViserServer._websock_server``: ``on_client_connect`` (a connection before it is a client)
   and ``_live_connections`` (its websocket, whose ``recv`` the message budget wraps).
 - ``viser.infra.WebsockClientConnection``: that connection's type.
+- ``ViserServer._websock_server`` as viser's constructor sets it, after making its web server and
+  before starting it, and that server's ``_server_thread`` (None until it starts) and
+  ``_http_server_root`` (the folder it serves, read once as it starts): the live app's page served
+  from a folder of our own (:class:`PageServer`).
 - ``viser.SceneApi(owner, thread_executor=, event_loop=)`` on a connection of our own
   (``infra.WebsockMessageHandler`` subclassed: its buffer's ``push``, ``atomic_start``,
   ``atomic_end``, ``remove_entity_state_from_buffer``, ``sanctioned_dead_writes``), and a scene's
@@ -31,6 +35,21 @@ Python, private to viser (inventory):
   takes them.
 
 The browser, private to viser's client (inventory; the scripts in ``live/assets/`` use these):
+
+- the client is one page, ``client/build/index.html``: its bundle packed into one inline
+  ``<script>`` in ``<head>`` that unpacks and runs it once the document is parsed, after a
+  ``<meta charset="utf-8">``; a ``<title>``; an empty ``<div id="root">`` in ``<body>``
+  (:func:`page_with` adds to it). Until it connects, and for a second or two after, the page shows
+  viser's own panel (its connection state "Inactive" or "Connecting...", the server's ``ws://``
+  address, "Scene tree") and its "Software WebGL rendering detected" note; the live page's cover
+  (``live/assets/cover.js``) keeps everything in ``<body>`` but itself hidden until the app's first
+  page is drawn.
+- the viewer's ``useGui`` store (found as the playback runtime finds the viewer, below): its
+  ``get().websocketState`` (``"connected"``, ``"reconnecting"``, or ``"inactive"`` while a page
+  without the focus does not try again) and ``subscribe(listener)``, which the cover reads.
+- the same value's ``mutable.current.scene`` (the three.js scene) and its ``onAfterRender`` (three.js
+  calls it after each render): viser renders on demand, so the cover leaves once the canvas has
+  stopped drawing the first page (its labels' glyphs are rasterized over several frames).
 
 - ``canvas[data-engine]``: the three.js canvas (its CSS and rendered size).
 - a control's element ``id`` is its handle's uuid; a slider's own number box is its next sibling
@@ -62,11 +81,16 @@ import asyncio
 import concurrent.futures
 import contextlib
 import functools
+import re
+import shutil
+import tempfile
 import threading
 import types
 import uuid
+import weakref
 from dataclasses import dataclass, field
 from importlib import metadata, resources
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -80,6 +104,7 @@ __all__ = [
     "SUPPORTED_VISER",
     "Message",
     "NodeKey",
+    "PageServer",
     "PlaybackMessage",
     "RecordingScene",
     "SceneFold",
@@ -90,6 +115,7 @@ __all__ = [
     "live_websocket",
     "make_image",
     "on_connection",
+    "page_with",
     "queue_to_client",
     "run_javascript",
     "scene_owner",
@@ -349,3 +375,71 @@ def panel_a11y_js() -> str:
     labels and grey buttons 4.5:1 contrast, from outside (``backends/assets/a11y.js``): for the
     live app's panel and the exported pages that carry viser's client."""
     return resources.files("rigidrel_app.backends").joinpath("assets", "a11y.js").read_text(encoding="utf-8")
+
+
+# ---------------------------------------------------------------------------- the page a browser gets
+def client_page() -> str:
+    """viser's client as viser serves it: one page with its bundle packed inside."""
+    return (Path(viser.__file__).resolve().parent / "client" / "build" / "index.html").read_text(encoding="utf-8")
+
+
+def page_with(head: str, body: str, title: str, html_class: str) -> str:
+    """viser's client page with ``head`` in its ``<head>`` right after the charset (so before the
+    inline loader that unpacks viser's bundle), ``body`` first in its ``<body>`` (before viser's
+    ``#root``), ``title`` as its title and ``html_class`` on its ``<html>``: all there at the page's
+    first paint, before any of viser's code runs. Raises ``RuntimeError`` if the page is not laid
+    out as the viser this module targets lays it out."""
+    page = client_page()
+    edits: list[tuple[re.Match[str], str]] = []
+    for pattern, edit in (
+        (r"<html\b([^>]*)>", lambda m: f'<html{m.group(1)} class="{html_class}">'),
+        (r"<meta charset=\"utf-8\"\s*/?>", lambda m: m.group(0) + head),
+        (r"<title>[^<]*</title>", lambda _: f"<title>{title}</title>"),
+        (r"<body>", lambda m: m.group(0) + body),
+    ):
+        found = re.search(pattern, page)  # in viser's page as it is (what goes in is not searched)
+        if found is None:
+            raise RuntimeError(f"viser's page has no {pattern!r}: rigidrel_app/backends/_viser.py is out of date")
+        edits.append((found, edit(found)))
+    for found, replacement in sorted(edits, key=lambda e: e[0].start(), reverse=True):
+        page = page[: found.start()] + replacement + page[found.end() :]
+    return page
+
+
+class PageServer(viser.ViserServer):
+    """A viser server whose web server serves ``page`` (a whole HTML page, e.g. from
+    :func:`page_with`) instead of viser's own client page; ``**kwargs`` are ``ViserServer``'s.
+
+    viser serves its client from a folder that it names when it makes its web server and that the
+    web server reads once, as it starts, both inside viser's constructor; no setting changes it.
+    So ``page`` is written to a temporary folder of its own, and the web server is given that
+    folder in between: viser sets ``_websock_server`` after making the web server and before
+    starting it. The folder is removed when the server stops (or is collected)."""
+
+    def __init__(self, page: str, **kwargs: Any) -> None:
+        folder = Path(tempfile.mkdtemp(prefix="rigidrel-page-"))
+        (folder / "index.html").write_text(page, encoding="utf-8")
+        self._page_folder = folder
+        self._remove_folder = weakref.finalize(self, shutil.rmtree, folder, True)
+        try:
+            super().__init__(**kwargs)
+        except BaseException:
+            self._remove_folder()
+            raise
+
+    @property
+    def _websock_server(self) -> infra.WebsockServer:  # pyright: ignore[reportIncompatibleVariableOverride]
+        return self.__dict__["_rigidrel_websock_server"]
+
+    @_websock_server.setter
+    def _websock_server(self, server: infra.WebsockServer) -> None:
+        if server._server_thread is not None:  # pyright: ignore[reportPrivateUsage]
+            raise RuntimeError("viser started its web server before naming it: rigidrel_app/backends/_viser.py")
+        server._http_server_root = self._page_folder  # pyright: ignore[reportPrivateUsage]
+        self.__dict__["_rigidrel_websock_server"] = server
+
+    def stop(self) -> None:
+        try:
+            super().stop()
+        finally:
+            self._remove_folder()

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
+from .cover import say_page_drawn
 from .runtime import Report
 from .tab import Tab
 from .timeline import Timeline, TimelineKey
@@ -52,6 +53,7 @@ class Playing:
         if not tab.player.ready:
             tab.painter.runtime_ready()
             tab.draw_now(force_plots=True)
+            say_page_drawn(tab.client)  # the first page is whole: the page's cover leaves once it is drawn
             if tab.state.playback.playing:
                 self.play()
 

@@ -19,12 +19,19 @@ from typing import Any
 
 import viser
 
-from ..backends._viser import CONTROL_MESSAGE_TYPES, WebsockClientConnection, live_websocket, on_connection
+from ..backends._viser import (
+    CONTROL_MESSAGE_TYPES,
+    PageServer,
+    WebsockClientConnection,
+    live_websocket,
+    on_connection,
+)
 from ..lessons import Lesson
 from ..view.scenario import Scenario
 from ..view.state import Settings
 from ..view.vocabulary import Shade
 from .controls import configure_panel
+from .cover import cover_page
 from .greeting import greet
 from .painting import PaintingCache
 from .playback import FRAME_RATE
@@ -141,7 +148,9 @@ class App:
     """A running server. ``with App(...) as app:`` starts it; leaving the block stops it.
 
     Binds 127.0.0.1 unless told otherwise; viser moves to the next port when one is busy
-    (``url`` has the one it got). The share button (it needs the internet) is hidden.
+    (``url`` has the one it got). The share button (it needs the internet) is hidden. A tab's page
+    is viser's with the app's cover in it, up from its first paint until its first page is drawn
+    (:mod:`.cover`).
     """
 
     def __init__(
@@ -193,7 +202,8 @@ class App:
         # a tick can race a tab's disconnect; viser then warns that a message will never be
         # delivered, which is exactly right and not worth a warning
         warnings.filterwarnings("ignore", message=r"Queued a \w+ on a closed connection")
-        self.server = viser.ViserServer(host=host, port=port, label="rigidrel", verbose=False)
+        # viser's page with the app's cover in it, in the theme a new tab opens in (live/cover.py)
+        self.server = PageServer(cover_page(shade), host=host, port=port, label="rigidrel", verbose=False)
         configure_panel(self.server.gui, shade)
         loop = self.server.get_event_loop()
         loop.call_soon_threadsafe(loop.set_exception_handler, self._loop_exception)

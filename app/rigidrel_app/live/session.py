@@ -28,6 +28,7 @@ from ..view.vocabulary import Shade
 from .browser_player import BrowserPlayer
 from .canvas_report import add_canvas_report, decode
 from .controls import build_controls, notice_place
+from .cover import say_page_drawn
 from .gestures import Gestures
 from .key_actions import key_actions
 from .keys import Action
@@ -112,6 +113,8 @@ class Session:
                 if start_time is not None and not notice:
                     self.set_playback(self.state.playback.seek(start_time))
                     self.draw_now(force_plots=True)
+            if timelines is None:  # the page is whole (else once its runtime draws, :class:`Playing`)
+                say_page_drawn(client)
 
     def _wire(self, runtime: bool) -> None:
         self.controls.wire(self.asks)
