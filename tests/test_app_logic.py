@@ -475,10 +475,10 @@ def test_a_short_canvas_puts_lane_titles_on_one_line_then_steps_the_text_down(w:
     for theme in (NORMAL, PRESENTER):
         full = _canvas_layout(w, h, theme, LEGEND_ROWS, 2, ALL_PANELS)
         layout = canvas_layout(w, h, theme)
-        if full.lab_chart.plot.height >= MIN_PLOT_PX:
+        if full.diagram.plot.height >= MIN_PLOT_PX:
             assert layout == full
             continue
-        assert layout.lab_chart.plot.height >= MIN_PLOT_PX, (w, h, theme.name)
+        assert layout.diagram.plot.height >= MIN_PLOT_PX, (w, h, theme.name)
         assert all(lane.title_lines == 1 for lane in layout.lanes)
         assert layout.theme.text_px >= MIN_TEXT_PX and layout.theme.line_px == theme.line_px
         assert layout.theme.name == theme.name and layout.theme.shade == theme.shade

@@ -213,6 +213,7 @@ def test_each_action_has_one_key_viser_knows() -> None:
         "F": Action.TOGGLE_PRESENTER,
         "T": Action.TOGGLE_THEME,
         "D": Action.DESCRIBE,
+        "Z": Action.TOGGLE_ZOOM,
     }
     assert action_for("Q") is None
     assert not set(RESERVED) & set(keys) and set(RESERVED) <= viser_keys

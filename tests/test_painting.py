@@ -13,12 +13,13 @@ import pytest
 
 from rigidrel_app.backends.viser import SHARED_ROOT, shared_root
 from rigidrel_app.live.controls import caption_reserve
-from rigidrel_app.live.painting import PaintingCache, PaintingKey, paint
+from rigidrel_app.live.painting import Painting, PaintingCache, PaintingKey, paint
 from rigidrel_app.live.timeline import TimelineKey, record_timeline
 from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.layout import LEGEND_ROWS, MIN_PLOT_PX, NORMAL, PRESENTER, Theme, canvas_layout
 from rigidrel_app.view.state import CUSTOM_FRAME, Resolved, Settings, resolve
 from tests.test_timeline import read_payload, same
+from tests.viser_client import shown
 
 
 def resolved_of(settings: Settings) -> Resolved:
@@ -135,8 +136,34 @@ def test_every_canvas_at_the_reserve_gives_the_diagrams_their_height() -> None:
         h = caption_reserve(theme)
         for w in (935.0, 1280.0, 1575.0, 1920.0):
             layout = canvas_layout(w, h, theme, LEGEND_ROWS, 1)
-            assert layout.lab_chart.plot.height >= MIN_PLOT_PX, (theme.name, w)
-            assert canvas_layout(w, h - 12, theme, LEGEND_ROWS, 1).lab_chart.plot.height < MIN_PLOT_PX
+            assert layout.diagram.plot.height >= MIN_PLOT_PX, (theme.name, w)
+            assert canvas_layout(w, h - 12, theme, LEGEND_ROWS, 1).diagram.plot.height < MIN_PLOT_PX
+
+
+@pytest.mark.parametrize("settings", [Settings("rod-collision"), LAB_STEP])
+def test_zoomed_one_diagram_takes_the_canvas_and_is_drawn_larger(settings: Settings) -> None:
+    """Key Z: one Minkowski diagram (the chosen frame's; the lab's in a lab step) over the whole
+    canvas, no lanes; it keeps one scale for x and t, and the room makes that scale larger."""
+    flat, zoomed = (paint(resolved_of(settings), PaintingKey(settings, 935.0, 546.0, NORMAL, z)) for z in (False, True))
+    k = 0 if resolved_of(settings).lab_only else 1
+    assert zoomed.layout.lanes == () and [c is not None for c in zoomed.layout.charts] == [k == 0, k == 1, False]
+    one = shown(zoomed.layout.charts[k])
+    assert (
+        one.outer.x0 == flat.layout.shown_charts[0].outer.x0 and one.outer.x1 == flat.layout.shown_charts[-1].outer.x1
+    )
+    assert one.plot.height > 1.5 * shown(flat.layout.charts[k]).plot.height
+
+    def px_per_unit(p: Painting) -> float:
+        f = shown(p.chart_frames[k])
+        return abs(f.px_one(0.0, 1.0)[1] - f.px_one(0.0, 0.0)[1])
+
+    assert px_per_unit(zoomed) > 1.5 * px_per_unit(flat)
+    names = {e.name for e in zoomed.drawn.legend(zoomed.layout.panels.charts)}
+    assert not any("length" in n for n in names), names
+    window = zoomed.drawn.window
+    lanes = zoomed.drawn.lane_pictures(window[0], zoomed.layout)
+    assert lanes == [] and len(zoomed.drawn.moving_items(window[0], [])[k]) > 0  # the diagram still plays
+    zoomed.frame(window[0])  # the frame a runtime shows: drawn without lanes
 
 
 def test_a_new_picture_is_drawn_under_a_root_of_its_own() -> None:

@@ -307,7 +307,7 @@ def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
     # the diagrams' area of the canvas changed (the curves follow V), not only the lanes
     layout = tab.session.painter.layout
     assert layout is not None
-    top = round(layout.height - layout.lab_chart.outer.z1)
+    top = round(layout.height - layout.diagram.outer.z1)
     assert _changed_fraction(after[top:], img[top:]) > 1e-3
     tab.page.screenshot(path=str(shots / "after_V_0.85.png"))
     assert tab.errors == []

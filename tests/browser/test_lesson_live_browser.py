@@ -245,6 +245,20 @@ def test_bell_and_the_barn_keep_their_diagrams_under_their_captions(
         more = band.evaluate("(b) => [b.scrollHeight > b.clientHeight, b.classList.contains('rr-more'), b.tabIndex]")
         assert more == ([True, True, 0] if height == 720 else [False, False, -1]), more
         tab.screenshot(shots / f"step-{index + 1}-{width}.png")
+    # Z: the step's one diagram over the whole canvas, drawn larger; Z again: the page back
+    before = layout
+    tab.press("z")
+
+    def zoomed_in() -> CanvasLayout | None:
+        lay = laid_out()
+        return lay if lay is not None and not lay.lanes else None
+
+    zoomed = wait_until(zoomed_in, timeout=60)
+    grown = zoomed.diagram.plot.height - before.diagram.plot.height  # by the lane's height, at least
+    assert zoomed.charts[1:] == (None, None) and grown >= sum(lane.band.height for lane in before.lanes)
+    tab.screenshot(shots / f"step-14-zoomed-{width}.png")
+    tab.press("z")
+    wait_until(lambda: (lay := laid_out()) is not None and lay == before, timeout=60)
     if height != 720:
         return
     # the band scrolled by the keys that read it; a clicker's PageUp still moves the lesson

@@ -68,7 +68,7 @@ def test_an_event_chosen_from_the_list_gets_its_light_cone_on_both_diagrams(tab:
     img = tab.canvas_after(default_scene)
     layout = tab.session.painter.layout
     assert layout is not None
-    top = round(layout.height - layout.lab_chart.outer.z1)  # the diagrams' part of the canvas
+    top = round(layout.height - layout.diagram.outer.z1)  # the diagrams' part of the canvas
     before = [
         _light_pixels(img[top:, round(c.outer.x0) : round(c.outer.x1)], LIGHT_COLOR) for c in layout.shown_charts[:2]
     ]

@@ -35,7 +35,7 @@ import viser
 from ..view import camera as cam
 from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
 from ..view.lanes import Box, EdgeMark, LanePicture, LaneState, segments_array
-from ..view.layout import CanvasLayout, lane_title_text
+from ..view.layout import CanvasLayout, clock_radius, lane_title_text
 from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, lightness_flipped, plain_text, rgb
 from ._viser import encode_png, make_image, set_image_png, write_label
 
@@ -828,7 +828,8 @@ class PageRenderer:
                 color = color_rgb(theme.ink if seg.style.color == INK else seg.style.color)
                 lines.append(PageLines(pts, np.tile(color, (n, 1)), theme.line_px, 0))
         self._lane_lines.show(lines)
-        self._update_dials(np.concatenate([lane.dials for lane in lanes]), layout.lanes[0].clock_px, theme.shade)
+        dials = np.concatenate([lane.dials for lane in lanes]) if lanes else np.zeros((0, 2))
+        self._update_dials(dials, clock_radius(theme), theme.shade)
         self.titles.show(
             [
                 PageText(p.band.x0, p.title_z, *lane_title_text(lane.title, p, theme.title_px), "top-left")
@@ -861,7 +862,7 @@ class PageRenderer:
                 self._dials = None
 
     def _update_boxes(self, boxes: Sequence[Box], shade: Shade) -> None:
-        if len(boxes) > self._box_capacity:
+        if len(boxes) > self._box_capacity or self._box_capacity == 0:  # never a mesh of no instances
             self.reserve(max(len(boxes), 4), self._dial_capacity)
         n = self._box_capacity
         positions = np.tile(np.array((0.0, 1e5, 0.0), dtype=np.float32), (n, 1))

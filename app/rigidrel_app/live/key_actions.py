@@ -50,6 +50,7 @@ def key_actions(tab: Tab, asks: Requests, steps: LessonSteps) -> dict[Action, Ca
         Action.RESET_VIEW: lambda: tab.painter.fit_camera(force=True),
         Action.TOGGLE_PRESENTER: lambda: asks.set_presenter(not tab.state.presenter),
         Action.TOGGLE_THEME: lambda: asks.set_shade("light" if tab.state.shade == "dark" else "dark"),
+        Action.TOGGLE_ZOOM: lambda: asks.set_zoomed(not tab.state.zoomed),
         Action.PREVIOUS_STEP: lambda: step(-1),
         Action.NEXT_STEP: lambda: step(1),
         Action.TOGGLE_CAPTION: lambda: tab.show(tab.state.with_caption(not tab.state.caption_shown)),

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 #: The keys used here, as viser names them (a subset of its ``HotkeyKey``).
-Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "T", "C", "L", "N", "P", "D"]
+Key = Literal["space", "arrowleft", "arrowright", "pageup", "pagedown", "R", "F", "T", "C", "L", "N", "P", "D", "Z"]
 
 
 class Action(enum.Enum):
@@ -34,6 +34,7 @@ class Action(enum.Enum):
     RESET_VIEW = "reset view"
     TOGGLE_PRESENTER = "presenter mode"
     TOGGLE_THEME = "dark theme"
+    TOGGLE_ZOOM = "zoom"
     PREVIOUS_STEP = "previous step"
     NEXT_STEP = "next step"
     TOGGLE_CAPTION = "caption"
@@ -64,6 +65,7 @@ HOTKEYS: tuple[Hotkey, ...] = (
     Hotkey("F", Action.TOGGLE_PRESENTER, "Presenter mode (panel hidden, larger text) on / off", "F", "presenter"),
     Hotkey("T", Action.TOGGLE_THEME, "Dark projector theme (light on black) on / off", "T", "theme"),
     Hotkey("D", Action.DESCRIBE, "Describe the canvas in words (read by a screen reader)", "D", "describe"),
+    Hotkey("Z", Action.TOGGLE_ZOOM, "Zoom: one diagram over the whole canvas / the lanes and every chart", "Z", "zoom"),
 )
 
 #: A lesson's keys: the clicker and the arrows move between steps (no frame stepping, no figures).
@@ -80,6 +82,7 @@ LESSON_HOTKEYS: tuple[Hotkey, ...] = (
     _SHARED[Action.TOGGLE_PRESENTER],
     _SHARED[Action.TOGGLE_THEME],
     _SHARED[Action.DESCRIBE],
+    _SHARED[Action.TOGGLE_ZOOM],
     Hotkey("C", Action.TOGGLE_CAPTION, "Caption over the lanes hidden / shown", "C", "caption"),
     Hotkey(
         "L",

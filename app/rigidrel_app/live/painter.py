@@ -82,7 +82,7 @@ class Painter:
 
     def _key(self, settings: Settings, state: TabState) -> PaintingKey:
         theme = replace(PRESENTER if state.presenter else NORMAL, shade=state.shade)
-        return PaintingKey(settings, self.canvas_size.width, self.canvas_size.height, theme)
+        return PaintingKey(settings, self.canvas_size.width, self.canvas_size.height, theme, state.zoomed)
 
     def show(self, painting: Painting, shared: bool) -> None:
         """Put ``painting``'s page on the canvas: the page shared by the tabs that show it if

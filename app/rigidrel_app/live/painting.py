@@ -48,6 +48,8 @@ class PaintingKey:
     width: float
     height: float
     theme: Theme
+    zoomed: bool = False
+    """One diagram over the whole canvas (key Z, :func:`~rigidrel_app.view.scene_view.panels`)."""
 
 
 @dataclass(frozen=True)
@@ -142,7 +144,7 @@ def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND
     the final layout's plot areas. ``guess``: the legend rows and title lines to try first (a tab's
     last painting's: a slider's answer then draws once); the result does not depend on it."""
 
-    shown = panels(resolved)
+    shown = panels(resolved, key.zoomed)
 
     def layout_of(rows: int, title_lines: int) -> CanvasLayout:
         return canvas_layout(key.width, key.height, key.theme, rows, title_lines, shown)
@@ -153,23 +155,27 @@ def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND
     rows, title_lines = guess
     layout = layout_of(rows, title_lines)
     drawn = draw(layout)
-    legend = drawn.legend()
+    legend = drawn.legend(shown.charts)
     rows = legend_rows(legend, layout.legend.width, layout.theme)
     tried = layout_of(rows, 1)
     # at both ends of playback: an object's words change at its event (a door open, then closed
     # with what it did to the poles), and the lines must hold the longer
     ends = [[p.title for p in drawn.lane_pictures(now, tried)] for now in drawn.window]
     needed = max(title_lines_needed(titles, tried) for titles in ends)
-    if tried.lanes[0].title_lines == 1:  # a short canvas: one line if they fit it
+    if not tried.lanes:  # one diagram zoomed to the whole canvas: no titles
+        title_lines = 1
+    elif tried.lanes[0].title_lines == 1:  # a short canvas: one line if they fit it
         title_lines = 1 if all(titles_fit_one_line(titles, tried) for titles in ends) else needed
     else:
         title_lines = 1 if needed == 2 else needed
     final = layout_of(rows, title_lines)
     if final.chart_areas != layout.chart_areas or final.theme.text_px != layout.theme.text_px:
         drawn = draw(final)
-        legend = drawn.legend()
+        legend = drawn.legend(shown.charts)
     chart_frames, picture = still_picture(drawn.charts, final.charts, legend, final.legend, final.theme)
-    named = headline(key.settings, [titles[0] for titles in ends], final.lanes[0], final.theme.title_px)
+    named = None
+    if final.lanes:
+        named = headline(key.settings, [titles[0] for titles in ends], final.lanes[0], final.theme.title_px)
     if named is not None:  # the scene and its parameters, where the lab lane's first line leaves room
         picture = picture + PagePicture(texts=(named,))
     return Painting(key, resolved, drawn, final, rows, title_lines, tuple(chart_frames), picture)

@@ -104,6 +104,12 @@ class Requests:
         size arrives from the browser and lays the page out again); off: both back."""
         self._relook(self.state.with_presenter(on), refit=True)
 
+    def set_zoomed(self, on: bool) -> None:
+        """Key Z: one Minkowski diagram (the chosen frame's, or the lab's in a lab step) over the
+        whole canvas, drawn larger, playing on; off: the lanes and every chart back. The canvas
+        keeps its size; the camera is fitted to the new page."""
+        self._relook(self.state.with_zoomed(on), refit=True)
+
     def set_shade(self, shade: Shade) -> None:
         """The dark projector theme (light ink on black, the panel dark) or the light one; the page
         is drawn again as it is (the camera stays)."""

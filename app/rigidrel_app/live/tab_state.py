@@ -60,6 +60,8 @@ class TabState:
     """The theme: light, or the dark projector theme (key T)."""
     presenter: bool = False
     """Presenter mode (key F): the control panel minimized, larger text and thicker lines."""
+    zoomed: bool = False
+    """One Minkowski diagram over the whole canvas, drawn larger (key Z; Z again: the page back)."""
     caption_shown: bool = True
     """The lesson's caption band over the lanes (key C hides it)."""
     step: int = 0
@@ -117,6 +119,9 @@ class TabState:
 
     def with_presenter(self, on: bool) -> TabState:
         return replace(self, presenter=on)
+
+    def with_zoomed(self, on: bool) -> TabState:
+        return replace(self, zoomed=on)
 
     def with_caption(self, shown: bool) -> TabState:
         return replace(self, caption_shown=shown)

@@ -269,7 +269,9 @@ def record_timeline(
     ``tid``: its id (default :func:`timeline_id`, in this process)."""
     layout = key.layout
     drawn = build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
-    chart_frames, picture = still_picture(drawn.charts, layout.charts, drawn.legend(), layout.legend, layout.theme)
+    chart_frames, picture = still_picture(
+        drawn.charts, layout.charts, drawn.legend(layout.panels.charts), layout.legend, layout.theme
+    )
     still, moving = RecordingScene(), RecordingScene()
     renderer = PageRenderer(still.scene, moving.scene)
     renderer.set_static(layout, picture, drawn.ruler_names)

@@ -116,24 +116,22 @@ class ChartLayout:
 
 @dataclass(frozen=True)
 class Panels:
-    """Which of the canvas' parts are shown. The lab's lane and diagram always are; the chosen
-    frame's lane and diagram not where that frame is the lab itself (a lesson step in the lab: the
-    same lane twice says nothing twice), and the lengths chart not while its layer is hidden. The
-    parts shown share the room of those that are not."""
+    """Which of the canvas' parts are shown: the lanes (the lab's, then the chosen frame's, not
+    where that frame is the lab itself: the same lane twice says nothing twice; none while one
+    diagram is zoomed to the whole canvas) and the charts (the lab's Minkowski diagram, the chosen
+    frame's, the equal-time lengths; at least one diagram). The parts shown share the room of those
+    that are not."""
 
-    chosen_frame: bool = True
-    """The chosen frame's lane and Minkowski diagram."""
-    lengths: bool = True
-    """The equal-time lengths chart."""
+    lanes: int = 2
+    """The lanes shown: 2, 1 (the lab's) or 0."""
+    charts: tuple[bool, bool, bool] = (True, True, True)
+    """Whether each chart is shown: the lab diagram, the chosen frame's, the lengths."""
 
-    @property
-    def charts(self) -> tuple[bool, bool, bool]:
-        """Whether each chart is shown: the lab diagram, the chosen frame's, the lengths."""
-        return True, self.chosen_frame, self.lengths
-
-    @property
-    def lanes(self) -> int:
-        return 2 if self.chosen_frame else 1
+    def __post_init__(self) -> None:
+        if not (self.charts[0] or self.charts[1]):
+            raise ValueError(f"a canvas shows a Minkowski diagram; charts shown: {self.charts}")
+        if self.lanes not in (0, 1, 2):
+            raise ValueError(f"a canvas shows 0, 1 or 2 lanes; got {self.lanes}")
 
 
 ALL_PANELS = Panels()
@@ -150,12 +148,15 @@ class CanvasLayout:
     """The lab diagram, the chosen frame's diagram, the equal-time lengths; ``None`` for one not
     shown (:class:`Panels`)."""
     legend: Rect
+    panels: Panels = ALL_PANELS
+    """What is shown (:class:`Panels`)."""
 
     @property
-    def lab_chart(self) -> ChartLayout:
-        """The lab's Minkowski diagram (always shown)."""
-        chart = self.charts[0]
-        assert chart is not None, "the lab diagram is always shown"
+    def diagram(self) -> ChartLayout:
+        """The first Minkowski diagram shown (the lab's, or the chosen frame's alone): its plot's
+        height is what :data:`MIN_PLOT_PX` holds, and its area what the diagrams are sampled for."""
+        chart = self.charts[0] or self.charts[1]
+        assert chart is not None, "a canvas shows a Minkowski diagram (Panels)"
         return chart
 
     @property
@@ -167,7 +168,7 @@ class CanvasLayout:
     def chart_areas(self) -> tuple[tuple[float, float], tuple[float, float]]:
         """Plot-area sizes (px) of the Minkowski diagrams and of the lengths chart (the diagrams'
         for a lengths chart not shown: nothing is drawn on it)."""
-        a = self.lab_chart.plot
+        a = self.diagram.plot
         c = a if self.charts[2] is None else self.charts[2].plot
         return (a.width, a.height), (c.width, c.height)
 
@@ -270,13 +271,8 @@ def title_lines_needed(titles: Sequence[str], layout: CanvasLayout) -> int:
     :data:`TITLE_SPARE` to spare (a later instant's numbers may be a character longer): at
     least 2. :func:`lane_title_text` then sets them as large as those lines allow."""
     px = min(layout.theme.title_px, MIN_TEXT_PX)
-    return max(
-        2,
-        *(
-            wrap_title(t, lane.band.width / TITLE_SPARE, px).count("\n") + 1
-            for t, lane in zip(titles, layout.lanes, strict=False)
-        ),
-    )
+    lines = [wrap_title(t, lane.band.width / TITLE_SPARE, px).count("\n") + 1 for t, lane in zip(titles, layout.lanes)]
+    return max([2, *lines])
 
 
 def lane_title_text(title: str, layout: LaneLayout, px: float) -> tuple[str, float]:
@@ -383,7 +379,7 @@ def canvas_layout(
     layout = _canvas_layout(width, height, theme, legend_rows, lines, panels)
     steps = ((theme, 1), (smaller, 1)) if title_lines == 1 else ((smaller, lines),)
     for t, n in steps:
-        if layout.lab_chart.plot.height >= MIN_PLOT_PX:
+        if layout.diagram.plot.height >= MIN_PLOT_PX:
             break
         layout = _canvas_layout(width, height, t, legend_rows, n, panels)
     return layout
@@ -396,7 +392,7 @@ def height_for_plots(theme: Theme, width: float = 1000.0, panels: Panels = ALL_P
     depends on ``width`` (the lanes and the plots' heights do not)."""
     tall = 4000.0
     layout = _canvas_layout(width, tall, theme, LEGEND_ROWS, 1, panels)
-    return math.ceil(tall - (layout.lab_chart.plot.height - MIN_PLOT_PX))
+    return math.ceil(tall - (layout.diagram.plot.height - MIN_PLOT_PX))
 
 
 def _canvas_layout(
@@ -453,4 +449,4 @@ def _canvas_layout(
         plot = Rect(outer.x0 + left, outer.z0 + bottom, outer.x1 - 6.0, max(outer.z1 - head, outer.z0 + bottom + 30.0))
         charts.append(ChartLayout(outer, plot))
         x0 += cw + gap
-    return CanvasLayout(w, h, theme, tuple(lanes), (charts[0], charts[1], charts[2]), legend)
+    return CanvasLayout(w, h, theme, tuple(lanes), (charts[0], charts[1], charts[2]), legend, panels)

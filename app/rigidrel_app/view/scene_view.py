@@ -152,11 +152,11 @@ class Drawn:
         lengths in both frames. The now-lines' legend names carry no number (the lanes show it).
         While the lower lane rides a point, its ends are in the point's comoving frame at the ride's
         ``instant`` (:meth:`ride_instant`, found here if not given), and :meth:`_riding_items` draws them.
-        With one lane (the chosen frame is the lab, :func:`panels`), ``ends`` has the lab's alone.
+        With fewer lanes shown (:func:`panels`), ``ends`` are :meth:`rod_ends`'.
         """
         r = self.resolved
-        if len(ends) == 1:
-            ends = [ends[0], ends[0]]
+        if len(ends) < 2:
+            ends = self.rod_ends(now, instant)
         if r.ride is not None:
             return self._riding_items(now, ends, instant or self.ride_instant(now))
         lab_view, frame_view = self.views
@@ -201,10 +201,21 @@ class Drawn:
             length = ()
         return lab, frame, length
 
-    def legend(self) -> list[LegendEntry]:
-        """Every named item of the charts shown (:func:`panels`), static or moving, each name once."""
+    def rod_ends(self, now: float, instant: ComovingInstant | None = None) -> list[FloatArray]:
+        """The rods' ends ``(rods, 2)`` at playback time ``now`` in each lane's frame, as
+        :meth:`lane_pictures` draws them: the lab at t = now, the chosen frame at t′ = now or,
+        riding, the comoving frame at the ride's ``instant`` (found here if not given)."""
+        r = self.resolved
+        if r.ride is not None:
+            instant = instant or self.ride_instant(now)
+        shown = [(_LAB, now), (r.frame, now) if instant is None else (instant.frame, instant.event[0])]
+        return [r.scene.snapshot(t, frame=f, fractions=TICK_FRACTIONS)[0][:, [0, -1]] for f, t in shown]
+
+    def legend(self, shown: tuple[bool, bool, bool] | None = None) -> list[LegendEntry]:
+        """Every named item of the charts ``shown`` (default: as :func:`panels` has them, unzoomed),
+        static or moving, each name once."""
         moving = self.moving_items(self.window[0], [np.zeros((self.resolved.scene.n_rods, 2))] * 2)
-        shown = panels(self.resolved).charts
+        shown = panels(self.resolved).charts if shown is None else shown
         items = [it for chart, on in zip(self.charts, shown, strict=True) if on for it in chart.items]
         items += [it for m, on in zip(moving, shown, strict=True) if on for it in m]
         return legend_entries(items)
@@ -220,6 +231,8 @@ class Drawn:
         if r.ride is not None:
             instant = instant or self.ride_instant(now)
         n = len(layout.lanes)
+        if n == 0:  # one diagram zoomed to the whole canvas
+            return []
         titles = lane_titles(r, now, instant)[:n]
         # each lane: its frame, its time and the point it keeps still (a riding lane: the ridden point)
         shown: list[tuple[rr.Frame, float, float | None]] = [(_LAB, now, None)]
@@ -283,10 +296,16 @@ def _is_lab(r: Resolved) -> bool:
     return r.ride is None and r.frame.same_velocity(_LAB)
 
 
-def panels(r: Resolved) -> Panels:
-    """The lanes and charts the canvas shows for ``r``: the chosen frame's unless it is the lab's
-    own (:attr:`~.state.Resolved.lab_only`), the lengths chart while its layer is shown."""
-    return Panels(chosen_frame=not r.lab_only, lengths=Layer.LENGTH_PANEL in r.layers)
+def panels(r: Resolved, zoomed: bool = False) -> Panels:
+    """The lanes and charts the canvas shows for ``r``: the chosen frame's lane and diagram unless
+    that frame is the lab's own (:attr:`~.state.Resolved.lab_only`), the lengths chart while its
+    layer is shown. ``zoomed`` (key Z): one diagram, the chosen frame's (the lab's in a lab step),
+    over the whole canvas, drawn larger (a diagram keeps one scale for x and t, so its height bounds
+    it: the lanes give theirs)."""
+    one_lab = r.lab_only
+    if zoomed:
+        return Panels(lanes=0, charts=(one_lab, not one_lab, False))
+    return Panels(lanes=1 if one_lab else 2, charts=(True, not one_lab, Layer.LENGTH_PANEL in r.layers))
 
 
 def ruler_names(r: Resolved) -> tuple[str, str]:
