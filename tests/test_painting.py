@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from rigidrel_app.backends.viser import SHARED_ROOT, shared_root
-from rigidrel_app.live.controls import caption_reserve
+from rigidrel_app.live.controls import CAPTION_SHARE, caption_reserve
 from rigidrel_app.live.painting import Painting, PaintingCache, PaintingKey, paint
 from rigidrel_app.live.timeline import TimelineKey, record_timeline
 from rigidrel_app.view.layers import Layer
@@ -107,11 +107,11 @@ LAB_STEP = Settings("bell-spaceships", frame="lab")  # the lesson's Bell step: t
 @pytest.mark.parametrize("theme", [NORMAL, PRESENTER])
 def test_a_lab_step_under_a_caption_shows_the_lab_once_with_diagrams_of_150_px(theme: Theme) -> None:
     """At 1280x720 under a lesson's caption band (the rest of the viewport beyond the canvas
-    height the band leaves, :func:`caption_reserve`, at most 30 %), Bell's lab step (titles of four
+    height the band leaves, :func:`caption_reserve`, at most CAPTION_SHARE), Bell's lab step (titles of four
     lines) gets one lane, one Minkowski diagram and the lengths chart, and its plots 150 px or more;
     its legend names nothing of a frame not shown."""
     canvas_px = caption_reserve(theme)
-    band = min(720 - canvas_px, 0.3 * 720)
+    band = min(720 - canvas_px, CAPTION_SHARE * 720)
     assert band >= 4 * 23  # a title and three lines of the caption at 17 px
     width = 1280 if theme is PRESENTER else 1280 - 345  # presenter mode folds the panel away
     painting = paint(resolved_of(LAB_STEP), PaintingKey(LAB_STEP, width, 720 - band, theme))

@@ -17,7 +17,7 @@ import pytest
 
 from rigidrel_app.backends.viser import DARK_CANVAS_CSS, sent_for_shade
 from rigidrel_app.cli import build_parser
-from rigidrel_app.live.controls import caption_message, caption_reserve, page_style
+from rigidrel_app.live.controls import CAPTION_SHARE, caption_message, caption_reserve, page_style
 from rigidrel_app.live.keys import HOTKEYS, LESSON_HOTKEYS, Action, action_for
 from rigidrel_app.view.layout import NORMAL, PRESENTER, canvas_layout
 from rigidrel_app.view.objects import BARRIER_COLOR, MARKER_COLOR
@@ -88,7 +88,13 @@ def test_the_page_style_inverts_the_canvas_only_when_dark() -> None:
     assert page_style("light") == ""
     assert DARK_CANVAS_CSS in page_style("dark") and "invert(1)" in DARK_CANVAS_CSS
     dark = json.loads(caption_message("", False, "dark"))
-    assert dark == {"html": "", "shown": False, "style": page_style("dark"), "reserve": caption_reserve(NORMAL)}
+    assert dark == {
+        "html": "",
+        "shown": False,
+        "style": page_style("dark"),
+        "reserve": caption_reserve(NORMAL),
+        "share": CAPTION_SHARE,
+    }
     band = json.loads(caption_message("<h2>Step</h2>", True))
     assert band["style"] == "" and band["shown"] and "<h2>Step</h2>" in band["html"]
 

@@ -255,7 +255,7 @@ def test_the_canvas_is_described_in_a_polite_live_region(collision: AppPage) -> 
     wait_until(lambda: region.text_content().startswith("Rod-rod collision"))
     assert not region.is_visible() or region.bounding_box()["width"] <= 1  # type: ignore[index]
     tab.choose("Frame", "lab")
-    wait_until(lambda: "Lower lane: the lab frame" in region.text_content())
+    wait_until(lambda: "One lane: the lab frame" in region.text_content())  # the lab once
     said = region.text_content()
     press(tab, " ")  # playing: the words stay (no announcement per frame)
     wait_until(lambda: tab.session.player.playing)

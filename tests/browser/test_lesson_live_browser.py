@@ -13,7 +13,7 @@ import pytest
 
 from rigidrel_app.backends.viser import shared_root
 from rigidrel_app.lessons import builtin_lesson, parse_lesson
-from rigidrel_app.live.controls import caption_reserve
+from rigidrel_app.live.controls import CAPTION_SHARE, caption_reserve
 from rigidrel_app.live.keys import Action
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
@@ -218,11 +218,11 @@ def test_bell_and_the_barn_keep_their_diagrams_under_their_captions(
     open_tab: OpenTab, lesson_app: App, shots: Path, width: int, height: int
 ) -> None:
     """Steps 13 and 14 (captions of five to seven lines, both in the lab frame): the band takes what
-    the viewport has beyond the canvas the diagrams need (at most 30 %), the rest of the caption
+    the viewport has beyond the canvas the diagrams need (at most CAPTION_SHARE), the rest of the caption
     scrolls in it, and the canvas shows the lab once, its plots 150 px high or more."""
     tab = open_tab(lesson_app, width, height)
     tab.wait_caption(PAPER.steps[0].title)
-    band_px = max(min(height - caption_reserve(NORMAL), 0.3 * height), 88)
+    band_px = max(min(height - caption_reserve(NORMAL), CAPTION_SHARE * height), 88)
     band = tab.page.locator("#rigidrel-caption")
     for index in (12, 13):
         tab.session.go_to_step(index)

@@ -135,7 +135,9 @@ def _in_words(step: Step) -> str:
     opens on (its start, else the origin event's t = 0 when its window holds it)."""
     window = step.window or step.resolved.scene.time_window(frame=step.resolved.frame)
     start = step.start if step.start is not None else min(max(0.0, window[0]), window[1])
-    lines = "".join(f"<p>{html.escape(line)}</p>" for line in describe(step.resolved, start).full.splitlines())
+    lines = "".join(
+        f"<p>{html.escape(line)}</p>" for line in describe(step.resolved, start, one_lane=False).full.splitlines()
+    )
     return f"<details class='words'><summary>The picture in words</summary>{lines}</details>"
 
 

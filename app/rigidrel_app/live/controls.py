@@ -648,8 +648,17 @@ def caption_message(band_html: str, shown: bool, shade: Shade = "light", theme: 
     :data:`_CAPTION_JS`); ``band_html`` "" and ``shown`` False for a tab without a lesson. Its
     ``reserve`` is the canvas height the band leaves (:func:`caption_reserve`)."""
     band = CAPTION_CSS + band_html if band_html else ""
-    message = {"html": band, "shown": shown, "style": page_style(shade), "reserve": caption_reserve(theme)}
+    message = {
+        "html": band, "shown": shown, "style": page_style(shade),
+        "reserve": caption_reserve(theme), "share": CAPTION_SHARE,
+    }  # fmt: skip
     return json.dumps(message)
+
+
+#: The most of the window's height a lesson's caption band takes (:func:`caption_reserve`): at
+#: 1280x720 the diagrams' need leaves it less (174 px); at 1920x1080 it is 270 px, a title and about
+#: seven lines of the caption at the desk's sizes, five in presenter mode.
+CAPTION_SHARE = 0.25
 
 
 def caption_reserve(theme: Theme) -> int:
@@ -657,7 +666,8 @@ def caption_reserve(theme: Theme) -> int:
     two lanes with one-line titles and diagrams of :data:`~rigidrel_app.view.layout.MIN_PLOT_PX`
     take at ``theme``'s sizes stepped down to the desk's (as
     :func:`~rigidrel_app.view.layout.canvas_layout` steps them on a short canvas). The page gives
-    the band the rest of the viewport (at most 30 % of it); a longer caption scrolls in its band."""
+    the band the rest of the viewport (at most :data:`CAPTION_SHARE` of it); a longer caption
+    scrolls in its band."""
     desk = replace(theme, text_px=min(theme.text_px, NORMAL.text_px), title_px=min(theme.title_px, NORMAL.title_px))
     return math.ceil(height_for_plots(desk))
 

@@ -89,10 +89,12 @@ def _passed(scene: rr.Scene, frame: rr.Frame, now: float, name: str) -> str:
     return f"Events passed in the {name} lane: {said}."
 
 
-def describe(resolved: Resolved, now: float) -> Description:
+def describe(resolved: Resolved, now: float, one_lane: bool | None = None) -> Description:
     """``resolved`` at playback time ``now`` (the lab lane's t and the lower lane's t′), in words.
     While the lower lane rides a point, it is described in the frame its second diagram is drawn
-    in (the scene's default), and says so."""
+    in (the scene's default), and says so. ``one_lane``: the picture shows the lab alone (by
+    default where the chosen frame is the lab's own, as the live canvas draws it; an exported
+    lesson's lanes show two)."""
     scene, frame = resolved.scene, resolved.frame
     d = rr.describe(scene)
     params = ", ".join(
@@ -103,7 +105,7 @@ def describe(resolved: Resolved, now: float) -> Description:
     ride = ""
     if resolved.ride is not None:
         ride = f" The lower lane rides {resolved.ride.label(scene)}; described here in the {lower} frame."
-    if resolved.lab_only:  # one lane, one diagram: the chosen frame is the lab
+    if resolved.lab_only if one_lane is None else one_lane:  # one lane: the chosen frame is the lab
         frames_text = "One lane: the lab frame (the frame chosen)."
         lanes, events = (_lane(scene, rr.LAB, now, "lab"),), (_passed(scene, rr.LAB, now, "lab"),)
     else:

@@ -11,16 +11,16 @@ if (!window.rigidrelCaption) {
   var root = document.getElementById('root');
   // The band's height does not follow its text: it is what the viewport has beyond the canvas
   // height the diagrams need (the server's `reserve`), at least a title and two lines, at most
-  // 30 % of the viewport. So every step of a lesson leaves the canvas the same size (a step change
+  // the server's share of the viewport (`share`). So every step of a lesson leaves the canvas the same size (a step change
   // never resizes it, so it is never drawn for one size and shown at another), and a long caption
   // scrolls inside its band: a shadow at its foot says there is more, the wheel or ↑ ↓ read it.
-  var reserve = 0;
+  var reserve = 0, share = 0.25;
   band.setAttribute('role', 'region');
   band.setAttribute('aria-label', 'Step caption');
   var fit = function () {
     var shown = band.style.display !== 'none';
     if (shown) {
-      var room = Math.min(window.innerHeight - reserve, 0.3 * window.innerHeight);
+      var room = Math.min(window.innerHeight - reserve, share * window.innerHeight);
       band.style.height = Math.max(room, 88) + 'px';
     }
     var more = shown && band.scrollHeight > band.clientHeight + 2;
@@ -67,6 +67,7 @@ if (!window.rigidrelCaption) {
     band.innerHTML = m.html;
     band.scrollTop = 0;
     reserve = m.reserve || 0;
+    share = m.share || share;
     band.style.display = m.shown ? 'block' : 'none';
     fit();
   }, 150);
