@@ -125,10 +125,10 @@
   /* done() once the canvas has drawn what it was sent: viser renders on demand, so once the
      scene, its labels' glyphs included (rasterized a few milliseconds a frame), are drawn, it stops
      rendering. That is QUIET_MS without a render, seen through three.js's scene.onAfterRender; or
-     MOST_MS at most (a page that plays at once never stops). */
+     MOST_MS at most (a page that plays at once never stops; its first frames draw the glyphs). */
   var QUIET_MS = 200;
   var LEAST_MS = 100;
-  var MOST_MS = 4000;
+  var MOST_MS = 1500;
   function whenDrawn(done) {
     var scene = viewer && viewer.mutable && viewer.mutable.current && viewer.mutable.current.scene;
     var start = performance.now();
