@@ -1,13 +1,16 @@
 """The app in a real browser: it loads, draws the core's positions, and reacts to a user.
 
-Each test starts its own server (127.0.0.1, free port) and page; screenshots land in
-``test-artifacts/screenshots/<test>/``. The tests that set the state they look at and read the
-canvas share one tab: they are in ``test_canvas_browser.py``.
+The tests that use the app as a person does share one tab on the file's server (``tab``: reset
+before each test to where a new tab opens, :meth:`AppPage.reset`); the tests of a tab's start-up,
+of a screen's density and of tabs side by side open their own (``new_tab``, or more). Servers bind
+127.0.0.1 on a free port; screenshots land in ``test-artifacts/screenshots/<test>/``. The tests
+that set the state they look at and read the canvas are in ``test_canvas_browser.py``.
 """
 
 from __future__ import annotations
 
 import contextlib
+import io
 import json
 import re
 import time
@@ -22,8 +25,10 @@ from PIL import Image
 from playwright.sync_api import ViewportSize
 
 import rigidrel_core as rr
-from rigidrel_app.backends._viser import handle_uuid
+from rigidrel_app.backends._viser import handle_uuid, run_javascript
 from rigidrel_app.live.canvas_report import LABEL as CANVAS_REPORT_LABEL
+from rigidrel_app.live.keys import Action
+from rigidrel_app.live.playback import Playback
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import Settings
@@ -83,6 +88,9 @@ class AppPage:
     ) -> None:
         """``query``: added to the app's address (``"?fixedDpr=1"`` holds viser's resolution)."""
         self.app = app
+        self.viewport = viewport
+        self.marks = 0
+        """Marks sent to the page (:meth:`wait_taken`)."""
         self.errors: list[str] = []
         before = set(app.sessions)
         self.page = browser.new_page(viewport=viewport, device_scale_factor=device_scale_factor)
@@ -128,6 +136,99 @@ class AppPage:
 
     def close(self) -> None:
         self.page.close()
+
+    def reset(self, start: Settings | None = None) -> None:
+        """Put the tab back where a new tab on its server opens, for the next test that shares it.
+
+        The session: ``start`` (default: the server's start) with its values, frame, layers and
+        cone, paused at the start of its window at speed 1 and looping, presenter mode off, the
+        server's theme, no notice, every box showing its value (typed text that was refused too),
+        "Auto-fit view" on and the camera fitted. The page: its window at the size it opened
+        with, no menu open, nothing focused. Returns once the page has taken all of it (a mark
+        sent after it has run there), is laid out for its canvas and its canvas holds still; the
+        page's errors are counted from here."""
+        page, s = self.page, self.session
+        if page.locator("[role=listbox]:visible").count():
+            page.keyboard.press("Escape")  # a menu left open
+        page.evaluate("() => document.activeElement && document.activeElement.blur()")
+        resized = s.state.presenter or page.viewport_size != self.viewport
+        if page.viewport_size != self.viewport:
+            page.set_viewport_size(self.viewport)
+        if s.state.playback.playing:  # paused first: the browser's frame where it stops sets the clock
+            s.perform(Action.TOGGLE_PLAY)
+            s.client.flush()
+        wait_until(lambda: s.playback_settled, timeout=30)
+        with s.lock, s.client.atomic():
+            if s.state.presenter:
+                s.asks.set_presenter(False)
+            s.asks.set_shade(self.app.shade)
+            s.controls.fit.value = True
+            s.controls.loop.value = True
+            s.controls.speed.show(1.0)
+            s.asks.change(start or (self.app.start.settings if self.app.start else Settings()), refit=True)
+            s.asks.set_playback(Playback.start(s.state.playback.window))
+            s.show(s.state, put_back=True)
+            s.draw_now(force_plots=True)
+            s.painter.fit_camera(force=True)
+        s.client.flush()
+        if resized:  # the page has unfolded its panel and taken its size before its canvas is measured
+            self.wait_taken()
+        self.wait_laid_out(stable=resized)
+        self.wait_taken()
+        box = page.locator("canvas[data-engine]").bounding_box()
+        assert box is not None
+        shots = [self.clip(box)]
+
+        def still() -> bool:
+            shots.append(self.clip(box))
+            a, b = shots[-2], shots[-1]
+            return a.shape == b.shape and _changed_fraction(a, b) < 1e-4
+
+        wait_until(still, timeout=30, interval=0.1)
+        self.errors.clear()
+
+    def wait_taken(self) -> None:
+        """Until the page has taken everything the server sent it so far, and drawn it: a mark sent
+        now (one websocket, read in order) set two animation frames after the page has run it."""
+        s = self.session
+        self.marks += 1
+        with s.lock:
+            run_javascript(
+                s.client,
+                "requestAnimationFrame(() => requestAnimationFrame(() => {"
+                f" window.__rigidrelTaken = {self.marks}; }}));",
+            )
+        s.client.flush()
+        self.page.wait_for_function("(n) => window.__rigidrelTaken === n", arg=self.marks, timeout=30_000)
+
+    def wait_laid_out(self, stable: bool = True) -> None:
+        """Until the session's page is laid out for the canvas as the browser has it now (with
+        ``stable``, the same over two reads 0.1 s apart: a panel folding away resizes it over a
+        few frames)."""
+        s = self.session
+        sizes: list[Any] = []
+
+        def laid_out() -> bool:
+            css = self.page.evaluate(
+                "() => { const c = document.querySelector('canvas[data-engine]');"
+                " return c ? [c.clientWidth, c.clientHeight] : null; }"
+            )
+            layout = s.painter.layout
+            sizes.append(css)
+            return (
+                css is not None
+                and (not stable or sizes[-2:] == [css, css])
+                and layout is not None
+                and s.painter.canvas_size.measured
+                and (layout.width, layout.height) == (css[0], css[1])
+            )
+
+        wait_until(laid_out, timeout=30, interval=0.1)
+
+    def clip(self, box: Any) -> np.ndarray:
+        """What the page shows in ``box`` (page px) now, as RGB (int16)."""
+        png = self.page.screenshot(clip=box)
+        return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
 
     def nodes(self, *names: str) -> list[dict[str, Any] | None]:
         """What viser's client holds of these scene nodes now, read in one go (one instant of the
@@ -266,7 +367,16 @@ def rods_drawn(tab: AppPage, timeout: float = 30.0) -> list[list[tuple[int, int]
 
 
 # ====================================================================== tests
-def test_page_loads_and_renders(tab: AppPage, shots: Path) -> None:
+@pytest.fixture
+def tab(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens."""
+    shared_tab.reset()
+    return shared_tab
+
+
+def test_page_loads_and_renders(new_tab: AppPage, shots: Path) -> None:
+    tab = new_tab
+
     def drawn() -> tuple[int, int] | None:
         # not blank: the rods' blue and the ink of ticks, clocks and axes are on the canvas
         img = tab.canvas()
@@ -283,9 +393,10 @@ def test_page_loads_and_renders(tab: AppPage, shots: Path) -> None:
     assert tab.external == []
 
 
-def test_no_plotly_and_a_light_connection(tab: AppPage) -> None:
+def test_no_plotly_and_a_light_connection(new_tab: AppPage) -> None:
     """A tab receives no plotly.js and at most 300 kB over the websocket until its first picture
     (the whole default scene drawn: lanes, diagrams, legend)."""
+    tab = new_tab
     wait_until(lambda: tab.texts() and any("Equal-time" in t for t in tab.texts()), timeout=30)
     first_picture = time.monotonic()
     received = sum(n for t, n, _ in tab.received if t <= first_picture)
