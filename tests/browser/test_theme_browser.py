@@ -2,7 +2,8 @@
 every tab dark, and a lesson's caption band follows it.
 
 The canvas is measured, not just the session's flag: on a dark page the ground is black, the rods
-show their lightness-flipped colour, and the panel is in viser's dark mode.
+show their lightness-flipped colour, and the panel is in viser's dark mode. The tests of one tab
+share one, reset before each to where a new tab opens; a server started dark has tabs of its own.
 """
 
 from __future__ import annotations
@@ -21,6 +22,14 @@ from tests.browser.test_app_browser import AppPage
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
+
+
+@pytest.fixture
+def tab(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens (:meth:`AppPage.reset`)."""
+    shared_tab.reset()
+    return shared_tab
+
 
 PAPER = builtin_lesson("paper")
 
