@@ -2,9 +2,10 @@
 
 The tests that use the app as a person does share one tab on the file's server (``tab``: reset
 before each test to where a new tab opens, :meth:`AppPage.reset`); the tests of a tab's start-up,
-of a screen's density and of tabs side by side open their own (``new_tab``, or more). Servers bind
-127.0.0.1 on a free port; screenshots land in ``test-artifacts/screenshots/<test>/``. The tests
-that set the state they look at and read the canvas are in ``test_canvas_browser.py``.
+of a screen's density and of tabs side by side open their own (``new_tab``, or more) and come
+first, so that the shared tab (opened by the first test that takes it) draws beside none of them.
+Servers bind 127.0.0.1 on a free port; screenshots land in ``test-artifacts/screenshots/<test>/``.
+The tests that set the state they look at and read the canvas are in ``test_canvas_browser.py``.
 """
 
 from __future__ import annotations
@@ -406,24 +407,6 @@ def test_no_plotly_and_a_light_connection(new_tab: AppPage) -> None:
     assert not any("plotly" in src.lower() for src in scripts)
 
 
-def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
-    before_charts = tab.session.painter.drawn.charts  # type: ignore[union-attr]
-    before_velocity = tab.session.painter.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
-    img = tab.canvas_after(np.zeros_like(tab.canvas()))
-    tab.type_into_slider("V", 0.85)
-    wait_until(lambda: tab.session.state.settings.value("v") == 0.85)
-    after = tab.canvas_after(img)
-    assert tab.session.painter.drawn.resolved.scene.final_velocities != before_velocity  # type: ignore[union-attr]
-    assert all(a is not b for a, b in zip(tab.session.painter.drawn.charts, before_charts, strict=True))  # type: ignore[union-attr]
-    # the diagrams' area of the canvas changed (the curves follow V), not only the lanes
-    layout = tab.session.painter.layout
-    assert layout is not None
-    top = round(layout.height - layout.charts[0].outer.z1)
-    assert _changed_fraction(after[top:], img[top:]) > 1e-3
-    tab.page.screenshot(path=str(shots / "after_V_0.85.png"))
-    assert tab.errors == []
-
-
 @pytest.mark.parametrize("density", [2.0, 1.25])
 def test_a_high_density_screen_gets_the_page_laid_out_in_css_px(browser: Any, app_server: App, density: float) -> None:
     """A laptop's screen has 2 pixels per CSS px, a zoomed page 1.25: the camera reports rendered pixels,
@@ -446,6 +429,65 @@ def test_a_high_density_screen_gets_the_page_laid_out_in_css_px(browser: Any, ap
         assert tab.errors == []
     finally:
         tab.close()
+
+
+def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
+    a = AppPage(browser, app_server)
+    b = AppPage(browser, app_server)
+    try:
+        a.type_into_slider("V", 0.3)
+        wait_until(lambda: a.session.state.settings.value("v") == 0.3)
+        # a's change is complete; b's session has had no control's value at all and still shows the default
+        assert b.session.state.settings.value("v") == Settings().value("v") and b.session.messages_handled == 0
+        assert a.session is not b.session
+        value = b.slider("V").locator("[role=slider]").get_attribute("aria-valuenow")
+        assert float(value) == pytest.approx(Settings().value("v"))
+    finally:
+        a.close()
+        b.close()
+
+
+def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:
+    old = App(port=0, version="0.0.1-old")
+    port = old.server.get_port()
+    page = AppPage(browser, old)
+    new = None
+    try:
+        # the tab has recorded the version it runs (viser prefixes the keys it writes)
+        recorded = """() => Object.keys(localStorage).some(
+            k => k.endsWith('rigidrel_version') && localStorage.getItem(k) === '0.0.1-old')"""
+        wait_until(lambda: page.page.evaluate(recorded))
+        old.stop()
+        new = App(port=port, version="9.9.9-new")
+        assert new.server.get_port() == port
+        # the tab reconnects by itself and is told what happened
+        page.page.wait_for_selector("text=rigidrel was updated", timeout=60_000)
+        text = page.page.locator(".mantine-Notification-root").all_inner_texts()
+        assert any("0.0.1-old" in t and "9.9.9-new" in t and "reload" in t for t in text), text
+    finally:
+        page.close()
+        if new is not None:
+            new.stop()
+        else:
+            old.stop()
+
+
+def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
+    before_charts = tab.session.painter.drawn.charts  # type: ignore[union-attr]
+    before_velocity = tab.session.painter.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
+    img = tab.canvas_after(np.zeros_like(tab.canvas()))
+    tab.type_into_slider("V", 0.85)
+    wait_until(lambda: tab.session.state.settings.value("v") == 0.85)
+    after = tab.canvas_after(img)
+    assert tab.session.painter.drawn.resolved.scene.final_velocities != before_velocity  # type: ignore[union-attr]
+    assert all(a is not b for a, b in zip(tab.session.painter.drawn.charts, before_charts, strict=True))  # type: ignore[union-attr]
+    # the diagrams' area of the canvas changed (the curves follow V), not only the lanes
+    layout = tab.session.painter.layout
+    assert layout is not None
+    top = round(layout.height - layout.charts[0].outer.z1)
+    assert _changed_fraction(after[top:], img[top:]) > 1e-3
+    tab.page.screenshot(path=str(shots / "after_V_0.85.png"))
+    assert tab.errors == []
 
 
 def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) -> None:
@@ -588,22 +630,6 @@ def test_f_toggles_presenter_mode(tab: AppPage, shots: Path) -> None:
     assert tab.page.locator("label:text-is('Scene')").is_visible()
 
 
-def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
-    a = AppPage(browser, app_server)
-    b = AppPage(browser, app_server)
-    try:
-        a.type_into_slider("V", 0.3)
-        wait_until(lambda: a.session.state.settings.value("v") == 0.3)
-        # a's change is complete; b's session has had no control's value at all and still shows the default
-        assert b.session.state.settings.value("v") == Settings().value("v") and b.session.messages_handled == 0
-        assert a.session is not b.session
-        value = b.slider("V").locator("[role=slider]").get_attribute("aria-valuenow")
-        assert float(value) == pytest.approx(Settings().value("v"))
-    finally:
-        a.close()
-        b.close()
-
-
 def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, shots: Path) -> None:
     tab.choose("Scene", "Rod-rod collision")
     wait_until(lambda: tab.session.painter.drawn.resolved.scene.kind == "rod-collision")  # type: ignore[union-attr]
@@ -616,31 +642,6 @@ def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, sh
     tab.type_into_slider("V2", -0.3)
     wait_until(lambda: tab.session.painter.drawn.resolved.scene is not scene_before)  # type: ignore[union-attr]
     wait_until(lambda: not tab.page.locator("text=so that the rods collide").is_visible())
-
-
-def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:
-    old = App(port=0, version="0.0.1-old")
-    port = old.server.get_port()
-    page = AppPage(browser, old)
-    new = None
-    try:
-        # the tab has recorded the version it runs (viser prefixes the keys it writes)
-        recorded = """() => Object.keys(localStorage).some(
-            k => k.endsWith('rigidrel_version') && localStorage.getItem(k) === '0.0.1-old')"""
-        wait_until(lambda: page.page.evaluate(recorded))
-        old.stop()
-        new = App(port=port, version="9.9.9-new")
-        assert new.server.get_port() == port
-        # the tab reconnects by itself and is told what happened
-        page.page.wait_for_selector("text=rigidrel was updated", timeout=60_000)
-        text = page.page.locator(".mantine-Notification-root").all_inner_texts()
-        assert any("0.0.1-old" in t and "9.9.9-new" in t and "reload" in t for t in text), text
-    finally:
-        page.close()
-        if new is not None:
-            new.stop()
-        else:
-            old.stop()
 
 
 def test_every_registered_scene_is_in_the_menu_and_draws(tab: AppPage, shots: Path) -> None:
