@@ -147,8 +147,10 @@ class AppPage:
         "Auto-fit view" on and the camera fitted. The page: its window at the size it opened
         with, no menu open, nothing focused. Returns once the page has taken all of it (a mark
         sent after it has run there), is laid out for its canvas and its canvas holds still; the
-        page's errors are counted from here."""
+        page's errors are counted from here. The tab's resolution is not the reset's: a shared tab
+        is held at a new tab's (``?fixedDpr=1``, conftest's ``shared_tab``)."""
         page, s = self.page, self.session
+        assert not s.painter.still_image.slow_canvas, "the canvas was taken for a slow one: hold its resolution"
         if page.locator("[role=listbox]:visible").count():
             page.keyboard.press("Escape")  # a menu left open
         page.evaluate("() => document.activeElement && document.activeElement.blur()")
