@@ -106,11 +106,40 @@ def app_server() -> Iterator[object]:
 
 
 @pytest.fixture
-def tab(browser: Any, app_server: Any) -> Iterator[Any]:
-    """One tab on the app (an ``AppPage``), closed after the test, passed or failed."""
+def new_tab(browser: Any, app_server: Any) -> Iterator[Any]:
+    """A new tab on the app (an ``AppPage``), closed after the test, passed or failed."""
     from tests.browser.test_app_browser import AppPage  # the tab's helper lives with the app's tests
 
     page = AppPage(browser, app_server)
+    try:
+        yield page
+    finally:
+        page.close()
+
+
+@pytest.fixture
+def tab(new_tab: Any) -> Any:
+    """A tab on the app: a new one. A file whose tests can share one overrides this with
+    :func:`shared_tab`, reset for each test."""
+    return new_tab
+
+
+@pytest.fixture(scope="module")
+def shared_tab(browser: Any, app_server: Any) -> Iterator[Any]:
+    """One tab on the file's app server for the file's tests that share it (opening a tab takes
+    seconds, most of them viser's client starting in software WebGL): each of those tests takes it
+    through a fixture of its file that resets it first (``AppPage.reset``: the session back where
+    a new tab opens). Closed when the file's tests end, so that it renders beside no other file's
+    tabs; opened by the first test that needs it, so the file's tests before it run beside none.
+
+    Its resolution is held where a new tab's starts (``?fixedDpr=1``): viser lowers a canvas'
+    resolution after a few seconds of slow frames (here, software WebGL on a busy machine: most
+    tests' worth) and never raises it while the canvas is idle, and the session then takes the
+    canvas for a slow one (:mod:`rigidrel_app.live.still_image`). Held, every test starts at the
+    same resolution whatever ran before it, and none sees it change halfway."""
+    from tests.browser.test_app_browser import AppPage
+
+    page = AppPage(browser, app_server, query="?fixedDpr=1")
     try:
         yield page
     finally:

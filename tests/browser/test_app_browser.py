@@ -1,13 +1,17 @@
 """The app in a real browser: it loads, draws the core's positions, and reacts to a user.
 
-Each test starts its own server (127.0.0.1, free port) and page; screenshots land in
-``test-artifacts/screenshots/<test>/``. The tests that set the state they look at and read the
-canvas share one tab: they are in ``test_canvas_browser.py``.
+The tests that use the app as a person does share one tab on the file's server (``tab``: reset
+before each test to where a new tab opens, :meth:`AppPage.reset`); the tests of a tab's start-up,
+of a screen's density and of tabs side by side open their own (``new_tab``, or more) and come
+first, so that the shared tab (opened by the first test that takes it) draws beside none of them.
+Servers bind 127.0.0.1 on a free port; screenshots land in ``test-artifacts/screenshots/<test>/``.
+The tests that set the state they look at and read the canvas are in ``test_canvas_browser.py``.
 """
 
 from __future__ import annotations
 
 import contextlib
+import io
 import json
 import re
 import time
@@ -22,8 +26,10 @@ from PIL import Image
 from playwright.sync_api import ViewportSize
 
 import rigidrel_core as rr
-from rigidrel_app.backends._viser import handle_uuid
+from rigidrel_app.backends._viser import handle_uuid, run_javascript
 from rigidrel_app.live.canvas_report import LABEL as CANVAS_REPORT_LABEL
+from rigidrel_app.live.keys import Action
+from rigidrel_app.live.playback import Playback
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
 from rigidrel_app.view.state import Settings
@@ -83,6 +89,9 @@ class AppPage:
     ) -> None:
         """``query``: added to the app's address (``"?fixedDpr=1"`` holds viser's resolution)."""
         self.app = app
+        self.viewport = viewport
+        self.marks = 0
+        """Marks sent to the page (:meth:`wait_taken`)."""
         self.errors: list[str] = []
         before = set(app.sessions)
         self.page = browser.new_page(viewport=viewport, device_scale_factor=device_scale_factor)
@@ -128,6 +137,101 @@ class AppPage:
 
     def close(self) -> None:
         self.page.close()
+
+    def reset(self, start: Settings | None = None) -> None:
+        """Put the tab back where a new tab on its server opens, for the next test that shares it.
+
+        The session: ``start`` (default: the server's start) with its values, frame, layers and
+        cone, paused at the start of its window at speed 1 and looping, presenter mode off, the
+        server's theme, no notice, every box showing its value (typed text that was refused too),
+        "Auto-fit view" on and the camera fitted. The page: its window at the size it opened
+        with, no menu open, nothing focused. Returns once the page has taken all of it (a mark
+        sent after it has run there), is laid out for its canvas and its canvas holds still; the
+        page's errors are counted from here. The tab's resolution is not the reset's: a shared tab
+        is held at a new tab's (``?fixedDpr=1``, conftest's ``shared_tab``)."""
+        page, s = self.page, self.session
+        assert not s.painter.still_image.slow_canvas, "the canvas was taken for a slow one: hold its resolution"
+        if page.locator("[role=listbox]:visible").count():
+            page.keyboard.press("Escape")  # a menu left open
+        page.evaluate("() => document.activeElement && document.activeElement.blur()")
+        resized = s.state.presenter or page.viewport_size != self.viewport
+        if page.viewport_size != self.viewport:
+            page.set_viewport_size(self.viewport)
+        if s.state.playback.playing:  # paused first: the browser's frame where it stops sets the clock
+            s.perform(Action.TOGGLE_PLAY)
+            s.client.flush()
+        wait_until(lambda: s.playback_settled, timeout=30)
+        with s.lock, s.client.atomic():
+            if s.state.presenter:
+                s.asks.set_presenter(False)
+            s.asks.set_shade(self.app.shade)
+            s.controls.fit.value = True
+            s.controls.loop.value = True
+            s.controls.speed.show(1.0)
+            s.asks.change(start or (self.app.start.settings if self.app.start else Settings()), refit=True)
+            s.asks.set_playback(Playback.start(s.state.playback.window))
+            s.show(s.state, put_back=True)
+            s.draw_now(force_plots=True)
+            s.painter.fit_camera(force=True)
+        s.client.flush()
+        if resized:  # the page has unfolded its panel and taken its size before its canvas is measured
+            self.wait_taken()
+        self.wait_laid_out(stable=resized)
+        self.wait_taken()
+        box = page.locator("canvas[data-engine]").bounding_box()
+        assert box is not None
+        shots = [self.clip(box)]
+
+        def still() -> bool:
+            shots.append(self.clip(box))
+            a, b = shots[-2], shots[-1]
+            return a.shape == b.shape and _changed_fraction(a, b) < 1e-4
+
+        wait_until(still, timeout=30, interval=0.1)
+        self.errors.clear()
+
+    def wait_taken(self) -> None:
+        """Until the page has taken everything the server sent it so far, and drawn it: a mark sent
+        now (one websocket, read in order) set two animation frames after the page has run it."""
+        s = self.session
+        self.marks += 1
+        with s.lock:
+            run_javascript(
+                s.client,
+                "requestAnimationFrame(() => requestAnimationFrame(() => {"
+                f" window.__rigidrelTaken = {self.marks}; }}));",
+            )
+        s.client.flush()
+        self.page.wait_for_function("(n) => window.__rigidrelTaken === n", arg=self.marks, timeout=30_000)
+
+    def wait_laid_out(self, stable: bool = True) -> None:
+        """Until the session's page is laid out for the canvas as the browser has it now (with
+        ``stable``, the same over two reads 0.1 s apart: a panel folding away resizes it over a
+        few frames)."""
+        s = self.session
+        sizes: list[Any] = []
+
+        def laid_out() -> bool:
+            css = self.page.evaluate(
+                "() => { const c = document.querySelector('canvas[data-engine]');"
+                " return c ? [c.clientWidth, c.clientHeight] : null; }"
+            )
+            layout = s.painter.layout
+            sizes.append(css)
+            return (
+                css is not None
+                and (not stable or sizes[-2:] == [css, css])
+                and layout is not None
+                and s.painter.canvas_size.measured
+                and (layout.width, layout.height) == (css[0], css[1])
+            )
+
+        wait_until(laid_out, timeout=30, interval=0.1)
+
+    def clip(self, box: Any) -> np.ndarray:
+        """What the page shows in ``box`` (page px) now, as RGB (int16)."""
+        png = self.page.screenshot(clip=box)
+        return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
 
     def nodes(self, *names: str) -> list[dict[str, Any] | None]:
         """What viser's client holds of these scene nodes now, read in one go (one instant of the
@@ -266,7 +370,16 @@ def rods_drawn(tab: AppPage, timeout: float = 30.0) -> list[list[tuple[int, int]
 
 
 # ====================================================================== tests
-def test_page_loads_and_renders(tab: AppPage, shots: Path) -> None:
+@pytest.fixture
+def tab(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens."""
+    shared_tab.reset()
+    return shared_tab
+
+
+def test_page_loads_and_renders(new_tab: AppPage, shots: Path) -> None:
+    tab = new_tab
+
     def drawn() -> tuple[int, int] | None:
         # not blank: the rods' blue and the ink of ticks, clocks and axes are on the canvas
         img = tab.canvas()
@@ -283,9 +396,10 @@ def test_page_loads_and_renders(tab: AppPage, shots: Path) -> None:
     assert tab.external == []
 
 
-def test_no_plotly_and_a_light_connection(tab: AppPage) -> None:
+def test_no_plotly_and_a_light_connection(new_tab: AppPage) -> None:
     """A tab receives no plotly.js and at most 300 kB over the websocket until its first picture
     (the whole default scene drawn: lanes, diagrams, legend)."""
+    tab = new_tab
     wait_until(lambda: tab.texts() and any("Equal-time" in t for t in tab.texts()), timeout=30)
     first_picture = time.monotonic()
     received = sum(n for t, n, _ in tab.received if t <= first_picture)
@@ -293,24 +407,6 @@ def test_no_plotly_and_a_light_connection(tab: AppPage) -> None:
     assert not any("plotly" in head.lower() for _, _, head in tab.received)
     scripts = tab.page.evaluate("() => Array.from(document.scripts).map(s => s.src + s.text.slice(0, 200))")
     assert not any("plotly" in src.lower() for src in scripts)
-
-
-def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
-    before_charts = tab.session.painter.drawn.charts  # type: ignore[union-attr]
-    before_velocity = tab.session.painter.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
-    img = tab.canvas_after(np.zeros_like(tab.canvas()))
-    tab.type_into_slider("V", 0.85)
-    wait_until(lambda: tab.session.state.settings.value("v") == 0.85)
-    after = tab.canvas_after(img)
-    assert tab.session.painter.drawn.resolved.scene.final_velocities != before_velocity  # type: ignore[union-attr]
-    assert all(a is not b for a, b in zip(tab.session.painter.drawn.charts, before_charts, strict=True))  # type: ignore[union-attr]
-    # the diagrams' area of the canvas changed (the curves follow V), not only the lanes
-    layout = tab.session.painter.layout
-    assert layout is not None
-    top = round(layout.height - layout.diagram.outer.z1)
-    assert _changed_fraction(after[top:], img[top:]) > 1e-3
-    tab.page.screenshot(path=str(shots / "after_V_0.85.png"))
-    assert tab.errors == []
 
 
 @pytest.mark.parametrize("density", [2.0, 1.25])
@@ -335,6 +431,65 @@ def test_a_high_density_screen_gets_the_page_laid_out_in_css_px(browser: Any, ap
         assert tab.errors == []
     finally:
         tab.close()
+
+
+def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
+    a = AppPage(browser, app_server)
+    b = AppPage(browser, app_server)
+    try:
+        a.type_into_slider("V", 0.3)
+        wait_until(lambda: a.session.state.settings.value("v") == 0.3)
+        # a's change is complete; b's session has had no control's value at all and still shows the default
+        assert b.session.state.settings.value("v") == Settings().value("v") and b.session.messages_handled == 0
+        assert a.session is not b.session
+        value = b.slider("V").locator("[role=slider]").get_attribute("aria-valuenow")
+        assert float(value) == pytest.approx(Settings().value("v"))
+    finally:
+        a.close()
+        b.close()
+
+
+def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:
+    old = App(port=0, version="0.0.1-old")
+    port = old.server.get_port()
+    page = AppPage(browser, old)
+    new = None
+    try:
+        # the tab has recorded the version it runs (viser prefixes the keys it writes)
+        recorded = """() => Object.keys(localStorage).some(
+            k => k.endsWith('rigidrel_version') && localStorage.getItem(k) === '0.0.1-old')"""
+        wait_until(lambda: page.page.evaluate(recorded))
+        old.stop()
+        new = App(port=port, version="9.9.9-new")
+        assert new.server.get_port() == port
+        # the tab reconnects by itself and is told what happened
+        page.page.wait_for_selector("text=rigidrel was updated", timeout=60_000)
+        text = page.page.locator(".mantine-Notification-root").all_inner_texts()
+        assert any("0.0.1-old" in t and "9.9.9-new" in t and "reload" in t for t in text), text
+    finally:
+        page.close()
+        if new is not None:
+            new.stop()
+        else:
+            old.stop()
+
+
+def test_user_slider_changes_scene_and_plots(tab: AppPage, shots: Path) -> None:
+    before_charts = tab.session.painter.drawn.charts  # type: ignore[union-attr]
+    before_velocity = tab.session.painter.drawn.resolved.scene.final_velocities  # type: ignore[union-attr]
+    img = tab.canvas_after(np.zeros_like(tab.canvas()))
+    tab.type_into_slider("V", 0.85)
+    wait_until(lambda: tab.session.state.settings.value("v") == 0.85)
+    after = tab.canvas_after(img)
+    assert tab.session.painter.drawn.resolved.scene.final_velocities != before_velocity  # type: ignore[union-attr]
+    assert all(a is not b for a, b in zip(tab.session.painter.drawn.charts, before_charts, strict=True))  # type: ignore[union-attr]
+    # the diagrams' area of the canvas changed (the curves follow V), not only the lanes
+    layout = tab.session.painter.layout
+    assert layout is not None
+    top = round(layout.height - layout.diagram.outer.z1)
+    assert _changed_fraction(after[top:], img[top:]) > 1e-3
+    tab.page.screenshot(path=str(shots / "after_V_0.85.png"))
+    assert tab.errors == []
 
 
 def test_frame_dropdown_changes_the_chosen_lane_only(tab: AppPage, shots: Path) -> None:
@@ -477,22 +632,6 @@ def test_f_toggles_presenter_mode(tab: AppPage, shots: Path) -> None:
     assert tab.page.locator("label:text-is('Scene')").is_visible()
 
 
-def test_each_tab_is_its_own_session(browser: Any, app_server: App) -> None:
-    a = AppPage(browser, app_server)
-    b = AppPage(browser, app_server)
-    try:
-        a.type_into_slider("V", 0.3)
-        wait_until(lambda: a.session.state.settings.value("v") == 0.3)
-        # a's change is complete; b's session has had no control's value at all and still shows the default
-        assert b.session.state.settings.value("v") == Settings().value("v") and b.session.messages_handled == 0
-        assert a.session is not b.session
-        value = b.slider("V").locator("[role=slider]").get_attribute("aria-valuenow")
-        assert float(value) == pytest.approx(Settings().value("v"))
-    finally:
-        a.close()
-        b.close()
-
-
 def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, shots: Path) -> None:
     tab.choose("Scene", "Rod-rod collision")
     wait_until(lambda: tab.session.painter.drawn.resolved.scene.kind == "rod-collision")  # type: ignore[union-attr]
@@ -505,31 +644,6 @@ def test_invalid_combination_shows_a_notice_and_keeps_the_scene(tab: AppPage, sh
     tab.type_into_slider("V2", -0.3)
     wait_until(lambda: tab.session.painter.drawn.resolved.scene is not scene_before)  # type: ignore[union-attr]
     wait_until(lambda: not tab.page.locator("text=so that the rods collide").is_visible())
-
-
-def test_a_stale_tab_after_an_upgrade_is_told(browser: Any) -> None:
-    old = App(port=0, version="0.0.1-old")
-    port = old.server.get_port()
-    page = AppPage(browser, old)
-    new = None
-    try:
-        # the tab has recorded the version it runs (viser prefixes the keys it writes)
-        recorded = """() => Object.keys(localStorage).some(
-            k => k.endsWith('rigidrel_version') && localStorage.getItem(k) === '0.0.1-old')"""
-        wait_until(lambda: page.page.evaluate(recorded))
-        old.stop()
-        new = App(port=port, version="9.9.9-new")
-        assert new.server.get_port() == port
-        # the tab reconnects by itself and is told what happened
-        page.page.wait_for_selector("text=rigidrel was updated", timeout=60_000)
-        text = page.page.locator(".mantine-Notification-root").all_inner_texts()
-        assert any("0.0.1-old" in t and "9.9.9-new" in t and "reload" in t for t in text), text
-    finally:
-        page.close()
-        if new is not None:
-            new.stop()
-        else:
-            old.stop()
 
 
 def test_every_registered_scene_is_in_the_menu_and_draws(tab: AppPage, shots: Path) -> None:

@@ -2,13 +2,14 @@
 their notices, the mass ratio typed as a ratio, the paper-figure menu, resetting the view.
 
 Keys are pressed with nothing focused (as after a click on the 3-D view); values are typed key
-by key where that matters (the server sees every keystroke, as it does from a person).
+by key where that matters (the server sees every keystroke, as it does from a person). The tests
+share one tab, reset before each to where a new tab opens (:meth:`AppPage.reset`), on the first
+scene (``tab``) or on the rod collision (``collision``).
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -17,9 +18,7 @@ import pytest
 
 from rigidrel_app.live.controls import LOG_SLIDER_LABEL
 from rigidrel_app.live.playback import FRAME_RATE, PLAY_SECONDS
-from rigidrel_app.live.server import App
 from rigidrel_app.view.pointer import BETA_PER_WIDTH
-from rigidrel_app.view.scenario import Scenario
 from rigidrel_app.view.state import CUSTOM_FRAME, NO_PRESET, Settings, event_times, preset_menu
 from rigidrel_app.view.vocabulary import ROD_COLORS
 from tests.browser.test_app_browser import AppPage
@@ -30,24 +29,18 @@ pytestmark = pytest.mark.browser
 FIG3, FIG4 = preset_menu(Settings("rod-collision")).options[1:3]
 
 
-@pytest.fixture(scope="module")
-def collision_server() -> Iterator[App]:
-    """A server whose tabs open on the rod collision (the paper's Fig. 3), for this file's tests."""
-    server = App(host="127.0.0.1", port=0, start=Scenario(Settings("rod-collision")))
-    try:
-        yield server
-    finally:
-        server.stop()
+@pytest.fixture
+def tab(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens (the first scene's defaults)."""
+    shared_tab.reset()
+    return shared_tab
 
 
 @pytest.fixture
-def collision(browser: Any, collision_server: App) -> Iterator[AppPage]:
-    """A tab of its own on :func:`collision_server`, closed after the test, passed or failed."""
-    page = AppPage(browser, collision_server)
-    try:
-        yield page
-    finally:
-        page.close()
+def collision(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens, on the rod collision (the paper's Fig. 3)."""
+    shared_tab.reset(Settings("rod-collision"))
+    return shared_tab
 
 
 # ---------------------------------------------------------------- finding things as a user does
@@ -308,7 +301,9 @@ def rod_bounds(img: np.ndarray, lanes: bool = False) -> np.ndarray:
     return np.array([rows.min(), rows.max(), cols.min(), cols.max()])
 
 
-def test_the_view_stays_under_a_drag_and_r_and_the_button_keep_it(tab: AppPage, shots: Path) -> None:
+def test_the_view_stays_under_a_drag_and_r_and_the_button_keep_it(
+    tab: AppPage, shots: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     """A drag across the canvas no longer orbits the picture (the camera is locked); R and the
     Reset view button still put the camera where the page fits, and the picture stays the same."""
     wait_until(lambda: tab.session.painter.drawn is not None)
@@ -324,7 +319,7 @@ def test_the_view_stays_under_a_drag_and_r_and_the_button_keep_it(tab: AppPage, 
         resets.append(force)
         fit(force)
 
-    painter.fit_camera = fit_and_count  # type: ignore[method-assign]
+    monkeypatch.setattr(painter, "fit_camera", fit_and_count)  # the shared tab's own is back after the test
     for reset in ("key", "button"):
         tab.page.mouse.move(x, y)
         tab.page.mouse.down()

@@ -3,7 +3,8 @@ areas and in the lanes (the pulse moving with time) when asked for and never oth
 world tubes or the length panel empties exactly those regions.
 
 The settings are set on the server, as a preset would (``show``); every picture is awaited until
-it has changed and settled, never after a fixed sleep.
+it has changed and settled, never after a fixed sleep. The tests share one tab, reset before each
+to where a new tab opens.
 """
 
 from __future__ import annotations
@@ -25,6 +26,14 @@ from tests.browser.test_app_browser import AppPage, show
 from tests.viser_client import shown, wait_until
 
 pytestmark = pytest.mark.browser
+
+
+@pytest.fixture
+def tab(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens (:meth:`AppPage.reset`)."""
+    shared_tab.reset()
+    return shared_tab
+
 
 CRASH = presets()["Sec. 5: crash into a wall, V = 0.6"]
 #: The origin's light cone is drawn in the light's colour too: hidden here, so any of that colour is a signal.

@@ -1,5 +1,6 @@
 """The paradoxes' lanes as the browser draws them: the pole-barn's two poles one above the other, Bell's
-string coloured by its strain between the ships and the comparison rod on its own row below them."""
+string coloured by its strain between the ships and the comparison rod on its own row below them.
+The tests share one tab, reset before each to where a new tab opens."""
 
 from __future__ import annotations
 
@@ -13,6 +14,13 @@ from rigidrel_app.view.state import Settings
 from tests.browser.test_app_browser import PIXEL_TOLERANCE, AppPage, rod_runs, show
 
 pytestmark = pytest.mark.browser
+
+
+@pytest.fixture
+def tab(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens (:meth:`AppPage.reset`)."""
+    shared_tab.reset()
+    return shared_tab
 
 
 def _row(tab: AppPage, img: np.ndarray, z: float) -> np.ndarray:

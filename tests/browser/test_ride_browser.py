@@ -2,7 +2,8 @@
 
 Measured on the canvas's pixels: in the lab lane a rod that has reached V is drawn shorter than at
 rest (Lorentz contraction), while in the lane that rides its back end it spans the same pixels at
-every instant, with the ridden end still at the lane's centre.
+every instant, with the ridden end still at the lane's centre. The tests share one tab, reset
+before each to where a new tab opens.
 """
 
 from __future__ import annotations
@@ -19,6 +20,13 @@ from tests.browser.test_app_browser import PIXEL_TOLERANCE, AppPage, rods_drawn,
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
+
+
+@pytest.fixture
+def tab(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens (:meth:`AppPage.reset`)."""
+    shared_tab.reset()
+    return shared_tab
 
 
 def test_the_riding_lane_keeps_the_rod_at_rest_length(tab: AppPage, shots: Path) -> None:

@@ -2,7 +2,10 @@
 every tab dark, and a lesson's caption band follows it.
 
 The canvas is measured, not just the session's flag: on a dark page the ground is black, the rods
-show their lightness-flipped colour, and the panel is in viser's dark mode.
+show their lightness-flipped colour, and the panel is in viser's dark mode. The tests of one tab
+share one, reset before each to where a new tab opens; the tests of a server started dark, with
+tabs of their own, come first (the shared tab, opened by the first test that takes it, draws
+beside none of them).
 """
 
 from __future__ import annotations
@@ -21,6 +24,14 @@ from tests.browser.test_app_browser import AppPage
 from tests.viser_client import wait_until
 
 pytestmark = pytest.mark.browser
+
+
+@pytest.fixture
+def tab(shared_tab: AppPage) -> AppPage:
+    """The file's one tab, back where a new tab opens (:meth:`AppPage.reset`)."""
+    shared_tab.reset()
+    return shared_tab
+
 
 PAPER = builtin_lesson("paper")
 
@@ -63,45 +74,6 @@ def still(page: Any) -> bool:
 
 def color_scheme(tab: AppPage) -> str:
     return tab.page.evaluate("() => document.documentElement.getAttribute('data-mantine-color-scheme')")
-
-
-def test_t_turns_the_dark_theme_on_and_off(tab: AppPage, shots: Path) -> None:
-    tab.page.set_viewport_size({"width": 1280, "height": 720})
-    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.height == 720)
-    light = tab.canvas_after(np.zeros_like(tab.canvas()))
-    assert_light(light)
-    tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
-    tab.page.keyboard.press("t")
-    wait_until(lambda: tab.session.state.shade == "dark")
-    dark = tab.canvas_after(light)
-    assert_dark(dark)
-    wait_until(lambda: color_scheme(tab) == "dark")
-    assert tab.control("Dark theme").is_checked()
-    assert tab.session.painter.layout is not None and tab.session.painter.layout.theme.shade == "dark"
-    tab.page.screenshot(path=str(shots / "dark_1280x720.png"))
-    tab.page.keyboard.press("t")
-    wait_until(lambda: tab.session.state.shade == "light")
-    assert_light(tab.canvas_after(dark))
-    wait_until(lambda: color_scheme(tab) == "light")
-    assert tab.errors == []
-
-
-def test_the_checkbox_and_presenter_mode_keep_the_theme(tab: AppPage, shots: Path) -> None:
-    tab.page.set_viewport_size({"width": 1280, "height": 720})
-    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.height == 720)
-    before = tab.canvas_after(np.zeros_like(tab.canvas()))
-    tab.control("Dark theme").click()
-    wait_until(lambda: tab.session.state.shade == "dark")
-    assert_dark(tab.canvas_after(before))
-    tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
-    tab.page.keyboard.press("f")
-    wait_until(lambda: tab.session.state.presenter)
-    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.width > 1200, timeout=30)
-    presenter = tab.canvas_after(np.zeros_like(tab.canvas()))  # a new canvas size: nothing to compare with
-    assert_dark(presenter)
-    assert tab.session.painter.layout is not None and tab.session.painter.layout.theme.name == "presenter"
-    tab.page.screenshot(path=str(shots / "dark_presenter_1280x720.png"))
-    assert tab.errors == []
 
 
 def test_a_server_started_dark_opens_every_tab_dark(browser: Any, shots: Path) -> None:
@@ -153,3 +125,42 @@ def test_a_lesson_caption_follows_the_theme(browser: Any, shots: Path) -> None:
     finally:
         page.close()
         app.stop()
+
+
+def test_t_turns_the_dark_theme_on_and_off(tab: AppPage, shots: Path) -> None:
+    tab.page.set_viewport_size({"width": 1280, "height": 720})
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.height == 720)
+    light = tab.canvas_after(np.zeros_like(tab.canvas()))
+    assert_light(light)
+    tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
+    tab.page.keyboard.press("t")
+    wait_until(lambda: tab.session.state.shade == "dark")
+    dark = tab.canvas_after(light)
+    assert_dark(dark)
+    wait_until(lambda: color_scheme(tab) == "dark")
+    assert tab.control("Dark theme").is_checked()
+    assert tab.session.painter.layout is not None and tab.session.painter.layout.theme.shade == "dark"
+    tab.page.screenshot(path=str(shots / "dark_1280x720.png"))
+    tab.page.keyboard.press("t")
+    wait_until(lambda: tab.session.state.shade == "light")
+    assert_light(tab.canvas_after(dark))
+    wait_until(lambda: color_scheme(tab) == "light")
+    assert tab.errors == []
+
+
+def test_the_checkbox_and_presenter_mode_keep_the_theme(tab: AppPage, shots: Path) -> None:
+    tab.page.set_viewport_size({"width": 1280, "height": 720})
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.height == 720)
+    before = tab.canvas_after(np.zeros_like(tab.canvas()))
+    tab.control("Dark theme").click()
+    wait_until(lambda: tab.session.state.shade == "dark")
+    assert_dark(tab.canvas_after(before))
+    tab.page.evaluate("() => document.activeElement && document.activeElement.blur()")
+    tab.page.keyboard.press("f")
+    wait_until(lambda: tab.session.state.presenter)
+    wait_until(lambda: tab.session.painter.layout is not None and tab.session.painter.layout.width > 1200, timeout=30)
+    presenter = tab.canvas_after(np.zeros_like(tab.canvas()))  # a new canvas size: nothing to compare with
+    assert_dark(presenter)
+    assert tab.session.painter.layout is not None and tab.session.painter.layout.theme.name == "presenter"
+    tab.page.screenshot(path=str(shots / "dark_presenter_1280x720.png"))
+    assert tab.errors == []
