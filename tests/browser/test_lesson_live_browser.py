@@ -241,9 +241,12 @@ def test_bell_and_the_barn_keep_their_diagrams_under_their_captions(
         assert box is not None and abs(box["height"] - band_px) <= 1, (box, band_px)
         assert len(layout.lanes) == 1 and layout.charts[1] is None
         assert all(c.plot.height >= MIN_PLOT_PX for c in layout.shown_charts), layout.shown_charts
-        # a caption longer than its band (at 720 px) scrolls there, and says so; one that fits does not
-        more = band.evaluate("(b) => [b.scrollHeight > b.clientHeight, b.classList.contains('rr-more'), b.tabIndex]")
-        assert more == ([True, True, 0] if height == 720 else [False, False, -1]), more
+        # a caption longer than its band (at 720 px, always) scrolls there, and says so: a shadow at
+        # its foot, and the focus it takes for the keys that scroll it; one that fits has neither
+        over, shadow, focusable = band.evaluate(
+            "(b) => [b.scrollHeight > b.clientHeight, b.classList.contains('rr-more'), b.tabIndex]"
+        )
+        assert (over or height != 720) and shadow == over and focusable == (0 if over else -1), (over, shadow)
         tab.screenshot(shots / f"step-{index + 1}-{width}.png")
     # Z: the step's one diagram over the whole canvas, drawn larger; Z again: the page back
     before = layout
