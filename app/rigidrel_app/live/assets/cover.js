@@ -128,7 +128,7 @@
      MOST_MS at most (a page that plays at once never stops; its first frames draw the glyphs). */
   var QUIET_MS = 200;
   var LEAST_MS = 100;
-  var MOST_MS = 1500;
+  var MOST_MS = 4000;
   function whenDrawn(done) {
     var scene = viewer && viewer.mutable && viewer.mutable.current && viewer.mutable.current.scene;
     var start = performance.now();
