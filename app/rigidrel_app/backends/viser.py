@@ -127,18 +127,9 @@ class _LabelPool:
     """Label nodes under one name prefix, grown when needed and never re-added: changing a
     label costs ~60 us, creating one ~500 us. Unused nodes are hidden."""
 
-    def __init__(self, scene: viser.SceneApi, prefix: str, renew: bool = False) -> None:
-        """``renew``: a label given new text at a new place is made anew (a node of a new name, the
-        old one removed) instead of updated. viser's client moves a label at once (its pose, outside
-        React) but changes its text when React draws next, which in software WebGL can be frames
-        later: a still picture's labels updated in place showed the old picture's words at the new
-        one's places. A new node is drawn with its text and place together. Not for labels that
-        move and change every frame (a lane's titles, its ruler's numbers): a recorded playback
-        makes no node after its first frame."""
+    def __init__(self, scene: viser.SceneApi, prefix: str) -> None:
         self._scene = scene
         self._prefix = prefix
-        self._renew = renew
-        self._made = 0
         self._handles: list[viser.LabelHandle] = []
         self._shown: list[tuple[str, tuple[float, float, float], float, str] | None] = []
 

@@ -156,7 +156,7 @@ class Drawn:
         """
         r = self.resolved
         if len(ends) < 2:
-            ends = self.rod_ends(now, instant)
+            ends = [*ends, *self.rod_ends(now, instant, first=len(ends))]
         if r.ride is not None:
             return self._riding_items(now, ends, instant or self.ride_instant(now))
         lab_view, frame_view = self.views
@@ -201,15 +201,16 @@ class Drawn:
             length = ()
         return lab, frame, length
 
-    def rod_ends(self, now: float, instant: ComovingInstant | None = None) -> list[FloatArray]:
-        """The rods' ends ``(rods, 2)`` at playback time ``now`` in each lane's frame, as
-        :meth:`lane_pictures` draws them: the lab at t = now, the chosen frame at t′ = now or,
-        riding, the comoving frame at the ride's ``instant`` (found here if not given)."""
+    def rod_ends(self, now: float, instant: ComovingInstant | None = None, first: int = 0) -> list[FloatArray]:
+        """The rods' ends ``(rods, 2)`` at playback time ``now`` in each lane's frame from lane
+        ``first`` on, as :meth:`lane_pictures` draws them: the lab at t = now, the chosen frame at
+        t′ = now or, riding, the comoving frame at the ride's ``instant`` (found here if not given).
+        A lane not drawn (:func:`panels`) still marks its rods on its diagram."""
         r = self.resolved
         if r.ride is not None:
             instant = instant or self.ride_instant(now)
-        shown = [(_LAB, now), (r.frame, now) if instant is None else (instant.frame, instant.event[0])]
-        return [r.scene.snapshot(t, frame=f, fractions=TICK_FRACTIONS)[0][:, [0, -1]] for f, t in shown]
+        lanes = [(_LAB, now), (r.frame, now) if instant is None else (instant.frame, instant.event[0])]
+        return [r.scene.snapshot(t, frame=f, fractions=TICK_FRACTIONS)[0][:, [0, -1]] for f, t in lanes[first:]]
 
     def legend(self, shown: tuple[bool, bool, bool] | None = None) -> list[LegendEntry]:
         """Every named item of the charts ``shown`` (default: as :func:`panels` has them, unzoomed),
