@@ -13,6 +13,7 @@ test runs the same watch on viser's own page, where it must see viser's words.
 from __future__ import annotations
 
 import contextlib
+import socket
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -250,6 +251,31 @@ def test_the_cover_is_axe_clean_and_in_the_theme_at_both_screen_sizes(browser: A
             page.screenshot(path=str(shots / f"cover-{shade}-unreachable-1280x720.png"))
         finally:
             page.close()
+
+
+def test_a_drawn_page_said_before_the_connection_is_kept_until_it_is_up(browser: Any) -> None:
+    """The word that the page is drawn can reach the cover before viser's client says that it is
+    connected (on a loaded machine its store says so late): the cover keeps that word and leaves
+    once the connection is up, not never. Here the page's connection goes to a port where no server
+    listens yet (viser's ``?websocket=``), and one starts there after the word."""
+    with contextlib.closing(socket.socket()) as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    later: PageServer | None = None
+    with cover_alone() as server:
+        page = browser.new_page(viewport=VIEWPORT)
+        try:
+            page.goto(f"http://127.0.0.1:{server.get_port()}/?websocket=ws://127.0.0.1:{port}", wait_until="commit")
+            page.wait_for_function("() => !!window.rigidrelCover")
+            page.evaluate("() => window.rigidrelCover.ready()")
+            page.wait_for_function("() => document.getElementById('rigidrel-cover').dataset.waits === 'connection'")
+            assert page.evaluate(COVER_UP)
+            later = PageServer(cover_page("light"), host="127.0.0.1", port=port, verbose=False)
+            page.wait_for_function(COVER_GONE, timeout=30_000)
+        finally:
+            page.close()
+            if later is not None:
+                later.stop()
 
 
 def test_reduced_motion_keeps_the_cover_still(browser: Any) -> None:

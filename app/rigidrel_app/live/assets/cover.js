@@ -23,8 +23,10 @@
   var viewer = null;
   var seen = null;  // the connection state last seen
   var connected = false;
+  var everConnected = false;
   var gaveUp = false;  // the cover says the server cannot be reached
   var drawn = false;  // the page is drawn and the cover gone
+  var early = false;  // ready() came before viser's client said it was connected
   var timer = 0;
 
   function say(text, lost) {
@@ -69,9 +71,15 @@
     seen = now;
     if (now === 'connected') {
       connected = true;
+      everConnected = true;
       gaveUp = false;
       clearTimeout(timer);
       if (!drawn) say('Loading the scene\u2026', false);
+      if (early) {
+        early = false;
+        delete cover.dataset.waits;
+        window.rigidrelCover.ready();
+      }
     } else if (connected) {  // the connection was lost: what the page shows is stale
       connected = false;
       show('Lost the connection to the rigidrel server at ' + host + ' \u2014 trying again\u2026', true);
@@ -155,7 +163,16 @@
        viser's state now; the cover leaves once the canvas has drawn them. */
     ready: function () {
       whenDrawn(function () {
-        if (viewer && state() !== 'connected') return;  // lost again meanwhile
+        if (viewer && state() !== 'connected') {
+          // Before the first connection (viser's store can say so after the page's first
+          // messages), the cover leaves once it is connected. After a loss, the server sends its
+          // page and this word again.
+          if (!everConnected) {
+            early = true;
+            cover.dataset.waits = 'connection';  // seen by the tests
+          }
+          return;
+        }
         hide();
       });
     },
