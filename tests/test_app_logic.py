@@ -22,12 +22,14 @@ from rigidrel_app.view.canvas import (
     CURVES,
     DASHES,
     MOVING,
+    PageText,
     chart_picture,
     clip_segments,
     dashed,
     fill_grid,
     items_picture,
     page_text,
+    page_texts,
 )
 from rigidrel_app.view.diagrams import View, equal_scale_ranges, length_static, minkowski_now, minkowski_static
 from rigidrel_app.view.lanes import ROD_SHARE, TICK_FRACTIONS, lane_geometry, lane_state
@@ -47,6 +49,7 @@ from rigidrel_app.view.layout import (
     titles_fit_one_line,
 )
 from rigidrel_app.view.objects import BARRIER_COLOR
+from rigidrel_app.view.placement import SUB_SCALE
 from rigidrel_app.view.sampling import TOLERANCE_PX, sample_lengths, sample_worldlines
 from rigidrel_app.view.scene_view import (
     CLOCK_RULE,
@@ -536,9 +539,10 @@ def test_chart_pictures_stay_in_their_plots_at_light_speed_45_degrees(settings: 
             xs, zs = ln.points[..., 0], ln.points[..., 1]
             assert np.all((xs >= p.x0 - 1e-6) & (xs <= p.x1 + 1e-6) & (zs >= p.z0 - 1e-6) & (zs <= p.z1 + 1e-6))
         # the axes' numbers at the theme's size; a crowded plot's event labels step down (Bell's
-        # length panel, whose names are written T_B1 at full size), never under 14 px
-        small = [t for t in picture.texts if t.px < NORMAL.text_px]
+        # length panel), never under 14 px, nor do their subscripts
+        small = [t for t in picture.texts if t.px < NORMAL.text_px and not t.sub]
         assert all(t.px >= MIN_TEXT_PX and not re.fullmatch(r"[-−]?[\d.]+", t.text) for t in small), small
+        assert all(t.px >= MIN_TEXT_PX for t in picture.texts if t.sub)
         if chart.equal_aspect:  # one unit of x as long as one unit of t
             per_x = p.width / (f.x_range[1] - f.x_range[0])
             per_t = p.height / (f.y_range[1] - f.y_range[0])
@@ -580,6 +584,33 @@ def test_clipping_dashes_and_fills() -> None:
     square = fill_grid(np.array([0.0, 40.0, 40.0, 0.0]), np.array([0.0, 0.0, 40.0, 40.0]), Rect(0.0, 0.0, 20.0, 100.0))
     assert square[:, 0].max() < 20.0 and square[:, 1].max() < 40.0 and len(square) == pytest.approx(50, abs=6)
     assert page_text("T<sub>1</sub>'") == "T₁'" and page_text("<b>T<sub>B</sub></b>") == "T_B"
+
+
+@pytest.mark.parametrize("anchor", ["center-left", "center-right", "center-center"])
+def test_event_names_are_drawn_with_subscripts_alike(anchor: str) -> None:
+    """T_B1, T_1 and T'_1 as the paper writes them: the letter, then its subscript as a smaller text
+    of its own, lowered, starting exactly where the letter ends (both anchored at that point)."""
+    for name, head, sub in (("T_B1", "T", "B1"), ("T_1", "T", "1"), ("T_1'", "T′", "1"), ("-T_F", "−T", "F")):
+        parts = page_texts(100.0, 50.0, event_label(name), 20.0, anchor)  # type: ignore[arg-type]
+        assert [(t.text, t.sub) for t in parts] == [(head, False), (sub, True)]
+        letter, small = parts
+        assert (letter.anchor, small.anchor) == ("center-right", "center-left") and letter.x == small.x
+        assert (letter.px, small.px) == (20.0, SUB_SCALE * 20.0) and small.z < letter.z == 50.0
+    # the whole at its anchor: starting at x, ending at it, or centred on it
+    left = page_texts(100.0, 50.0, "T<sub>B</sub>, T<sub>F</sub> (t′)", 20.0, anchor)  # type: ignore[arg-type]
+    assert [t.text for t in left] == ["T", "B", ", T", "F", " (t′)"]
+    joints = [t.x for t in left]
+    assert joints == sorted(joints)
+    # Arial's widths: T, then B and F at 0.8 of the size, ", T" and " (t′)"
+    em = 0.611 + 0.8 * 0.667 + (0.278 + 0.278 + 0.611) + 0.8 * 0.611 + (0.278 + 0.333 + 0.278 + 0.25 + 0.333)
+    start = joints[0] - 20.0 * 0.611
+    ends = {"center-left": 0.0, "center-right": 20.0 * em, "center-center": 10.0 * em}
+    assert start + ends[anchor] == pytest.approx(100.0)
+    # a subscript is never under the canvas's least text size, nor larger than its letter
+    assert [t.px for t in page_texts(0.0, 0.0, "T<sub>B</sub>", 15.0, anchor)] == [15.0, MIN_TEXT_PX]  # type: ignore[arg-type]
+    assert [t.px for t in page_texts(0.0, 0.0, "T<sub>B</sub>", 14.0, anchor)] == [14.0, 14.0]  # type: ignore[arg-type]
+    # text without a subscript, and a title's top anchor, stay one text
+    assert page_texts(1.0, 2.0, "<b>rod</b>", 20.0, anchor) == (PageText(1.0, 2.0, "rod", 20.0, anchor),)  # type: ignore[arg-type]
 
 
 def test_lines_show_their_colour_through_the_tone_mapping() -> None:

@@ -635,7 +635,7 @@ def test_a_lane_in_the_lab_is_not_labelled_as_another_frame() -> None:
             assert "t' =" not in second and "t′ =" not in second and second.startswith("lab frame (chosen):")
             assert ruler_names(r) == ("x", "x")
         elif r.ride is None:
-            assert "t' =" in second and ruler_names(r) == ("x", "x′")
+            assert "t′ =" in second and ruler_names(r) == ("x", "x′")
     assert frame_title(rr.Frame.from_velocity(0.0, "custom")) == "custom (β = 0: the lab)"
     assert frame_title(rr.build_scene("deceleration").frame("rod after")) == "rod after (β = 0: the lab)"
     assert frame_title(rr.LAB) == "lab"
@@ -726,7 +726,7 @@ def test_each_caption_states_what_its_numbers_depend_on() -> None:
     v, eps = scene.parameters["v"], scene.parameters["eps"]
     assert f"moving at −V = −{v:g}" in text and f"(ε = {eps:g}, a crash)" in text
     t, x = scene.events["T_1'"]
-    assert f"From T′_1 (T_1' on the command line), (lab t, x) = ({t:.3g}, {x:.3g}), it is at rest" in text
+    assert f"From T′_1 (`T_1'` on the command line), (lab t, x) = ({t:.3g}, {x:.3g}), it is at rest" in text
     assert sum("on the command line" in s[0] for s in steps.values()) == 1
     assert "With ε = 1, an elastic bounce" in steps["An elastic bounce"][0]
     text, scene = steps["Two rods collide: case I in the lab"]

@@ -277,9 +277,27 @@ class AppPage:
 
     # ---------------------------------------------------------------- reading the page
     def texts(self) -> list[str]:
-        """Every text the canvas shows (the diagrams' titles, numbers, event names, legend)."""
+        """Every text the canvas shows (the diagrams' titles, numbers, event names, legend), a
+        subscript joined to its letter as the paper's source writes it: ``T_B1``, ``T′_1``
+        (the canvas draws it as a smaller text of its own, lower, starting where the letter ends)."""
         r = self.session.painter.renderer
-        return [t[0] for t in (*r.static_texts.shown, *r.axis_names.shown, *r.titles.shown)]
+        out: list[str] = []
+        before: tuple[str, tuple[float, float, float], float, str] | None = None
+        for label in (*r.static_texts.shown, *r.axis_names.shown, *r.titles.shown):
+            text, place, scale, anchor = label
+            if (
+                before is not None
+                and (before[3], anchor) == ("center-right", "center-left")
+                and abs(place[0] - before[1][0]) < 4.0  # the same joint, each drawn from its ink
+                and place[2] < before[1][2]
+                and scale < before[2]
+            ):
+                out[-1] += "_" + text
+                before = None
+                continue
+            out.append(text)
+            before = label
+        return out
 
     def page_to_pixel(self, x: float, z: float) -> tuple[float, float]:
         """A page point (px, z up) as a canvas pixel (column, row): the camera makes one page px one CSS px."""

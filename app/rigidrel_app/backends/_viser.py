@@ -70,6 +70,10 @@ The browser, private to viser's client (inventory; the scripts in ``live/assets/
   ``html[data-mantine-color-scheme]``; and viser's notification "Software WebGL rendering
   detected" (``BrowserWarning.tsx``: a ``.mantine-Notification-root`` with that
   ``.mantine-Notification-title``), closed by its close button.
+- how the client lays out a label (``client/src/label/labelLayout.ts``): its text block padded by
+  ``BACKGROUND_PADDING_FRACTION`` (0.2) of its line height (the font's ascent plus descent, 1.117
+  em in Arial), and the padded block set at the anchor, so a left-anchored text starts a tenth of
+  a line right of its anchor (:data:`LABEL_HALF_PAD_EM`).
 - the same context value's ``interaction.cameraLocks.acquire(reason)`` (the lock viser's gizmo
   drags take: its camera controls disabled, keyboard movement included) and
   ``useDevSettings.setState({enableOrbitCrosshair})``: the picture kept still under the mouse.
@@ -101,6 +105,7 @@ from viser.infra import WebsockClientConnection
 
 __all__ = [
     "CONTROL_MESSAGE_TYPES",
+    "LABEL_HALF_PAD_EM",
     "SUPPORTED_VISER",
     "Message",
     "NodeKey",
@@ -144,6 +149,11 @@ def check_version(version: str | None = None) -> None:
 
 
 check_version()
+
+#: Half of the padding viser's client puts round a label's text, per em of its font: 0.2 of the
+#: line height (ascent plus descent: 1.117 em in Arial), halved. A text anchored at its left or
+#: right edge is drawn this much inside its anchor.
+LABEL_HALF_PAD_EM = 0.5 * 0.2 * 1.117
 
 #: The type names, as they appear in the msgpack a client sends, of the messages that ask a tab to
 #: act (a control's value, a command, a button held): a client's message budget counts them dearer.

@@ -37,7 +37,7 @@ from ..view.canvas import PageDots, PageLines, PagePicture, PageText, color_rgb
 from ..view.lanes import Box, EdgeMark, LanePicture, LaneState, segments_array
 from ..view.layout import CanvasLayout, clock_radius, lane_title_text
 from ..view.vocabulary import FRAME_COLOR, INK, Label, Segments, Shade, lightness_flipped, plain_text, rgb
-from ._viser import encode_png, make_image, set_image_png, write_label
+from ._viser import LABEL_HALF_PAD_EM, encode_png, make_image, set_image_png, write_label
 
 _CUBE_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)], dtype=np.float32)
 _CUBE_FACES = np.array(
@@ -336,7 +336,10 @@ class _Texts:
     def show(self, texts: Sequence[PageText], y: float = _TEXT_Y) -> None:
         texts = [t for t in texts if t.text.strip()]  # a blank label would stop viser drawing every label
         for k, t in enumerate(texts):
-            state = (t.text, (t.x, y, t.z), label_scale(t.px), t.anchor)
+            x = t.x
+            if t.joined:  # a part of a label that touches the next: its ink at x, as in every backend
+                x += LABEL_HALF_PAD_EM * t.px * (1.0 if t.anchor.endswith("-right") else -1.0)
+            state = (t.text, (x, y, t.z), label_scale(t.px), t.anchor)
             self.set(k, state)
         for k in range(len(texts), len(self._handles)):
             self.hide(k)

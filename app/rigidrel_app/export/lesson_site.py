@@ -22,17 +22,15 @@ from collections.abc import Callable
 from pathlib import Path
 
 import plotly
-from markdown_it import MarkdownIt
 
 from ..lessons import Lesson, Step
+from ..lessons.tour import caption_body_html
 from ..view.describe import describe
 from ..view.scene_view import CLOCK_RULE, build_drawing
 from ..view.state import settings_for
 from ..view.vocabulary import Shade
 from .diagram_html import diagram_html
 from .recording import record_lanes_html
-
-_MARKDOWN = MarkdownIt("commonmark", {"html": False, "typographer": False})
 
 _STYLE = """
 body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; margin: 0; color: #222;
@@ -157,7 +155,7 @@ def _step_page(lesson: Lesson, k: int, step: Step, shade: Shade = "light") -> st
     body = (
         f"<header><a href='index.html'>{html.escape(lesson.title)}</a>"
         f"<span class='count'>step {k + 1} of {n}</span></header><main>"
-        f"<h1>{html.escape(step.title)}</h1><div class='caption'>{_MARKDOWN.render(step.caption)}</div>{ride}"
+        f"<h1>{html.escape(step.title)}</h1><div class='caption'>{caption_body_html(step.caption)}</div>{ride}"
         "<div class='views'>"
         f"<iframe class='lanes' src='{name}-lanes.html' title='the rods, in the lab and in the chosen frame'></iframe>"
         f"<iframe class='diagram' src='{name}-diagram.html' title='Minkowski diagram with sliders'></iframe>"

@@ -7,15 +7,27 @@ draws or talks to a browser.
 from __future__ import annotations
 
 import html
+import re
 from dataclasses import dataclass, replace
 
 from markdown_it import MarkdownIt
 
 from ..view.layers import Layer
 from ..view.state import Settings
+from ..view.vocabulary import names_html
 from .lesson import Lesson, Step
 
 _MARKDOWN = MarkdownIt("commonmark", {"html": False, "typographer": False})
+_CODE = re.compile(r"(<code>.*?</code>)", re.DOTALL)
+
+
+def caption_body_html(markdown: str) -> str:
+    """A caption's Markdown as HTML (raw HTML in it escaped), every event name written with its
+    subscript as the canvas draws it (:func:`~..view.vocabulary.names_html`), except inside code
+    (```T_1'``` as typed on a command line)."""
+    parts = _CODE.split(_MARKDOWN.render(markdown))
+    return "".join(part if part.startswith("<code>") else names_html(part) for part in parts)
+
 
 #: The layer toggles' labels, in the panel's order.
 LAYER_LABELS: dict[Layer, str] = {
@@ -109,6 +121,6 @@ def caption_html(step: Step, presenter: bool = False, off_step: bool = False) ->
     """The caption band over the lanes: the step's title and its caption (Markdown, numbers from the
     core) as HTML; larger in presenter mode, to be read from the back of a hall. ``off_step``: the
     tab shows another scene than the step's, and the band says so."""
-    body = _MARKDOWN.render(step.caption + (f"\n\n*{OFF_STEP_NOTE}*" if off_step else ""))
+    body = caption_body_html(step.caption + (f"\n\n*{OFF_STEP_NOTE}*" if off_step else ""))
     size = "presenter" if presenter else "normal"
     return f'<div class="rr-caption-{size}"><h2>{html.escape(step.title)}</h2>{body}</div>'

@@ -805,7 +805,7 @@ def build_controls(
     table = LESSON_HOTKEYS if lesson is not None else HOTKEYS
     with gui.add_folder("Playback", order=3.0):
         play = gui.add_button("Play", icon=viser.Icon.PLAYER_PLAY, hint="Space")
-        clock = "Playback clock: the lab lane shows t = this, the frame lane t' = this" + (
+        clock = "Playback clock: the lab lane shows t = this, the frame lane t′ = this" + (
             "" if lesson is not None else " (← → one frame)"
         )
         time = NumberControl(gui, time_entry((-1.0, 1.0), 0.001), 0.0, clock)

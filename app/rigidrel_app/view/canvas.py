@@ -19,7 +19,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .layout import LEGEND_ROW_EM, MIN_TEXT_PX, ChartLayout, Rect, Theme, text_width
-from .placement import AXIS_NAME_DROP_EM, AXIS_NAME_INSET_PX, place_labels
+from .placement import AXIS_NAME_DROP_EM, AXIS_NAME_INSET_PX, place_labels, sub_px
 from .vocabulary import Area, Chart, Dash, Item, Label, Points, Polyline, Segments, Style, rgb, unicode_subscript
 
 FloatArray = npt.NDArray[np.float64]
@@ -69,6 +69,11 @@ class PageText:
     text: str
     px: float
     anchor: Anchor = "center-left"
+    sub: bool = False
+    """A subscript, drawn smaller and lower after its letter (:func:`page_texts`)."""
+    joined: bool = False
+    """A part of a label that touches the next one at its anchored edge (:func:`page_texts`): a
+    backend that pads its texts draws this one's ink from ``x``."""
 
 
 @dataclass(frozen=True)
@@ -332,6 +337,68 @@ def page_text(text: str) -> str:
     return re.sub(r"</?b>", "", text)
 
 
+#: Advance widths of Arial, per em: the first font of viser's label stack that Windows and Linux
+#: pages have (Debian's fontconfig gives Liberation Sans, metrically the same). Used to place the
+#: parts of a label around its subscript; another font's widths differ by a few per cent, which
+#: moves the label by as much, never the subscript against its letter (:func:`page_texts`).
+_ARIAL_EM = {
+    **dict.fromkeys("0123456789", 0.556),
+    **dict.fromkeys("ABEKPSVXY", 0.667),
+    **dict.fromkeys("CDHNRUw", 0.722),
+    **dict.fromkeys("GOQ", 0.778),
+    **dict.fromkeys("FTZ", 0.611),
+    **dict.fromkeys("abdeghnopqu", 0.556),
+    **dict.fromkeys("cksvxyz", 0.5),
+    **dict.fromkeys("fIt ,.", 0.278),
+    **dict.fromkeys("ijl", 0.222),
+    **dict.fromkeys("Mm", 0.833),
+    **dict.fromkeys("()r", 0.333),
+    **dict.fromkeys("−+=", 0.584),
+    "W": 0.944,
+    "J": 0.5,
+    "L": 0.556,
+    "′": 0.25,
+    "'": 0.191,
+}
+_MEAN_EM = 0.556
+#: A subscript's middle sits this many font sizes below its letter's (plotly's ``<sub>`` drops
+#: about 0.3 em).
+SUB_DROP_EM = 0.3
+_RUN = re.compile(r"<sub>(.*?)</sub>")
+
+
+def _width_px(text: str, px: float) -> float:
+    return px * sum(_ARIAL_EM.get(ch, _MEAN_EM) for ch in text)
+
+
+def page_texts(x: float, z: float, text: str, px: float, anchor: Anchor) -> tuple[PageText, ...]:
+    """One line of the vocabulary's small HTML subset as canvas texts, a subscript drawn as a text of
+    its own, smaller (:func:`~.placement.sub_px`) and lowered by :data:`SUB_DROP_EM`, as the paper
+    and plotly write it, so that T<sub>B</sub>, T<sub>1</sub> and T′<sub>1</sub> look alike (Unicode
+    has subscript digits but no subscript capitals). The first part ends where the second starts,
+    both anchored at that point, so a subscript touches its letter in any font; the whole is placed
+    at ``anchor`` with :data:`_ARIAL_EM` widths. A text without a subscript is one text."""
+    text = re.sub(r"</?b>", "", text)
+    if "<sub>" not in text or not anchor.startswith("center-"):
+        return (PageText(x, z, page_text(text), px, anchor),)
+    runs: list[tuple[str, bool]] = []
+    at = 0
+    for m in _RUN.finditer(text):
+        runs += [(text[at : m.start()], False), (m.group(1), True)]
+        at = m.end()
+    runs.append((text[at:], False))
+    parts = [(run, sub_px(px) if sub else px, z - SUB_DROP_EM * px if sub else z, sub) for run, sub in runs if run]
+    widths = [_width_px(run, size) for run, size, _, _ in parts]
+    start = {"center-left": x, "center-right": x - sum(widths), "center-center": x - 0.5 * sum(widths)}[anchor]
+    joint = start + widths[0]
+    run, size, zr, sub = parts[0]
+    out = [PageText(joint, zr, run, size, "center-right", sub, joined=True)]
+    for (run, size, zr, sub), w in zip(parts[1:], widths[1:], strict=True):
+        out.append(PageText(joint, zr, run, size, "center-left", sub, joined=True))
+        joint += w
+    return tuple(out)
+
+
 def _dot_shape(symbol: str) -> DotShape:
     return "diamond" if symbol.startswith("diamond") else "square" if symbol.startswith("square") else "circle"
 
@@ -393,7 +460,7 @@ def items_picture(items: Iterable[Item], f: ChartFrame, theme: Theme, layer: int
                 anchor: Anchor = {"left": "center-left", "right": "center-right", "center": "center-center"}[it.anchor]  # type: ignore[assignment]
                 # a placed label at its own size: smaller than the theme's in a crowded plot
                 px = min(it.size, theme.text_px) if it.movable else theme.text_px
-                texts.append(PageText(xv + offset, zv, page_text(it.text), px, anchor))
+                texts.extend(page_texts(xv + offset, zv, it.text, px, anchor))
     return PagePicture(strokes.lines(), tuple(dots), tuple(texts))
 
 
@@ -607,8 +674,8 @@ def axes_picture(chart: Chart, f: ChartFrame, layout: ChartLayout, theme: Theme)
     # axis names at the axes' far ends, inside the plot (where a physicist writes them; the event
     # labels are placed clear of them, placement.axis_name_boxes)
     inset, drop = AXIS_NAME_INSET_PX, AXIS_NAME_DROP_EM * theme.text_px
-    texts.append(PageText(p.x1 - inset, p.z0 + drop, page_text(chart.x_title), theme.text_px, "center-right"))
-    texts.append(PageText(p.x0 + inset, p.z1 - drop, page_text(chart.y_title), theme.text_px, "center-left"))
+    texts.extend(page_texts(p.x1 - inset, p.z0 + drop, chart.x_title, theme.text_px, "center-right"))
+    texts.extend(page_texts(p.x0 + inset, p.z1 - drop, chart.y_title, theme.text_px, "center-left"))
     texts.append(title)
     return PagePicture(lines, (), tuple(texts))
 
@@ -694,7 +761,7 @@ def _legend_picture(entries: tuple[LegendEntry, ...], box: Rect, theme: Theme) -
             width = line_width(e.style, theme)
             a, b = dashed(np.array([x, x + swatch]), np.array([z, z]), DASHES[e.style.dash], width / 2.0)
             lines.append(_lines(a, b, color, width, CURVES))
-        texts.append(PageText(x + swatch + 6.0, z, name, theme.text_px, "center-left"))
+        texts.extend(page_texts(x + swatch + 6.0, z, e.name, theme.text_px, "center-left"))
         x += w
     return PagePicture(tuple(lines), tuple(dots), tuple(texts))
 

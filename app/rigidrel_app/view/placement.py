@@ -24,13 +24,15 @@ from functools import lru_cache
 
 import numpy as np
 
-from .vocabulary import Chart, FloatArray, Item, Label, Points, Polyline, Segments, unicode_subscript
+from .layout import MIN_TEXT_PX
+from .vocabulary import Chart, FloatArray, Item, Label, Points, Polyline, Segments
 
 #: Width of one character of bold text, per font size (sans-serif bold digits and capitals are
 #: about 0.62 em; a safe upper bound, so that estimated boxes hold the drawn text).
 CHAR_EM = 0.66
-#: Subscripts are drawn at this fraction of the font size (plotly's ``<sub>``).
-SUB_SCALE = 0.7
+#: Subscripts are drawn at this fraction of the font size on the canvas, and never under the
+#: canvas's least text size (:func:`sub_px`); plotly's ``<sub>`` is 0.7 of it, inside the estimate.
+SUB_SCALE = 0.8
 #: Height of a text box per font size (a line plus a subscript's drop).
 LINE_EM = 1.45
 #: Clear space between a point and the nearest edge of its label, CSS pixels (beyond half a marker).
@@ -73,18 +75,22 @@ class Box:
         return self.left >= 0.0 and self.top >= 0.0 and self.right <= width and self.bottom <= height
 
 
+def sub_px(size: float) -> float:
+    """A subscript's font size (CSS px) after text of ``size``: :data:`SUB_SCALE` of it, and at
+    least :data:`~.layout.MIN_TEXT_PX` (the least any text on the canvas is drawn at, for the back of
+    a hall), never larger than the text itself."""
+    return min(size, max(SUB_SCALE * size, MIN_TEXT_PX))
+
+
 _TAG = re.compile(r"<sub>(.*?)</sub>|<[^>]+>")
 
 
 def text_box_px(text: str, size: float) -> tuple[float, float]:
     """The (width, height) in CSS pixels that ``text`` (the vocabulary's small HTML subset) takes at
-    font ``size``: ``CHAR_EM * size`` per character, subscripts at ``SUB_SCALE`` of that. A
-    subscript with a character Unicode has no subscript for is written ``_B1`` on the canvas, at
-    full size, and counted so (:func:`~.vocabulary.unicode_subscript`)."""
-    subs = [(len(m.group(1)), unicode_subscript(m.group(1)) is not None) for m in _TAG.finditer(text) if m.group(1)]
-    subscript = sum(n for n, small in subs if small)
-    plain = len(_TAG.sub("", text)) + sum(n + 1 for n, small in subs if not small)
-    width = CHAR_EM * size * (plain + SUB_SCALE * subscript)
+    font ``size``: ``CHAR_EM * size`` per character, subscripts at :func:`sub_px` (the
+    canvas draws a subscript as a smaller text of its own, :func:`~.canvas.page_texts`)."""
+    subscript = sum(len(m.group(1)) for m in _TAG.finditer(text) if m.group(1))
+    width = CHAR_EM * (size * len(_TAG.sub("", text)) + sub_px(size) * subscript)
     return width, LINE_EM * size
 
 

@@ -50,7 +50,20 @@ from .layout import CanvasLayout, Panels
 from .sampling import ADAPTIVE, Sampler
 from .signals import Signals, event_cone_items, key_definition, signals_in, signals_window_end, verdict_lines
 from .state import Resolved, format_value
-from .vocabulary import INK, ROD_COLORS, Chart, FloatArray, Item, Label, Points, Polyline, Segments, Style, signed
+from .vocabulary import (
+    INK,
+    ROD_COLORS,
+    Chart,
+    FloatArray,
+    Item,
+    Label,
+    Points,
+    Polyline,
+    Segments,
+    Style,
+    names_html,
+    signed,
+)
 
 #: Lane heights (z, in lane units): the lab on top, the chosen frame below.
 LAB_Z = 0.55
@@ -322,7 +335,7 @@ def lane_titles(r: Resolved, now: float, instant: ComovingInstant | None = None)
         return lab, f"riding: {r.ride.label(r.scene)}:   its clock τ = {signed(instant.proper_time)}"
     if _is_lab(r):
         return lab, f"{frame_title(r.frame)} frame (chosen):   t = {signed(now)}"
-    return lab, f"{frame_title(r.frame)} frame:   t' = {signed(now)}"
+    return lab, f"{frame_title(r.frame)} frame:   t′ = {signed(now)}"
 
 
 def _views(frame: rr.Frame) -> tuple[View, View]:
@@ -492,7 +505,8 @@ def signals_readout(resolved: Resolved) -> str:
 
 def readout_markdown(resolved: Resolved) -> str:
     """Parameters, final velocities and events in plain numbers, for the control panel: every event,
-    in the numbers and in the words (notes, verdicts), the lab's, and labelled "(lab t, x)"."""
+    in the numbers and in the words (notes, verdicts), the lab's, and labelled "(lab t, x)"; its
+    name written as the canvas draws it (``T<sub>B</sub>``: viser's Markdown shows raw HTML)."""
     scene, frame = resolved.scene, resolved.frame
     d = rr.describe(scene)
     params = [f"{d.parameter(k).symbol} = {format_value(v)}" for k, v in scene.parameters.items()]
@@ -503,7 +517,7 @@ def readout_markdown(resolved: Resolved) -> str:
     shown = frame_title(frame)
     if resolved.ride is not None:
         shown = f"the lower lane rides: {resolved.ride.label(scene)} ({RIDE_RULE}); the second diagram: {shown}"
-    return (
+    return names_html(
         f"**Scene** {', '.join(params)}  \n**Final velocities** {v}  \n**Events (lab t, x)** {ev}  \n"
         f"**Frame** {shown}  \n**Clocks** {CLOCK_RULE}{notes}{signals_readout(resolved)}"
     )

@@ -169,6 +169,24 @@ def event_label(name: str) -> str:
     return f"<b>{sign}{core}{prime}</b>"
 
 
+#: An event's name as the paper's source writes it in running text: ``T_B``, ``T_1'``, ``T′_1``,
+#: ``-T_F`` (not inside a word, nor a caption field's ``[T_1]``).
+_NAME_IN_TEXT = re.compile(r"(?<![\w'′\[])([−-]?)T(′?)_([A-Za-z0-9]+)(')?(?![\w\]])")
+
+
+def names_html(text: str) -> str:
+    """Running text (HTML or Markdown) with every event name written as the canvas draws it:
+    ``T_B1`` -> ``T<sub>B1</sub>``, ``T_1'`` and ``T′_1`` -> ``T′<sub>1</sub>``, ``-T_F`` ->
+    ``−T<sub>F</sub>`` (:func:`event_label`, not bold). A screen reader says "T B 1"."""
+
+    def name(m: re.Match[str]) -> str:
+        sign = "−" if m.group(1) else ""
+        prime = "′" if m.group(2) or m.group(4) else ""
+        return f"{sign}T{prime}<sub>{m.group(3)}</sub>"
+
+    return _NAME_IN_TEXT.sub(name, text)
+
+
 _SUBSCRIPTS = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
 
 
