@@ -7,6 +7,7 @@ them (the renderer on a recording scene, as the timelines are made).
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Iterator
 
@@ -16,10 +17,11 @@ import pytest
 import rigidrel_core as rr
 from rigidrel_app.backends._viser import RecordingScene, SceneFold
 from rigidrel_app.backends.viser import PageRenderer
-from rigidrel_app.live.timeline import frame_pictures, frame_times, room
+from rigidrel_app.live.timeline import frame_times
 from rigidrel_app.view.canvas import still_picture
 from rigidrel_app.view.lanes import LanePicture, LaneScale, ruler_text
-from rigidrel_app.view.layout import NORMAL, PRESENTER, CanvasLayout, Theme, canvas_layout
+from rigidrel_app.view.layout import NORMAL, PRESENTER, CanvasLayout, Theme, canvas_layout, text_width
+from rigidrel_app.view.page import frame_pictures, room
 from rigidrel_app.view.scene_view import Drawn, build_drawing
 from rigidrel_app.view.state import Resolved, Settings, build, presets
 
@@ -143,7 +145,7 @@ def test_a_body_out_of_the_lane_is_marked_at_its_edge(settings: Settings) -> Non
     layout = canvas_layout(936, 720)
     d = _drawn(settings, layout)
     r = d.resolved
-    marked = 0
+    marked = both_out = 0
     for now in np.linspace(d.window[0], d.window[1], 31):
         for lane, place, frame in zip(
             d.lane_pictures(float(now), layout), layout.lanes, (rr.LAB, r.frame), strict=True
@@ -169,7 +171,18 @@ def test_a_body_out_of_the_lane_is_marked_at_its_edge(settings: Settings) -> Non
                 assert body.name in m.text and ("←" if m.side < 0 else "→") in m.text
                 number = float(re.search(r"\d+(\.\d+)?", m.text.replace(body.name, "")).group(0))  # type: ignore[union-attr]
                 assert number == pytest.approx(gap, abs=max(lane.ruler_step, 1.0 if gap >= 10 else 0.0))
+            # bodies out on one side (the barn's door and back wall) named one after the other from
+            # the edge, the nearest first: their words never overprint
+            for side in (-1, 1):
+                row = sorted((m for m in lane.edge_marks if m.side == side), key=lambda m: abs(m.distance))
+                if row:
+                    assert row[0].text_x == (place.track.x0 if side < 0 else place.track.x1)
+                for a, b in itertools.pairwise(row):
+                    width = text_width(a.text, place.text_px)
+                    assert -side * (b.text_x - a.text_x) > width, (a, b)
+                both_out = max(both_out, len(row))
     assert marked
+    assert both_out == (2 if settings.scene == "pole-barn" else 1)  # the barn's door and back wall out at once
 
 
 # ---------------------------------------------------------------------- rulers

@@ -12,11 +12,19 @@ import numpy as np
 import pytest
 
 from rigidrel_app.backends.viser import SHARED_ROOT, shared_root
-from rigidrel_app.live.controls import CAPTION_SHARE, caption_reserve
 from rigidrel_app.live.painting import Painting, PaintingCache, PaintingKey, paint
 from rigidrel_app.live.timeline import TimelineKey, record_timeline
 from rigidrel_app.view.layers import Layer
-from rigidrel_app.view.layout import LEGEND_ROWS, MIN_PLOT_PX, NORMAL, PRESENTER, Theme, canvas_layout
+from rigidrel_app.view.layout import (
+    CAPTION_SHARE,
+    LEGEND_ROWS,
+    MIN_PLOT_PX,
+    NORMAL,
+    PRESENTER,
+    Theme,
+    canvas_layout,
+    caption_reserve,
+)
 from rigidrel_app.view.state import CUSTOM_FRAME, Resolved, Settings, resolve
 from tests.test_timeline import read_payload, same
 from tests.viser_client import shown

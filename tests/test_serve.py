@@ -189,9 +189,9 @@ def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) 
     """The pole in the barn in presenter mode on a short canvas (its lane titles are too long for one
     line, and its legend needs more rows than the default): once the session has laid it out, a
     slider's redraw builds the drawing once and the canvas places no label again."""
-    from rigidrel_app.live import painting as painting_module
     from rigidrel_app.live.server import App
     from rigidrel_app.view import canvas
+    from rigidrel_app.view import page as page_module
     from rigidrel_app.view.layout import LEGEND_ROWS, CanvasSize
     from rigidrel_app.view.state import Settings
     from tests.viser_client import light_tab
@@ -205,8 +205,8 @@ def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) 
         layout = session.painter.layout
         assert layout is not None and layout.lanes[0].title_lines >= 2 and session.painter.legend_rows != LEGEND_ROWS
         builds, placements = [], []
-        build, place = painting_module.build_drawing, canvas.place_labels
-        monkeypatch.setattr(painting_module, "build_drawing", lambda *a, **k: builds.append(1) or build(*a, **k))
+        build, place = page_module.build_drawing, canvas.place_labels
+        monkeypatch.setattr(page_module, "build_drawing", lambda *a, **k: builds.append(1) or build(*a, **k))
         monkeypatch.setattr(canvas, "place_labels", lambda *a, **k: placements.append(1) or place(*a, **k))
         session.asks.change(session.state.settings.with_value("v", 0.7))
         assert (len(builds), len(placements)) == (1, 0)

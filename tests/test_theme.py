@@ -17,9 +17,9 @@ import pytest
 
 from rigidrel_app.backends.viser import DARK_CANVAS_CSS, sent_for_shade
 from rigidrel_app.cli import build_parser
-from rigidrel_app.live.controls import CAPTION_SHARE, caption_message, caption_reserve, page_style
+from rigidrel_app.live.controls import caption_message, page_style
 from rigidrel_app.live.keys import HOTKEYS, LESSON_HOTKEYS, Action, action_for
-from rigidrel_app.view.layout import NORMAL, PRESENTER, canvas_layout
+from rigidrel_app.view.layout import CAPTION_SHARE, NORMAL, PRESENTER, canvas_layout, caption_reserve
 from rigidrel_app.view.objects import BARRIER_COLOR, MARKER_COLOR
 from rigidrel_app.view.vocabulary import (
     FRAME_COLOR,

@@ -24,13 +24,12 @@ from rigidrel_app.live.timeline import (
     Timeline,
     TimelineCache,
     TimelineKey,
-    frame_pictures,
     frame_times,
     record_timeline,
-    room,
 )
 from rigidrel_app.view.canvas import moving_picture, still_picture
 from rigidrel_app.view.layout import canvas_layout
+from rigidrel_app.view.page import frame_pictures, room
 from rigidrel_app.view.scene_view import RULER_NAMES, build_drawing
 from rigidrel_app.view.state import Resolved, Settings, presets, resolve
 

@@ -116,14 +116,14 @@ def test_exported_pages_are_axe_clean_and_carry_the_words(browser: Any, tmp_path
     assert main(wall) == 0
     pages = [
         tmp_path / "lesson" / name
-        for name in ("index.html", "step-01.html", "step-01-lanes.html", "step-01-diagram.html")
+        for name in ("index.html", "step-01.html", "step-01-canvas.html", "step-01-diagram.html")
     ] + [tmp_path / "wall" / name for name in ("wall-collision-diagram.html", "wall-collision-3d.html")]
     page = browser.new_page(viewport={"width": 1280, "height": 720})
     try:
         for path in pages:
             page.goto(path.as_uri())
             page.wait_for_load_state("load")
-            if path.name.endswith(("lanes.html", "3d.html")):  # viser's client: named once it has drawn its panel
+            if path.name.endswith(("canvas.html", "3d.html")):  # viser's client: named once it has drawn its panel
                 page.wait_for_function("() => window.rigidrelA11y && document.querySelector('[aria-label]')")
             assert serious_violations(page) == [], path.name
         page.goto((tmp_path / "lesson" / "step-01.html").as_uri())

@@ -1,5 +1,6 @@
 """An exported lesson, opened from disk in headless Chromium with the network cut: it makes no
-request, moves between steps by keyboard, its lanes animate and its diagram's sliders respond."""
+request, moves between steps by keyboard, its canvas plays and its diagram's sliders respond; a
+step's caption and canvas fit one screen, at the live app's text sizes."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ from typing import Any
 
 import pytest
 
-from rigidrel_app.export.lesson_site import export_lesson
+from rigidrel_app.export.lesson_site import CANVAS_HEIGHT, CANVAS_WIDTH, export_lesson
 from rigidrel_app.lessons import parse_lesson
 from tests.viser_client import wait_until
 
@@ -42,7 +43,7 @@ def test_the_folder(site: Path) -> None:
     names = sorted(p.name for p in site.iterdir())
     assert names == sorted(
         ["index.html", "plotly.min.js"]
-        + [f"step-0{k}{suffix}.html" for k in (1, 2) for suffix in ("", "-lanes", "-diagram")]
+        + [f"step-0{k}{suffix}.html" for k in (1, 2) for suffix in ("", "-canvas", "-diagram")]
     )
     page = (site / "step-01.html").read_text(encoding="utf-8")
     assert "The back end starts braking at t = −0.75, <strong>before</strong> the contact." in page
@@ -71,7 +72,7 @@ def test_offline_by_keyboard(browser: Any, site: Path, shots: Path) -> None:
         page.keyboard.press("ArrowRight")
         arrive("step-01.html")
         page.wait_for_selector("h1:has-text('The crash')")
-        lanes = page.frame_locator("iframe.lanes")
+        lanes = page.frame_locator("iframe.canvas")
         canvas = lanes.locator("canvas[data-engine]")
         canvas.wait_for(timeout=60_000)
 
@@ -98,8 +99,8 @@ def test_offline_by_keyboard(browser: Any, site: Path, shots: Path) -> None:
         page.keyboard.press("PageDown")
         arrive("step-02.html")
         page.wait_for_selector("text=It leaves at V′ = 0.6.")
-        # a click into the lanes' frame, then ←: back
-        lanes = page.frame_locator("iframe.lanes")
+        # a click into the canvas' frame, then ←: back
+        lanes = page.frame_locator("iframe.canvas")
         lanes.locator("canvas[data-engine]").click(timeout=60_000)
         assert page.evaluate("() => document.activeElement && document.activeElement.tagName") == "IFRAME"
         page.keyboard.press("ArrowLeft")
@@ -111,3 +112,31 @@ def test_offline_by_keyboard(browser: Any, site: Path, shots: Path) -> None:
         assert errors == [], errors
     finally:
         context.close()
+
+
+@pytest.mark.parametrize(("width", "height"), [(1280, 720), (1920, 1080)])
+def test_a_step_fits_one_screen_at_the_app_s_text_sizes(
+    browser: Any, site: Path, shots: Path, width: int, height: int
+) -> None:
+    """The caption band over the app's canvas, both within the screen's height: at 1280x720 the
+    canvas at one page px per CSS px (the live app's text sizes), at 1920x1080 zoomed whole."""
+    page = browser.new_page(viewport={"width": width, "height": height})
+    try:
+        page.goto((site / "step-01.html").as_uri())
+        page.frame_locator("iframe.canvas").locator("canvas[data-engine]").wait_for(timeout=60_000)
+        band, canvas = page.locator(".band").bounding_box(), page.locator("iframe.canvas").bounding_box()
+        assert band is not None and canvas is not None
+        assert band["y"] == 0 and canvas["y"] >= band["y"] + band["height"] - 1
+        assert canvas["y"] + canvas["height"] <= height + 1, (band, canvas)  # nothing of it below the fold
+        zoom = float(page.evaluate("() => getComputedStyle(document.querySelector('iframe.canvas')).zoom"))
+        recorded = (CANVAS_WIDTH, CANVAS_HEIGHT)
+        assert canvas["width"] == pytest.approx(zoom * recorded[0], abs=1) and canvas["height"] == pytest.approx(
+            zoom * recorded[1], abs=1
+        )
+        if width == 1280:
+            assert zoom == pytest.approx(1.0, abs=0.01) and height - canvas["height"] == pytest.approx(band["height"])
+        else:
+            assert zoom > 1.4  # a hall's screen shows it larger, text and all
+        page.screenshot(path=str(shots / f"exported-step-{width}x{height}.png"))
+    finally:
+        page.close()

@@ -13,12 +13,11 @@ import pytest
 
 from rigidrel_app.backends.viser import shared_root
 from rigidrel_app.lessons import builtin_lesson, parse_lesson
-from rigidrel_app.live.controls import CAPTION_SHARE, caption_reserve
 from rigidrel_app.live.keys import Action
 from rigidrel_app.live.server import App
 from rigidrel_app.live.session import Session
 from rigidrel_app.view.layers import Layer
-from rigidrel_app.view.layout import MIN_PLOT_PX, NORMAL, CanvasLayout
+from rigidrel_app.view.layout import CAPTION_SHARE, MIN_PLOT_PX, NORMAL, CanvasLayout, caption_reserve
 from rigidrel_app.view.scenario import parse_scenario
 from tests.browser.conftest import element_png
 from tests.browser.test_app_browser import SOFTWARE_NOTE, slider_of

@@ -574,7 +574,7 @@ class _Ruler:
 
 def edge_text(mark: EdgeMark, px: float) -> PageText:
     """An edge mark's words (``"wall 3.2 →"``), ending at the lane's edge on its side, at ``px``."""
-    return PageText(mark.x, mark.text_z, mark.text, px, "center-left" if mark.side < 0 else "center-right")
+    return PageText(mark.text_x, mark.text_z, mark.text, px, "center-left" if mark.side < 0 else "center-right")
 
 
 #: Depth of the flat still picture: behind everything else on the page (the rods' boxes reach

@@ -2,10 +2,17 @@
 opened straight from disk. Nothing in it asks the network for anything.
 
     DIR/index.html            the lesson's title and its steps
-    DIR/step-01.html          caption, the 3-D lanes playing, the interactive diagram, prev/next
-    DIR/step-01-lanes.html    the lanes (a viser recording; plays by itself)
+    DIR/step-01.html          the caption over the canvas playing (one 1280x720 screen), then the
+                              interactive diagram, the picture in words and prev/next
+    DIR/step-01-canvas.html   the live app's canvas (lanes, diagrams, legend), seen straight on at
+                              its text sizes (a viser recording; plays by itself)
     DIR/step-01-diagram.html  the diagram with its sliders
     DIR/plotly.min.js         one copy, shared by every diagram page
+
+A step page is laid out as the live app shows a lesson: a caption band over the canvas, the band
+as high as the window leaves above a canvas of :data:`CANVAS_HEIGHT` (at most a quarter of the
+window; a longer caption scrolls in it), the canvas scaled whole to the rest (at 1280x720, one page
+px one CSS px: the live app's text sizes).
 
 Keys on a step page: → / PageDown / Space next, ← / PageUp previous, Home the index (a clicker
 sends PageUp/PageDown), also with the focus inside its lanes or its diagram (after a click there;
@@ -26,11 +33,17 @@ import plotly
 from ..lessons import Lesson, Step
 from ..lessons.tour import caption_body_html
 from ..view.describe import describe
-from ..view.scene_view import CLOCK_RULE, build_drawing
+from ..view.layout import CAPTION_SHARE, NORMAL, caption_reserve
+from ..view.scene_view import CLOCK_RULE
 from ..view.state import settings_for
 from ..view.vocabulary import Shade
 from .diagram_html import diagram_html
-from .recording import record_lanes_html
+from .recording import record_canvas_html
+
+#: The canvas a step records (CSS px): the live app's at 1280 wide, as high as a lesson's caption
+#: band leaves it (two lanes and diagrams of 150 px).
+CANVAS_WIDTH = 1280
+CANVAS_HEIGHT = caption_reserve(NORMAL)
 
 _STYLE = """
 body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; margin: 0; color: #222;
@@ -41,14 +54,42 @@ header .count { margin-left: auto; font-variant-numeric: tabular-nums; }
 main { padding: 0.5em 1em 1em; }
 h1 { font-size: 1.5em; margin: 0.2em 0 0.3em; }
 .caption { max-width: 60em; }
+.band { box-sizing: border-box; height: var(--band); overflow-y: auto; border-bottom: 3px solid #0072B2; }
+.band header { padding: 0.2em 1em; font-size: 0.8em; }
+.band h1 { font-size: 1.2em; margin: 0.2em 1rem 0.1em; }
+.band .caption { margin: 0 1rem 0.3em; }
+.band .caption p { margin: 0.2em 0; }
 .views { display: flex; flex-direction: column; gap: 0.8em; margin-top: 0.6em; }
 .views iframe { border: 1px solid #ccc; }
-iframe.lanes { width: 100%; height: 56vh; min-height: 380px; }
 iframe.diagram { width: 1270px; max-width: 100%; height: 730px; }
 nav.steps { display: flex; justify-content: space-between; margin-top: 0.8em; font-size: 1.1em; }
 nav a { padding: 0.3em 0.8em; border: 1px solid #0072B2; border-radius: 0.3em; text-decoration: none; color: #0072B2; }
 ol.index li { margin: 0.3em 0; }
 .note { color: #555; font-size: 0.85em; }
+"""
+#: A step page's band and canvas, as the live app lays out a lesson (``live/assets/caption.js``):
+#: the band what the window leaves above the canvas, at least 88 px and at most CAPTION_SHARE of
+#: it; the canvas the recorded size, zoomed whole to the rest by :data:`_FIT_CANVAS`.
+_STEP_STYLE = f"""
+.step {{ --band: max(88px, min({100 * CAPTION_SHARE:g}vh, calc(100vh - {CANVAS_HEIGHT}px))); }}
+iframe.canvas {{ display: block; border: 0; margin: 0 auto; width: {CANVAS_WIDTH}px; height: {CANVAS_HEIGHT}px; }}
+"""
+
+#: The canvas zoomed to the width and the height the band leaves, text and all (CSS ``zoom``: the
+#: recorded page keeps its layout and draws at the finer resolution). Its labels are sized on the
+#: screen, not the page: scaling the frame any other way would move them apart from their marks.
+_FIT_CANVAS = f"""
+(function () {{
+  var canvas = document.querySelector("iframe.canvas"), band = document.querySelector(".band");
+  if (!canvas || !band) return;
+  function fit() {{
+    var room = window.innerHeight - band.getBoundingClientRect().height;
+    var k = Math.min(document.documentElement.clientWidth / {CANVAS_WIDTH}, room / {CANVAS_HEIGHT});
+    canvas.style.zoom = String(Math.max(0.25, k));
+  }}
+  window.addEventListener("resize", fit);
+  fit();
+}})();
 """
 
 #: The pages' dark theme (``--theme dark``): light text on black, the live app's colours.
@@ -117,9 +158,11 @@ def step_name(k: int) -> str:
     return f"step-{k + 1:02d}"
 
 
-def _page(title: str, body: str, next_href: str | None, prev_href: str | None, shade: Shade = "light") -> str:
-    script = f"var NEXT = {json.dumps(next_href)}, PREV = {json.dumps(prev_href)};\n{_KEYS}"
-    style = _STYLE if shade == "light" else _STYLE + _DARK_STYLE
+def _page(
+    title: str, body: str, next_href: str | None, prev_href: str | None, shade: Shade = "light", script: str = ""
+) -> str:
+    script = f"var NEXT = {json.dumps(next_href)}, PREV = {json.dumps(prev_href)};\n{_KEYS}{script}"
+    style = _STYLE + _STEP_STYLE if shade == "light" else _STYLE + _STEP_STYLE + _DARK_STYLE
     return (
         "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>"
         "<meta name='viewport' content='width=device-width, initial-scale=1'>"
@@ -149,19 +192,24 @@ def _step_page(lesson: Lesson, k: int, step: Step, shade: Shade = "light") -> st
     ride = ""
     if step.ride is not None:
         ride = (
-            "<p class='note'>Live, this step's frame rides a point of the rod; the pages show it in "
-            f"{html.escape(step.resolved.frame.label())}.</p>"
+            "<p class='note'>The canvas above rides a point of the rod, as the live app does; the "
+            f"diagram with sliders shows the step in {html.escape(step.resolved.frame.label())}.</p>"
         )
+    # the band (a region of its own, which the keys scroll when the caption is longer) over the
+    # canvas, as in the live app; under them the interactive diagram, the words and the way on
     body = (
+        "<div class='step'><div class='band' tabindex='0' role='region' aria-label='Step caption'>"
         f"<header><a href='index.html'>{html.escape(lesson.title)}</a>"
-        f"<span class='count'>step {k + 1} of {n}</span></header><main>"
-        f"<h1>{html.escape(step.title)}</h1><div class='caption'>{caption_body_html(step.caption)}</div>{ride}"
-        "<div class='views'>"
-        f"<iframe class='lanes' src='{name}-lanes.html' title='the rods, in the lab and in the chosen frame'></iframe>"
-        f"<iframe class='diagram' src='{name}-diagram.html' title='Minkowski diagram with sliders'></iframe>"
-        f"</div><p class='note'>{html.escape(CLOCKS_NOTE)}</p>{_in_words(step)}<nav class='steps'>{nav}</nav></main>"
+        f"<span class='count'>step {k + 1} of {n}</span></header>"
+        f"<h1>{html.escape(step.title)}</h1><div class='caption'>{caption_body_html(step.caption)}</div></div>"
+        f"<iframe class='canvas' src='{name}-canvas.html' "
+        "title='the rods and their Minkowski diagrams, in the lab and in the chosen frame'></iframe></div><main>"
+        f"<div class='views'><iframe class='diagram' src='{name}-diagram.html' "
+        f"title='Minkowski diagram with sliders'></iframe></div>{ride}"
+        f"<p class='note'>{html.escape(CLOCKS_NOTE)}</p>{_in_words(step)}<nav class='steps'>{nav}</nav></main>"
     )
-    return _page(f"{step.title} · {lesson.title}", body, next_href, prev_href if k > 0 else "index.html", shade)
+    title = f"{step.title} · {lesson.title}"
+    return _page(title, body, next_href, prev_href if k > 0 else "index.html", shade, _FIT_CANVAS)
 
 
 def _index_page(lesson: Lesson, shade: Shade = "light") -> str:
@@ -203,9 +251,9 @@ def export_lesson(
     for k, step in enumerate(lesson.steps):
         name = step_name(k)
         resolved = step.resolved
-        lanes = record_lanes_html(build_drawing(resolved), seconds, fps, shade=shade)
-        write(out / f"{name}-lanes.html", with_frame_keys(lanes))
         settings = settings_for(resolved.scene, resolved.frame).with_layers(step.layers)
+        canvas = record_canvas_html(resolved, step.scenario.settings, CANVAS_WIDTH, CANVAS_HEIGHT, seconds, fps, shade)
+        write(out / f"{name}-canvas.html", with_frame_keys(canvas))
         write(out / f"{name}-diagram.html", with_frame_keys(diagram_html(settings, "beside", shade)))
         write(out / f"{name}.html", _step_page(lesson, k, step, shade))
     return written

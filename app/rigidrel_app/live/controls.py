@@ -16,7 +16,6 @@ import functools
 import html
 import itertools
 import json
-import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Protocol, TypeVar
@@ -31,7 +30,7 @@ from ..lessons import Lesson
 from ..lessons.tour import LAYER_LABELS, step_labels
 from ..view.entry import NumberEntry, Refuse, Typing, Use, Verdict, control_value, refusal
 from ..view.layers import Layer
-from ..view.layout import NORMAL, Theme, height_for_plots
+from ..view.layout import CAPTION_SHARE, NORMAL, Theme, caption_reserve
 from ..view.notice import Notice, Place, notice_markup
 from ..view.scenario import format_scenario
 from ..view.scene_view import CONTROL_PX, Drawn, nice_step
@@ -653,23 +652,6 @@ def caption_message(band_html: str, shown: bool, shade: Shade = "light", theme: 
         "reserve": caption_reserve(theme), "share": CAPTION_SHARE,
     }  # fmt: skip
     return json.dumps(message)
-
-
-#: The most of the window's height a lesson's caption band takes (:func:`caption_reserve`): at
-#: 1280x720 the diagrams' need leaves it less (174 px); at 1920x1080 it is 270 px, a title and about
-#: seven lines of the caption at the desk's sizes, five in presenter mode.
-CAPTION_SHARE = 0.25
-
-
-def caption_reserve(theme: Theme) -> int:
-    """The canvas height (CSS px) a lesson's caption band leaves below it, whatever the step: what
-    two lanes with one-line titles and diagrams of :data:`~rigidrel_app.view.layout.MIN_PLOT_PX`
-    take at ``theme``'s sizes stepped down to the desk's (as
-    :func:`~rigidrel_app.view.layout.canvas_layout` steps them on a short canvas). The page gives
-    the band the rest of the viewport (at most :data:`CAPTION_SHARE` of it); a longer caption
-    scrolls in its band."""
-    desk = replace(theme, text_px=min(theme.text_px, NORMAL.text_px), title_px=min(theme.title_px, NORMAL.title_px))
-    return math.ceil(height_for_plots(desk))
 
 
 def said_message(text: str, count: int) -> str:

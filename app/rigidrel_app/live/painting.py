@@ -27,12 +27,12 @@ import numpy.typing as npt
 
 from ..backends._viser import RecordingScene, SceneFold
 from ..backends.viser import SHARED_ROOT, PageRenderer, shared_root
-from ..view.canvas import ChartFrame, PagePicture, legend_rows, still_picture
-from ..view.headline import headline
-from ..view.layout import LEGEND_ROWS, CanvasLayout, Theme, canvas_layout, title_lines_needed, titles_fit_one_line
-from ..view.scene_view import Drawn, build_drawing, panels
+from ..view.canvas import ChartFrame, PagePicture
+from ..view.layout import LEGEND_ROWS, CanvasLayout, Theme
+from ..view.page import frame_pictures, lay_out, room
+from ..view.scene_view import Drawn
 from ..view.state import Resolved, Settings
-from .timeline import Mirror, as_u8, encode_payload, frame_pictures, room
+from .timeline import Mirror, as_u8, encode_payload
 
 #: Paintings kept: the states a hall moves through, at a few canvas sizes (each ~1 MB).
 CACHED_PAINTINGS = 32
@@ -138,47 +138,13 @@ class _Shared:
 
 
 def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND_ROWS, 1)) -> Painting:
-    """Lay ``resolved`` out on ``key``'s canvas and draw it: the legend gets the rows it needs, the
-    lane titles one line if they fit it on a short canvas, else the lines they need (two, or more
-    for titles too long for the lane's width; the text a step down), and the drawing is made for
-    the final layout's plot areas. ``guess``: the legend rows and title lines to try first (a tab's
-    last painting's: a slider's answer then draws once); the result does not depend on it."""
-
-    shown = panels(resolved, key.zoomed)
-
-    def layout_of(rows: int, title_lines: int) -> CanvasLayout:
-        return canvas_layout(key.width, key.height, key.theme, rows, title_lines, shown)
-
-    def draw(layout: CanvasLayout) -> Drawn:
-        return build_drawing(resolved, areas=layout.chart_areas, label_px=layout.theme.text_px)
-
-    rows, title_lines = guess
-    layout = layout_of(rows, title_lines)
-    drawn = draw(layout)
-    legend = drawn.legend(shown.charts)
-    rows = legend_rows(legend, layout.legend.width, layout.theme)
-    tried = layout_of(rows, 1)
-    # at both ends of playback: an object's words change at its event (a door open, then closed
-    # with what it did to the poles), and the lines must hold the longer
-    ends = [[p.title for p in drawn.lane_pictures(now, tried)] for now in drawn.window]
-    needed = max(title_lines_needed(titles, tried) for titles in ends)
-    if not tried.lanes:  # one diagram zoomed to the whole canvas: no titles
-        title_lines = 1
-    elif tried.lanes[0].title_lines == 1:  # a short canvas: one line if they fit it
-        title_lines = 1 if all(titles_fit_one_line(titles, tried) for titles in ends) else needed
-    else:
-        title_lines = 1 if needed == 2 else needed
-    final = layout_of(rows, title_lines)
-    if final.chart_areas != layout.chart_areas or final.theme.text_px != layout.theme.text_px:
-        drawn = draw(final)
-        legend = drawn.legend(shown.charts)
-    chart_frames, picture = still_picture(drawn.charts, final.charts, legend, final.legend, final.theme)
-    named = None
-    if final.lanes:
-        named = headline(key.settings, [titles[0] for titles in ends], final.lanes[0], final.theme.title_px)
-    if named is not None:  # the scene and its parameters, where the lab lane's first line leaves room
-        picture = picture + PagePicture(texts=(named,))
-    return Painting(key, resolved, drawn, final, rows, title_lines, tuple(chart_frames), picture)
+    """``resolved`` laid out on ``key``'s canvas and drawn (:func:`~rigidrel_app.view.page.lay_out`).
+    ``guess``: the legend rows and title lines to try first (a tab's last painting's: a slider's
+    answer then draws once); the result does not depend on it."""
+    page = lay_out(resolved, key.settings, key.width, key.height, key.theme, key.zoomed, guess)
+    return Painting(
+        key, resolved, page.drawn, page.layout, page.legend_rows, page.title_lines, page.chart_frames, page.still
+    )
 
 
 class PaintingCache:

@@ -45,10 +45,10 @@ import numpy.typing as npt
 
 from ..backends._viser import NodeKey, RecordingScene, SceneFold, wire_dict, wire_value
 from ..backends.viser import PageRenderer
-from ..view.canvas import ChartFrame, PagePicture, moving_picture, still_picture
-from ..view.lanes import LanePicture
+from ..view.canvas import still_picture
 from ..view.layout import CanvasLayout
-from ..view.scene_view import Drawn, build_drawing
+from ..view.page import frame_pictures, room
+from ..view.scene_view import build_drawing
 from ..view.state import Resolved
 from ..view.state import resolve as resolve_settings
 from .playback import FRAME_RATE, PLAY_SECONDS
@@ -232,29 +232,6 @@ class Timeline:
             if 0 <= j < len(times) and abs(times[j] - t) <= 1e-9 * max(span, 1e-300):
                 return j
         return None
-
-
-FramePicture = tuple[list[LanePicture], PagePicture]
-
-
-def frame_pictures(
-    drawn: Drawn, layout: CanvasLayout, chart_frames: Sequence[ChartFrame | None], times: npt.NDArray[np.float64]
-) -> list[FramePicture]:
-    """The lanes and the diagrams' moving parts at each of ``times`` (the app's own drawing)."""
-    out: list[FramePicture] = []
-    for t in times.tolist():
-        instant = drawn.ride_instant(t)
-        lanes = drawn.lane_pictures(t, layout, instant)
-        items = drawn.moving_items(t, [lane.ends for lane in lanes], instant)
-        out.append((lanes, moving_picture(chart_frames, items, layout.theme)))
-    return out
-
-
-def room(pictures: Sequence[FramePicture]) -> tuple[int, int]:
-    """The boxes and clock dials the busiest of ``pictures`` shows (a renderer reserves them)."""
-    boxes = max(sum(len(lane.boxes) for lane in lanes) for lanes, _ in pictures)
-    dials = max(sum(len(lane.dials) for lane in lanes) for lanes, _ in pictures)
-    return boxes, dials
 
 
 def timeline_id(key: TimelineKey) -> str:

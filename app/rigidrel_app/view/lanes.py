@@ -511,7 +511,10 @@ class EdgeMark:
     text: str
     """``"wall 3.2 →"`` on the right, ``"← wall 3.2"`` on the left."""
     text_z: float
-    """Page z of the text's middle (the left ends' dial row), which ends at the track's edge."""
+    """Page z of the text's middle (the left ends' dial row)."""
+    text_x: float
+    """Page x of the text's edge on the mark's side: the track's edge for the body nearest the rods
+    on that side, each farther one's after the nearer one's text (they share the row)."""
 
 
 @dataclass(frozen=True)
@@ -672,6 +675,8 @@ def lane_picture(
     )
 
 
+#: Room between the names of two bodies out on the same side, in font sizes.
+EDGE_TEXT_GAP_EM = 1.0
 #: An edge mark's arrow: this many rod heights long, its head this share of its length.
 EDGE_ARROW_RODS = 1.6
 EDGE_HEAD_SHARE = 0.4
@@ -690,7 +695,8 @@ def edge_marks(
     """The bodies (:data:`.objects.OBJECT_STYLES`' ``"bar"``: a wall, a barn's door) whose bar lies wholly
     outside the lane's track at time ``now`` of ``frame``: each marked at the edge on its side, with
     its name and how far its face lies beyond the nearest rod end (``ends``, the frame's x; the core's
-    positions, to the ruler's decimals), e.g. ``"wall 3.20 →"``."""
+    positions, to the ruler's decimals), e.g. ``"wall 3.20 →"``. Bodies out on the same side (the
+    barn's door and its back wall) are named in a row from the edge inwards, the nearest first."""
     track = place.track
     out: list[EdgeMark] = []
     for obj in scene.objects:
@@ -710,8 +716,15 @@ def edge_marks(
         digits = ruler_text(abs(distance), step) if abs(distance) < 10.0 else f"{abs(distance):.0f}"
         text = f"← {obj.name} {digits}" if side < 0 else f"{obj.name} {digits} →"
         x = track.x0 if side < 0 else track.x1
-        out.append(EdgeMark(obj.name, side, distance, x, place.rod_z, style.color, text, place.dial_z[0]))
-    return tuple(out)
+        out.append(EdgeMark(obj.name, side, distance, x, place.rod_z, style.color, text, place.dial_z[0], x))
+    placed: list[EdgeMark] = []
+    for side in (-1, 1):
+        at = track.x0 if side < 0 else track.x1
+        for mark in sorted((m for m in out if m.side == side), key=lambda m: abs(m.distance)):
+            placed.append(replace(mark, text_x=at))
+            at -= side * (text_width(mark.text, place.text_px) + EDGE_TEXT_GAP_EM * place.text_px)
+    order = [m.name for m in out]
+    return tuple(sorted(placed, key=lambda m: order.index(m.name)))  # the scene's order, as made
 
 
 def edge_arrow(mark: EdgeMark, place: LaneLayout) -> Segments:

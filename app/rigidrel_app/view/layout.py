@@ -395,6 +395,23 @@ def height_for_plots(theme: Theme, width: float = 1000.0, panels: Panels = ALL_P
     return math.ceil(tall - (layout.diagram.plot.height - MIN_PLOT_PX))
 
 
+#: The most of the window's height a lesson's caption band takes (:func:`caption_reserve`): at
+#: 1280x720 the diagrams' need leaves it less (174 px); at 1920x1080 it is 270 px, a title and about
+#: seven lines of the caption at the desk's sizes, five in presenter mode.
+CAPTION_SHARE = 0.25
+
+
+def caption_reserve(theme: Theme) -> int:
+    """The canvas height (CSS px) a lesson's caption band leaves below it, whatever the step: what
+    two lanes with one-line titles and diagrams of :data:`MIN_PLOT_PX`
+    take at ``theme``'s sizes stepped down to the desk's (as
+    :func:`canvas_layout` steps them on a short canvas). The page gives
+    the band the rest of the viewport (at most :data:`CAPTION_SHARE` of it); a longer caption
+    scrolls in its band. An exported lesson step's page does the same (its canvas this high)."""
+    desk = replace(theme, text_px=min(theme.text_px, NORMAL.text_px), title_px=min(theme.title_px, NORMAL.title_px))
+    return math.ceil(height_for_plots(desk))
+
+
 def _canvas_layout(
     width: float, height: float, theme: Theme, legend_rows: int, title_lines: int, panels: Panels
 ) -> CanvasLayout:
