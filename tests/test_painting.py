@@ -5,12 +5,14 @@ one painting per canvas size."""
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import replace
 from typing import Any
 
 import numpy as np
 import pytest
 
+import rigidrel_core as rr
 from rigidrel_app.backends.viser import SHARED_ROOT, shared_root
 from rigidrel_app.live.painting import Painting, PaintingCache, PaintingKey, paint
 from rigidrel_app.live.timeline import TimelineKey, record_timeline
@@ -18,13 +20,17 @@ from rigidrel_app.view.layers import Layer
 from rigidrel_app.view.layout import (
     CAPTION_SHARE,
     LEGEND_ROWS,
+    MARGIN,
     MIN_PLOT_PX,
     NORMAL,
+    PHONE_BAR_PX,
     PRESENTER,
     Theme,
     canvas_layout,
     caption_reserve,
+    is_portrait,
 )
+from rigidrel_app.view.scene_view import panels
 from rigidrel_app.view.state import CUSTOM_FRAME, Resolved, Settings, resolve
 from tests.test_timeline import read_payload, same
 from tests.viser_client import shown
@@ -223,3 +229,29 @@ def test_followers_share_one_painting_per_canvas_and_get_their_own_back() -> Non
                 loop.run(c.close())
         finally:
             loop.close()
+
+
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_a_phone_held_upright_shows_the_lanes_and_one_diagram_under_them(kind: str) -> None:
+    """390x844: the lanes, then one diagram as wide as the phone (the chosen frame's, the lab's in a
+    lab step), then the legend above the folded panel's bar; nothing overlaps, each lane's title is
+    its first line (the dials show the clocks), and the diagram's plot keeps a readable height
+    (150 px; the paradoxes, whose objects take more title lines, 120). Turned sideways, the phone
+    shows every chart again."""
+    settings = Settings(kind)
+    painting = paint(resolved_of(settings), PaintingKey(settings, 390.0, 844.0, NORMAL))
+    layout = painting.layout
+    assert is_portrait(390.0, 844.0) and not is_portrait(844.0, 390.0) and not is_portrait(936.0, 1080.0)
+    one_lab = painting.resolved.lab_only
+    assert [c is not None for c in layout.charts] == [one_lab, not one_lab, False]
+    chart = layout.shown_charts[0]
+    assert chart.outer.x0 == MARGIN and chart.outer.x1 == 390.0 - MARGIN
+    boxes = [lane.band for lane in layout.lanes] + [chart.outer, layout.legend]
+    for upper, lower in itertools.pairwise(boxes):  # top to bottom, none into the next
+        assert upper.z0 >= lower.z1, (upper, lower)
+    assert layout.legend.z0 >= MARGIN + PHONE_BAR_PX
+    assert all(not lane.clocks_titled for lane in layout.lanes)
+    least = MIN_PLOT_PX if kind not in ("bell-spaceships", "pole-barn") else 120.0
+    assert chart.plot.height >= least, chart.plot.height
+    sideways = paint(resolved_of(settings), PaintingKey(settings, 844.0, 390.0, NORMAL)).layout
+    assert sideways.panels == panels(painting.resolved) and all(lane.clocks_titled for lane in sideways.lanes)

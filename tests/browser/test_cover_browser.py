@@ -27,6 +27,7 @@ from playwright.sync_api import ViewportSize
 from rigidrel_app.backends._viser import PageServer
 from rigidrel_app.live.cover import GROUND, TITLE, cover_page
 from rigidrel_app.live.server import App
+from rigidrel_app.view.layout import MARGIN, MIN_PLOT_PX
 from rigidrel_app.view.vocabulary import Shade, rgb
 from tests.browser.conftest import VIEWPORT
 from tests.browser.test_accessibility_browser import serious_violations
@@ -298,3 +299,29 @@ def test_reduced_motion_keeps_the_cover_still(browser: Any) -> None:
             page.wait_for_function(COVER_GONE)
         finally:
             page.close()
+
+
+def test_a_phone_held_upright_folds_the_panel_and_stacks_the_page(browser: Any, app_server: App, shots: Path) -> None:
+    """On a phone (390x844, touch), viser shows its panel as a sheet over the lower canvas, open: the
+    page folds it to its bar at the foot (page script ``phone.js``), and the canvas is laid out for
+    the phone (the lanes, one diagram under them as wide as the phone, the legend above the bar)."""
+    before = set(app_server.sessions)
+    page = browser.new_page(viewport={"width": 390, "height": 844}, is_mobile=True, has_touch=True)
+    try:
+        page.goto(app_server.url, wait_until="commit")
+        page.wait_for_function(COVER_GONE, timeout=60_000)
+        sheet = (
+            "() => { const s = Array.from(document.querySelectorAll('.mantine-Paper-root')).find("
+            "(el) => el.style.position === 'fixed' && el.style.bottom === '0px'); "
+            "return s ? s.getBoundingClientRect().height : null; }"
+        )
+        page.wait_for_function(f"() => {{ const h = ({sheet})(); return h !== null && h < 80; }}", timeout=30_000)
+        session = wait_until(lambda: next((s for k, s in app_server.sessions.items() if k not in before), None))
+        wait_until(lambda: (lay := session.painter.layout) is not None and (lay.width, lay.height) == (390, 844))
+        layout = session.painter.layout
+        assert layout is not None and len(layout.shown_charts) == 1 and len(layout.lanes) >= 1
+        assert layout.shown_charts[0].outer.width == 390 - 2 * MARGIN and layout.diagram.plot.height >= MIN_PLOT_PX
+        assert serious_violations(page) == []
+        page.screenshot(path=str(shots / "phone-390x844.png"))
+    finally:
+        page.close()

@@ -70,6 +70,9 @@ The browser, private to viser's client (inventory; the scripts in ``live/assets/
   ``html[data-mantine-color-scheme]``; and viser's notification "Software WebGL rendering
   detected" (``BrowserWarning.tsx``: a ``.mantine-Notification-root`` with that
   ``.mantine-Notification-title``), closed by its close button.
+- on a narrow screen, the panel as a bottom sheet (``ControlPanel/BottomPanel.tsx``): a Mantine
+  ``Paper`` fixed at the bottom right, open at first, and in it the handle (a box with
+  ``cursor: pointer``) whose click folds it to its bar, 3.5 em high (``live/assets/phone.js``).
 - how the client lays out a label (``client/src/label/labelLayout.ts``): its text block padded by
   ``BACKGROUND_PADDING_FRACTION`` (0.2) of its line height (the font's ascent plus descent, 1.117
   em in Arial), and the padded block set at the anchor, so a left-anchored text starts a tenth of

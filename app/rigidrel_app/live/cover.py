@@ -9,7 +9,7 @@ and script are in the page itself, so it is the first thing painted, and it keep
 page hidden until the session says that its first page is drawn (:func:`say_page_drawn`). If the
 page cannot reach the server, at first or after a drop, the cover comes back and says so in
 plain words. The files are ``assets/cover.html``, ``cover.css``, ``cover.js`` and
-``cover-ready.js``.
+``cover-ready.js``. The page also folds viser's panel on a phone held upright (``phone.js``).
 """
 
 from __future__ import annotations
@@ -41,7 +41,8 @@ def cover_colors(shade: Shade) -> dict[str, str]:
 def cover_page(shade: Shade) -> str:
     """viser's client page with the cover in it, for tabs that open in the ``shade`` theme."""
     style = f"<style>{page_asset('cover.css', **cover_colors(shade))}</style>"
-    body = page_asset("cover.html") + f"<script>{page_asset('cover.js')}</script>"
+    scripts = "".join(f"<script>{page_asset(name)}</script>" for name in ("cover.js", "phone.js"))
+    body = page_asset("cover.html") + scripts
     return page_with(style, body, TITLE, COVERED)
 
 

@@ -105,6 +105,16 @@ class LaneLayout:
     line, :func:`lane_title_text`)."""
     text_px: float = 15.0
     """The lane's text size (its ruler numbers, edge marks and the rods' names on their bars)."""
+    clocks_titled: bool = True
+    """Whether the title says the clocks' readings (its second line). Not on a phone held upright
+    (:func:`is_portrait`), whose height holds the lanes and a diagram only if each lane's title is
+    its first line (the frame, its time, the objects): the dials show the clocks."""
+
+
+def title_shown(title: str, lane: LaneLayout) -> str:
+    """A lane's title (two lines: the frame and its time, the clock readings) as ``lane`` shows it:
+    its first line alone where the lane leaves the clocks to its dials (:attr:`LaneLayout.clocks_titled`)."""
+    return title if lane.clocks_titled else title.split("\n", 1)[0]
 
 
 @dataclass(frozen=True)
@@ -197,6 +207,12 @@ MIN_TEXT_PX = 14.0
 #: short canvas (a projector's 1280x720 under a lesson's caption) the lanes' titles go on one line,
 #: then the text steps down to the desk theme's sizes (:func:`canvas_layout`).
 MIN_PLOT_PX = 150.0
+#: A canvas narrower than this and taller than wide is a phone held upright: its diagrams are
+#: stacked under the lanes, each as wide as the canvas (:func:`canvas_layout`).
+PORTRAIT_WIDTH = 700.0
+#: On a phone, viser's panel is a sheet folded to a bar at the foot of the screen (3.5 em of its
+#: 14 px text, and its shadow), over the canvas' right side: the legend starts above it.
+PHONE_BAR_PX = 54.0
 
 
 #: A one-line title is taken to fit only with this much room to spare (its numbers change width as
@@ -213,7 +229,7 @@ def titles_fit_one_line(titles: Sequence[str], layout: CanvasLayout) -> bool:
     """Whether each lane's title (two lines) fits its lane on one line at :data:`MIN_TEXT_PX`, with
     :data:`TITLE_SPARE` to spare."""
     return all(
-        text_width(one_line(t), MIN_TEXT_PX * TITLE_SPARE) <= lane.band.width
+        text_width(one_line(title_shown(t, lane)), MIN_TEXT_PX * TITLE_SPARE) <= lane.band.width
         for t, lane in zip(titles, layout.lanes, strict=False)
     )
 
@@ -271,7 +287,10 @@ def title_lines_needed(titles: Sequence[str], layout: CanvasLayout) -> int:
     :data:`TITLE_SPARE` to spare (a later instant's numbers may be a character longer): at
     least 2. :func:`lane_title_text` then sets them as large as those lines allow."""
     px = min(layout.theme.title_px, MIN_TEXT_PX)
-    lines = [wrap_title(t, lane.band.width / TITLE_SPARE, px).count("\n") + 1 for t, lane in zip(titles, layout.lanes)]
+    lines = [
+        wrap_title(title_shown(t, lane), lane.band.width / TITLE_SPARE, px).count("\n") + 1
+        for t, lane in zip(titles, layout.lanes)
+    ]
     return max([2, *lines])
 
 
@@ -281,7 +300,9 @@ def lane_title_text(title: str, layout: LaneLayout, px: float) -> tuple[str, flo
     smaller down to :data:`MIN_TEXT_PX` so that it fits the lane's width (left on two if even that
     does not fit). Else broken to the lane's width (:func:`wrap_title`) at the largest size from
     ``px`` down to :data:`MIN_TEXT_PX` that takes no more lines than the layout gave it (at the
-    smallest, however many it takes)."""
+    smallest, however many it takes). On a lane that leaves the clocks to its dials, the first line
+    alone (:func:`title_shown`)."""
+    title = title_shown(title, layout)
     if layout.title_lines == 1 and "\n" in title:
         one = one_line(title)
         fit = px * layout.band.width / max(text_width(one, px), 1.0)
@@ -359,6 +380,12 @@ class CanvasSize:
         return cls(width, height, resolution, True)
 
 
+def is_portrait(width: float, height: float) -> bool:
+    """Whether a ``width`` x ``height`` canvas (CSS px) is a phone held upright: narrower than
+    :data:`PORTRAIT_WIDTH` and taller than wide."""
+    return width < PORTRAIT_WIDTH and height > width
+
+
 def canvas_layout(
     width: float,
     height: float,
@@ -368,7 +395,9 @@ def canvas_layout(
     panels: Panels = ALL_PANELS,
 ) -> CanvasLayout:
     """The lanes across the top, the diagrams side by side below, the legend (``legend_rows`` rows) at
-    the bottom. ``title_lines``: 1 if the lanes' titles fit one line (:func:`titles_fit_one_line`),
+    the bottom; on a phone held upright (narrower than :data:`PORTRAIT_WIDTH`, taller than wide) the
+    diagrams one under another, and the legend above the bar of the folded panel
+    (:data:`PHONE_BAR_PX`). ``title_lines``: 1 if the lanes' titles fit one line (:func:`titles_fit_one_line`),
     else the lines they need (:func:`title_lines_needed`, at least 2). Titles that fit one line
     take two, and on a canvas too short for the diagrams' plots to get :data:`MIN_PLOT_PX`, one;
     if that is not enough (or they need two or more), the text takes the desk theme's sizes (never
@@ -444,26 +473,35 @@ def _canvas_layout(
                 tick_px=0.4 * theme.text_px,
                 title_lines=title_lines,
                 text_px=theme.text_px,
+                clocks_titled=not is_portrait(w, h),
             )
         )
         top = band.z0 - 4.0
+    portrait = is_portrait(w, h)
+    foot = MARGIN + (PHONE_BAR_PX if portrait else 0.0)
     legend_h = legend_rows * LEGEND_ROW_EM * theme.text_px
-    legend = Rect(MARGIN, MARGIN, w - MARGIN, MARGIN + legend_h)
+    legend = Rect(MARGIN, foot, w - MARGIN, foot + legend_h)
     charts_top, charts_bottom = top - 4.0, legend.z1 + 4.0
     gap = 12.0
     shown = panels.charts
-    cw = (w - 2 * MARGIN - (sum(shown) - 1) * gap) / sum(shown)
+    n = sum(shown)
+    # side by side; on a phone held upright, one under another, each as wide as the canvas
+    cw = (w - 2 * MARGIN - (n - 1) * gap) / n if not portrait else w - 2 * MARGIN
+    ch = (charts_top - charts_bottom - (n - 1) * gap) / n if portrait else charts_top - charts_bottom
     charts: list[ChartLayout | None] = []
-    x0 = MARGIN
+    x0, z1 = MARGIN, charts_top
     for k in range(3):
         if not shown[k]:
             charts.append(None)
             continue
-        outer = Rect(x0, charts_bottom, x0 + cw, max(charts_top, charts_bottom + 60.0))
+        outer = Rect(x0, max(z1 - ch, charts_bottom), x0 + cw, max(z1, charts_bottom + 60.0))
         left = 3.6 * theme.text_px  # the time axis' numbers
         bottom = 1.5 * theme.text_px + 6.0  # the x axis' numbers
         head = 2.5 * theme.title_px  # the title, on up to two lines
         plot = Rect(outer.x0 + left, outer.z0 + bottom, outer.x1 - 6.0, max(outer.z1 - head, outer.z0 + bottom + 30.0))
         charts.append(ChartLayout(outer, plot))
-        x0 += cw + gap
+        if portrait:
+            z1 -= ch + gap
+        else:
+            x0 += cw + gap
     return CanvasLayout(w, h, theme, tuple(lanes), (charts[0], charts[1], charts[2]), legend, panels)

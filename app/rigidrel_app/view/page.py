@@ -18,7 +18,15 @@ import numpy.typing as npt
 from .canvas import ChartFrame, PagePicture, legend_rows, moving_picture, still_picture
 from .headline import headline
 from .lanes import LanePicture
-from .layout import LEGEND_ROWS, CanvasLayout, Theme, canvas_layout, title_lines_needed, titles_fit_one_line
+from .layout import (
+    LEGEND_ROWS,
+    CanvasLayout,
+    Theme,
+    canvas_layout,
+    is_portrait,
+    title_lines_needed,
+    titles_fit_one_line,
+)
 from .scene_view import Drawn, build_drawing, panels
 from .state import Resolved, Settings
 
@@ -50,10 +58,11 @@ def lay_out(
     the rows it needs, the lane titles one line if they fit it on a short canvas, else the lines
     they need (two, or more for titles too long for the lane's width; the text a step down), and
     the drawing is made for the final layout's plot areas. ``settings``: the state's, named in the
-    headline. ``zoomed``: one diagram over the whole canvas (key Z, :func:`.scene_view.panels`).
+    headline. ``zoomed``: one diagram over the whole canvas (key Z, :func:`.scene_view.panels`); on a
+    phone held upright, the lanes and one diagram (:func:`~.layout.is_portrait`).
     ``guess``: the legend rows and title lines to try first (a tab's last page's: a slider's answer
     then draws once); the result does not depend on it."""
-    shown = panels(resolved, zoomed)
+    shown = panels(resolved, zoomed, is_portrait(width, height))
 
     def layout_of(rows: int, title_lines: int) -> CanvasLayout:
         return canvas_layout(width, height, theme, rows, title_lines, shown)

@@ -310,15 +310,19 @@ def _is_lab(r: Resolved) -> bool:
     return r.ride is None and r.frame.same_velocity(_LAB)
 
 
-def panels(r: Resolved, zoomed: bool = False) -> Panels:
+def panels(r: Resolved, zoomed: bool = False, portrait: bool = False) -> Panels:
     """The lanes and charts the canvas shows for ``r``: the chosen frame's lane and diagram unless
     that frame is the lab's own (:attr:`~.state.Resolved.lab_only`), the lengths chart while its
     layer is shown. ``zoomed`` (key Z): one diagram, the chosen frame's (the lab's in a lab step),
     over the whole canvas, drawn larger (a diagram keeps one scale for x and t, so its height bounds
-    it: the lanes give theirs)."""
+    it: the lanes give theirs). ``portrait``: a phone held upright
+    (:func:`~.layout.is_portrait`), whose height holds the lanes and one diagram under them, as
+    wide as the phone: the same one (turned sideways, or with Z, the phone shows the rest)."""
     one_lab = r.lab_only
     if zoomed:
         return Panels(lanes=0, charts=(one_lab, not one_lab, False))
+    if portrait:
+        return Panels(lanes=1 if one_lab else 2, charts=(one_lab, not one_lab, False))
     return Panels(lanes=1 if one_lab else 2, charts=(True, not one_lab, Layer.LENGTH_PANEL in r.layers))
 
 
