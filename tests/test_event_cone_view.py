@@ -51,8 +51,8 @@ def test_the_cone_is_named_chosen_and_refused_like_any_setting() -> None:
     s = Settings.of("wall-collision", v=0.6, eps=0.0)
     assert cone_events(rr.build_scene("wall-collision")) == ("contact", "T_1", "T_1'")
     d = build_drawing(build(Settings("wall-collision", s.values, cone="T_1")))
-    names = {it.style.name for it in d.lab_chart.items if isinstance(it, Area)}
-    assert "light cone of T1" in names
+    names = {it.style.name for it in d.lab_chart.items if isinstance(it, Segments) and it.style.group == "event cone"}
+    assert names == {"light cone of <b>T<sub>1</sub></b>"}  # its dotted rays, named with the event's subscript
     bad = resolve(Settings("wall-collision", s.values, cone="T_9"))
     assert isinstance(bad, str)
     assert bad.startswith("Light cone refused: cone must be an event of the scene: contact, T_1, T_1'; got 'T_9'")

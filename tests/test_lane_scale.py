@@ -19,7 +19,7 @@ from rigidrel_app.backends._viser import RecordingScene, SceneFold
 from rigidrel_app.backends.viser import PageRenderer
 from rigidrel_app.live.timeline import frame_times
 from rigidrel_app.view.canvas import still_picture
-from rigidrel_app.view.lanes import LanePicture, LaneScale, ruler_text
+from rigidrel_app.view.lanes import DIAL_SPACING, LanePicture, LaneScale, ruler_text, spread_dials
 from rigidrel_app.view.layout import NORMAL, PRESENTER, CanvasLayout, Theme, canvas_layout, text_width
 from rigidrel_app.view.page import frame_pictures, room
 from rigidrel_app.view.scene_view import Drawn, build_drawing
@@ -269,3 +269,35 @@ def test_while_playing_both_rulers_number_every_tick(step: int) -> None:
             }
             assert _recorded_ruler_numbers(fold, k) == want
             assert len(want) >= 3
+
+
+# ---------------------------------------------------------------------- clock dials
+@pytest.mark.parametrize("kind", list(rr.scene_descriptions()))
+def test_no_two_dials_overlap_and_each_stays_by_its_end(kind: str) -> None:
+    """Two ends at one place (the barn's two poles, both rear ends at the wall; rods in contact)
+    keep a dial each, side by side in their row; a dial with room sits on its end, and its hand
+    turns about its centre."""
+    layout = canvas_layout(936, 720)
+    d = _drawn(Settings(kind), layout)
+    moved = 0
+    for now in np.linspace(d.window[0], d.window[1], 13):
+        for lane, place in zip(d.lane_pictures(float(now), layout), layout.lanes, strict=True):
+            r = place.clock_px
+            for z in np.unique(lane.dials[:, 1]):
+                xs = np.sort(lane.dials[lane.dials[:, 1] == z, 0])
+                assert np.all(np.diff(xs) >= 2.0 * r - 1e-9), (now, xs)
+            ends = lane.origin_px + lane.scale * lane.ends.ravel()
+            shown = (ends >= place.track.x0) & (ends <= place.track.x1)
+            off = np.abs(np.sort(lane.dials[:, 0]) - np.sort(ends[shown]))
+            moved += int(np.count_nonzero(off > 1e-6))
+            assert np.all(off <= 0.5 * len(ends) * DIAL_SPACING * r)
+    if kind == "pole-barn":
+        assert moved  # its poles' rear ends at the back wall: their dials side by side
+
+
+def test_spread_dials() -> None:
+    row = np.array([0.0, 0.0, 1.0, 0.0])
+    out = spread_dials(np.array([10.0, 10.5, 10.0, 40.0]), row, radius=2.0)
+    np.testing.assert_allclose(out, [10.25 - 2.3, 10.25 + 2.3, 10.0, 40.0])  # the third dial: another row
+    chain = spread_dials(np.array([0.0, 0.0, 5.0]), np.zeros(3), radius=2.0)  # a spread pair reaches the third
+    assert np.all(np.diff(np.sort(chain)) >= 4.6 - 1e-9)

@@ -635,11 +635,17 @@ def lane_picture(
     boxes = [b for b in clipped if b.x1 > b.x0]
     seg = st.segments
     sx0, sx1 = px(seg.x0), px(seg.x1)
+    # two ends at one place (the barn's two poles, a rod touching another) keep a dial each, side by side
+    ends_x = px(st.dials[:, 0])
+    shift = spread_dials(ends_x, st.dials[:, 1], place.clock_px) - ends_x
+    hands = slice(seg.x0.size - shift.size, seg.x0.size)  # the dials' hands close the segments
+    sx0[hands] += shift
+    sx1[hands] += shift
     inside = (np.minimum(sx0, sx1) >= track.x0) & (np.maximum(sx0, sx1) <= track.x1)
     rods = Segments(
         sx0[inside], place.rod_z + k * seg.y0[inside], sx1[inside], place.rod_z + k * seg.y1[inside], seg.style
     )
-    dx = px(st.dials[:, 0])
+    dx = ends_x + shift
     keep = (dx >= track.x0) & (dx <= track.x1)
     dials = np.stack([dx[keep], place.rod_z + k * st.dials[keep, 1]], axis=-1)
     step = ruler_step(win.width)
@@ -673,6 +679,36 @@ def lane_picture(
         marks,
         rod_names(scene, clipped[: scene.n_rods], place.text_px),
     )
+
+
+#: Dials in one row are at least this many radii apart, centre to centre (:func:`spread_dials`).
+DIAL_SPACING = 2.3
+
+
+def spread_dials(x: FloatArray, row: FloatArray, radius: float) -> FloatArray:
+    """The dials' centres (page x) moved apart where dials of one ``row`` (their rows' heights, any
+    unit) would overlap: dials closer than :data:`DIAL_SPACING` radii form a group, spread about its
+    members' mean, :data:`DIAL_SPACING` radii apart, in the order of the ends (the rods' order at one
+    place); a group that then reaches the next dial or group takes it in. A dial with room stays on
+    its end."""
+    out = np.asarray(x, dtype=float).copy()
+    gap = DIAL_SPACING * radius
+
+    def laid(members: list[int]) -> FloatArray:
+        offsets = (np.arange(len(members), dtype=np.float64) - 0.5 * (len(members) - 1)) * gap
+        return np.asarray(float(np.mean(out[members])) + offsets, dtype=np.float64)
+
+    for z in np.unique(row):
+        groups: list[list[int]] = []
+        for i in np.flatnonzero(row == z)[np.argsort(out[row == z], kind="stable")]:
+            groups.append([int(i)])
+            while len(groups) > 1 and laid(groups[-1])[0] - laid(groups[-2])[-1] < gap - 1e-9:
+                last = groups.pop()
+                groups[-1].extend(last)
+        new = {i: float(p) for g in groups for i, p in zip(g, laid(g), strict=True)}
+        for i, p in new.items():
+            out[i] = p
+    return out
 
 
 #: Room between the names of two bodies out on the same side, in font sizes.

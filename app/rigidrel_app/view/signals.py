@@ -33,7 +33,6 @@ from .vocabulary import (
     Segments,
     Style,
     event_label,
-    plain_text,
     rgba,
 )
 
@@ -339,7 +338,10 @@ def event_cone_items(
     scene: rr.Scene, name: str, frame: rr.Frame, x_range: tuple[float, float], t_range: tuple[float, float]
 ) -> tuple[Item, ...]:
     """The light cone of one named event (or the origin event's name) in ``frame``: its future and past
-    shaded, its four light rays, clipped to the chart. The event comes from the core (exact)."""
+    shaded, its four light rays, clipped to the chart. The event comes from the core (exact). Its
+    rays are dotted, and name it in the legend ("light cone of T₁"): the origin's cone is dashed,
+    the signals from the key event solid, and its future a fill of the same gold, whose swatch
+    this cone's fill would match."""
     tk, xk = scene.source_event(name, frame=frame)
     reach = (x_range[1] - x_range[0]) + (t_range[1] - t_range[0]) + abs(tk) + abs(xk)
     items: list[Item] = []
@@ -349,10 +351,8 @@ def event_cone_items(
         poly = _clip(tri, x_range, t_range)
         if poly.shape[0] >= 3:
             style = Style(rgba(LIGHT_COLOR, 0.10 if sign > 0 else 0.06), 0.0, group="event cone")
-            if sign > 0:
-                style = replace(style, name=f"light cone of {plain_text(label)}")
             items.append(Area(poly[:, 0], poly[:, 1], style))
-    rays = Style(LIGHT_COLOR, 2.5, group="event cone")  # solid: the origin's cone is dashed
+    rays = Style(LIGHT_COLOR, 2.5, dash="dot", name=f"light cone of {label}", group="event cone")
     items.append(
         Segments(
             np.array([xk - reach, xk + reach]),
