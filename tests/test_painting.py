@@ -215,9 +215,12 @@ def test_followers_share_one_painting_per_canvas_and_get_their_own_back() -> Non
             wait_until(lambda: all(s.state.step == 1 and s.painter.painting is not None for s in followers), timeout=60)
             wait_until(lambda: all(len(c.still_frames) > b for c, b in zip(clients, before, strict=True)), timeout=60)
             assert app.paintings.made == made + 1  # the leader's, then every follower's (one canvas size)
-            assert followers[0].painter.painting is followers[1].painter.painting
-            assert all(s.painter.renderer.still_lent for s in followers) and not sessions[0].painter.renderer.still_lent
-            assert all(c.pages and c.pages[-1][1] for c in clients[1:]) and not clients[0].pages
+            # the leader's own move shows the same shared page: sent whole, never mixed with the
+            # step before (its own picture would be updated node by node)
+            wait_until(lambda: sessions[0].painter.painting is not None, timeout=30)
+            assert sessions[0].painter.painting is followers[0].painter.painting is followers[1].painter.painting
+            assert all(s.painter.renderer.still_lent for s in sessions)
+            wait_until(lambda: all(c.pages and c.pages[-1][1] for c in clients), timeout=30)
             # a follower's own move (a layer): its own picture comes back, the shared page goes
             followers[0].asks.set_layer(Layer.SIGNALS, Layer.SIGNALS not in followers[0].state.settings.layers)
             wait_until(lambda: clients[1].pages[-1] == (clients[1].pages[-1][0], False), timeout=30)

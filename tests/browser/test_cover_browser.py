@@ -256,9 +256,10 @@ def test_the_cover_is_axe_clean_and_in_the_theme_at_both_screen_sizes(browser: A
 
 def test_a_drawn_page_said_before_the_connection_is_kept_until_it_is_up(browser: Any) -> None:
     """The word that the page is drawn can reach the cover before viser's client says that it is
-    connected (on a loaded machine its store says so late): the cover keeps that word and leaves
-    once the connection is up, not never. Here the page's connection goes to a port where no server
-    listens yet (viser's ``?websocket=``), and one starts there after the word."""
+    connected (on a loaded machine its store says so late, at first and after a drop): the cover
+    keeps that word and leaves once the connection is up, not never. Here the page's connection
+    goes to a port where no server listens yet (viser's ``?websocket=``), and one starts there after
+    the word; then it stops, the word comes again, and one starts there again."""
     with contextlib.closing(socket.socket()) as probe:
         probe.bind(("127.0.0.1", 0))
         port = probe.getsockname()[1]
@@ -271,6 +272,15 @@ def test_a_drawn_page_said_before_the_connection_is_kept_until_it_is_up(browser:
             page.evaluate("() => window.rigidrelCover.ready()")
             page.wait_for_function("() => document.getElementById('rigidrel-cover').dataset.waits === 'connection'")
             assert page.evaluate(COVER_UP)
+            later = PageServer(cover_page("light"), host="127.0.0.1", port=port, verbose=False)
+            page.wait_for_function(COVER_GONE, timeout=30_000)
+            # the same after a drop: the word, while viser's store still says it is reconnecting
+            later.stop()
+            later = None
+            page.wait_for_function(COVER_UP, timeout=30_000)
+            page.evaluate("() => { delete document.getElementById('rigidrel-cover').dataset.waits; }")
+            page.evaluate("() => window.rigidrelCover.ready()")
+            page.wait_for_function("() => document.getElementById('rigidrel-cover').dataset.waits === 'connection'")
             later = PageServer(cover_page("light"), host="127.0.0.1", port=port, verbose=False)
             page.wait_for_function(COVER_GONE, timeout=30_000)
         finally:

@@ -282,11 +282,14 @@ def test_the_riding_step_rides_its_point(open_tab: OpenTab, lesson_app: App, sho
     tab.wait_caption(PAPER.steps[k].title)
     s = tab.session
     wait_until(lambda: s.painter.drawn is not None and s.painter.drawn.resolved.ride == PAPER.steps[k].ride, timeout=30)
-    wait_until(
-        lambda: len(s.painter.renderer_lanes) == 2 and s.painter.renderer_lanes[1].title.startswith("riding:"),
-        timeout=30,
-    )
-    lane = s.painter.renderer_lanes[1]
+
+    def lanes() -> list[Any]:  # as the page shows them now (the step's shared page and its frames)
+        d, layout, now = s.painter.drawn, s.painter.layout, s.state.playback.now
+        assert d is not None and layout is not None
+        return d.lane_pictures(now, layout, d.ride_instant(now))
+
+    wait_until(lambda: len(lanes()) == 2 and lanes()[1].title.startswith("riding:"), timeout=30)
+    lane = lanes()[1]
     rest = s.painter.drawn.resolved.scene.rods[0].motion.length  # type: ignore[union-attr]
     assert float(np.diff(lane.ends[0])[0]) == pytest.approx(rest, rel=1e-12)
     assert "default frame" not in tab.caption()
@@ -320,14 +323,16 @@ def test_follow_the_lecturers_tab(open_tab: OpenTab, shots: Path) -> None:
         def node(tab: Any, name: str) -> dict[str, Any] | None:
             return tab.page.evaluate("(n) => window.__rigidrelPlayback.node(n)", name)
 
-        # the follower shows the step's shared page (its own still picture hidden), the leader its own
+        # the follower shows the step's shared page (its own still picture hidden), and so does the
+        # leader: one page, made once, sent whole
         def root() -> str:
             painting = student.session.painter.painting
             return "" if painting is None else shared_root(painting.id)
 
         wait_until(lambda: (node(student, f"{root()}/text/0") or {}).get("visible"), timeout=30)
         assert not (node(student, "/page/static") or {}).get("visible", True)
-        assert node(lead, "/shared") is None and not lead.session.painter.renderer.still_lent
+        assert lead.session.painter.painting is not None and lead.session.painter.renderer.still_lent
+        wait_until(lambda: node(lead, "/shared") is not None, timeout=30)
 
         def shows_its_painting() -> bool:
             """The page's shared texts are those of the painting the follower's session shows now (a

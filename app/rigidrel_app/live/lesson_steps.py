@@ -43,17 +43,20 @@ class LessonSteps:
                 return
             moved = step != tab.state.step
             with tab.client.atomic():
-                self.arrive(step, shared=not report)
+                self.arrive(step)
         if moved and report:
             tab.lesson.changed_step(step)
 
-    def arrive(self, index: int, shared: bool = False) -> None:
-        """Arrive at step ``index``: its settings, window, start, autoplay, locks and caption
-        (``shared``: a step the leading tab chose, drawn as a page shared by the tabs that follow)."""
+    def arrive(self, index: int) -> None:
+        """Arrive at step ``index``: its settings, window, start, autoplay, locks and caption. The
+        step's page is the one shared by every tab that shows it on a canvas of this size (the
+        leading tab's, its followers', a tab walking the lesson alone): made once, and sent whole
+        under a root of its own, so the canvas never shows the old step's lines or words beside
+        the new one's (a tab's own picture is updated node by node)."""
         tab = self.tab
         a = tab.lesson.arrival(index)
         tab.state = tab.state.arriving(index, a)
-        tab.ask(a.settings, refit=True, shared=shared, draw=False)
+        tab.ask(a.settings, refit=True, shared=True, draw=False)
         tab.set_playback(tab.state.step_start(a))
         tab.show(tab.state)
         tab.draw_now(force_plots=True)

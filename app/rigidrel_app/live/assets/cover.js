@@ -23,10 +23,10 @@
   var viewer = null;
   var seen = null;  // the connection state last seen
   var connected = false;
-  var everConnected = false;
+  var losses = 0;  // connections lost so far
   var gaveUp = false;  // the cover says the server cannot be reached
   var drawn = false;  // the page is drawn and the cover gone
-  var early = false;  // ready() came before viser's client said it was connected
+  var early = false;  // ready() came before viser's client said that it was connected
   var timer = 0;
 
   function say(text, lost) {
@@ -71,7 +71,6 @@
     seen = now;
     if (now === 'connected') {
       connected = true;
-      everConnected = true;
       gaveUp = false;
       clearTimeout(timer);
       if (!drawn) say('Loading the scene\u2026', false);
@@ -82,6 +81,8 @@
       }
     } else if (connected) {  // the connection was lost: what the page shows is stale
       connected = false;
+      losses += 1;
+      early = false;
       show('Lost the connection to the rigidrel server at ' + host + ' \u2014 trying again\u2026', true);
       giveUpIn(RECONNECT_MS);
     } else if (gaveUp) {
@@ -162,15 +163,15 @@
     /* The server's word that the tab's first page is sent: the messages before this one are in
        viser's state now; the cover leaves once the canvas has drawn them. */
     ready: function () {
+      var at = losses;
       whenDrawn(function () {
+        if (losses !== at) return;  // lost again meanwhile: the server sends its page and this word again
         if (viewer && state() !== 'connected') {
-          // Before the first connection (viser's store can say so after the page's first
-          // messages), the cover leaves once it is connected. After a loss, the server sends its
-          // page and this word again.
-          if (!everConnected) {
-            early = true;
-            cover.dataset.waits = 'connection';  // seen by the tests
-          }
+          // The word came over the connection, but viser's store says so later (after the page's
+          // first messages, at the first connection or again after a drop; on a loaded machine
+          // later still): the cover leaves once it does.
+          early = true;
+          cover.dataset.waits = 'connection';  // seen by the tests
           return;
         }
         hide();
