@@ -268,7 +268,9 @@ def test_a_drawn_page_said_before_the_connection_is_kept_until_it_is_up(browser:
         page = browser.new_page(viewport=VIEWPORT)
         try:
             page.goto(f"http://127.0.0.1:{server.get_port()}/?websocket=ws://127.0.0.1:{port}", wait_until="commit")
-            page.wait_for_function("() => !!window.rigidrelCover")
+            # the cover follows viser's connection once it has found viser's viewer (before, a word
+            # that the page is drawn is taken as it comes: no connection to wait for is known)
+            page.wait_for_function("() => document.getElementById('rigidrel-cover').dataset.viewer === 'found'")
             page.evaluate("() => window.rigidrelCover.ready()")
             page.wait_for_function("() => document.getElementById('rigidrel-cover').dataset.waits === 'connection'")
             assert page.evaluate(COVER_UP)

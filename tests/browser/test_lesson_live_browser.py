@@ -109,6 +109,10 @@ class LessonTab:
         self.page.keyboard.press(key)
 
 
+#: Whether the page's runtime shows the node of a name (present, and not hidden).
+SHOWN_NODE = "(r) => { const n = window.__rigidrelPlayback.node(r); return !!n && n.visible !== false; }"
+
+
 #: The ``open_tab`` fixture: ``open_tab(app, width=1280, height=720)`` -> a tab on ``app``.
 OpenTab = Callable[..., LessonTab]
 
@@ -146,6 +150,7 @@ def test_keyboard_walk_through_the_paper_lesson(open_tab: OpenTab, lesson_app: A
     tab.wait_caption(PAPER.steps[0].title)
     assert s.state.step == 0 and "a′_F = 0.5" in tab.caption()  # a number the core filled in
     tab.screenshot(shots / "step-1-1280.png")
+    wait_until(lambda: s.player.ready, timeout=60)  # the page's runtime plays: steps come as shared pages
     walk = [("PageDown", 1), ("PageDown", 2), ("ArrowRight", 3), ("PageUp", 2), ("ArrowLeft", 1), ("PageUp", 0)]
     for key, step in walk:
         tab.press(key)
@@ -153,6 +158,12 @@ def test_keyboard_walk_through_the_paper_lesson(open_tab: OpenTab, lesson_app: A
         assert s.state.step == step
         expected = PAPER.steps[step].scenario.settings
         wait_until(lambda expected=expected: s.state.settings.values == expected.values, timeout=30)
+        # the step's page, whole: the one shared by every tab on this canvas (sent under a root of
+        # its own, so never mixed with the step before), its own still picture hidden
+        painting = s.painter.painting
+        assert painting is not None and painting.key.settings == s.state.settings and s.painter.renderer.still_lent
+        root = shared_root(painting.id)
+        wait_until(lambda root=root: tab.page.evaluate(SHOWN_NODE, root), timeout=30)
     tab.press("PageUp")  # at the first step: stays
     assert s.state.step == 0
     # the step list in the panel

@@ -116,6 +116,7 @@
     if (found) {
       clearInterval(looking);
       viewer = found;
+      cover.dataset.viewer = 'found';  // seen by the tests
       viewer.useGui.subscribe(changed);
       changed();
       return;
