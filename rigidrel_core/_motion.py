@@ -61,6 +61,10 @@ PIECEWISE_MIN = 1024
 #: From this many unsorted times on, rows are sampled by blocks (measured crossover: about 2048
 #: times for 4 and for 22 rows).
 _SHUFFLED_MIN = 2048
+#: The sampler before these paths used its sorted form (which squares the radius with ``pow``)
+#: from this many sorted times on, its branch-free form (``rho * rho``) below: the sorted path
+#: squares as the form it stands for did, so its outputs are those of the old sampler bit for bit.
+_POW_SQUARE_MIN = 2048
 #: Times per block on the piecewise paths: a block's work arrays (256 KiB each) stay in the
 #: caches, and numpy's cost per call (0.5 to 2 us on a shared 2-core machine) is spread over
 #: enough samples: on such a machine 4096 was 1.3 times slower than 32768 on sorted curved
@@ -796,7 +800,7 @@ class MotionPlan:
         i1 = np.searchsorted(t, self.t_stop, side="right").tolist()
         work = np.empty(min(n, _BLOCK))
         for row, a, b, x in zip(self._rows, i0, i1, out, strict=True):
-            c = _RowArrays.of(row, row.radius2_pow)
+            c = _RowArrays.of(row, row.radius2_pow if n >= _POW_SQUARE_MIN else row.radius2)
             for j in range(0, a, _BLOCK):
                 k = min(j + _BLOCK, a)
                 _line(t[j:k], c.w_start, c.x0_start, x[j:k])

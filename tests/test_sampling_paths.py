@@ -225,3 +225,17 @@ def test_ends_are_read_only() -> None:
         rr.ENDS *= 2.0
     assert rr.ENDS.tolist() == [0.0, 1.0]
     assert scene.velocities([0.1]).tobytes() == before
+
+
+def test_sorted_times_below_the_old_threshold_square_as_the_old_sampler_did() -> None:
+    """From 1024 to 2047 sorted times the sorted path runs, where the old sampler used its
+    branch-free form, which squares the radius as ``rho * rho`` (``pow`` can differ in the last bit:
+    this radius, found by the test above, is one such). Bit for bit, on both sides of 2048."""
+    scene = rr.build_scene("constant-acceleration", v=0.5, a_front=0.2657163731543798)
+    plan = plan_rods([r.motion for r in scene.rods], rr.LAB, np.array([0.0, 1.0]))
+    radius = float(plan.radius[1])
+    assert radius * radius != float(np.float64(radius) ** 2)  # the case: the two squares differ
+    lo, hi = scene.time_window(frame=rr.LAB)
+    for n in (1024, 2047, 2048, 4096):
+        t = np.linspace(lo, hi, n)
+        assert plan.positions(t).tobytes() == reference_positions(plan, t).tobytes(), n
