@@ -68,6 +68,33 @@ def test_rod_pixels_match_the_core_in_both_lanes(tab: AppPage, shots: Path) -> N
     assert max(separation[2:]) > 10 * PIXEL_TOLERANCE
 
 
+@pytest.mark.parametrize(("width", "height"), [(1280, 720), (1920, 1080)])
+def test_both_lanes_are_drawn_at_one_scale(tab: AppPage, shots: Path, width: int, height: int) -> None:
+    """Bell's ships late in their window, at V = 0.6: each 0.08 long in the lab and 0.1 in the
+    ships' frame after. Measured on the canvas, each ship is drawn in both lanes in the ratio of
+    the lengths the core gives, so contraction reads off the picture (both lanes at one scale)."""
+    tab.page.set_viewport_size({"width": width, "height": height})
+    settings = Settings("bell-spaceships", frame="ships after")
+    d = build_drawing_for(settings)
+    now = d.window[0] + 0.95 * (d.window[1] - d.window[0])
+    show(tab, settings, now)
+    wait_until(lambda: (lay := tab.session.painter.layout) is not None and lay.height > 0.5 * height, timeout=60)
+    tab.canvas_after(np.zeros_like(tab.canvas()))  # at its new size (rods_drawn waits for the rods)
+    lab, frame = rods_drawn(tab)
+    tab.page.screenshot(path=str(shots / f"one-scale-bell-{width}x{height}.png"))
+    lanes = tab.session.painter.renderer_lanes
+    assert lanes[0].scale == pytest.approx(lanes[1].scale, rel=1e-12)
+    for r in range(2):
+        lab_len, frame_len = (float(np.diff(lane.ends[r])[0]) for lane in lanes)
+        assert lab_len == pytest.approx(0.08, rel=1e-3) and frame_len == pytest.approx(0.1, rel=1e-3)
+        lab_px, frame_px = lab[r][1] - lab[r][0], frame[r][1] - frame[r][0]
+        assert lab_px / frame_px == pytest.approx(lab_len / frame_len, abs=3 * PIXEL_TOLERANCE / frame_px), (
+            r,
+            lab_px,
+            frame_px,
+        )
+
+
 #: Slider extremes where the old view lost its rods; each lane must show each rod at least this
 #: share of its track times its rest length over the largest (or 12 px).
 LEGIBLE_SHARE = 0.15

@@ -61,6 +61,16 @@ def test_the_riding_lane_keeps_the_rod_at_rest_length(tab: AppPage, shots: Path)
         ride_px.append(b - a)
     assert abs(ride_px[0] - ride_px[1]) <= 2 * PIXEL_TOLERANCE, ride_px
     assert lab_px[0] - lab_px[1] > 10 * PIXEL_TOLERANCE, lab_px  # the lab sees it contracted: the test can fail
+    # both lanes at one scale: at V = 0.6 the lab's rod (0.8 L0) is drawn 0.8 of the riding one (L0),
+    # at 1280x720 and again at 1920x1080
+    assert lab_px[1] / ride_px[1] == pytest.approx(0.8, abs=3 * PIXEL_TOLERANCE / ride_px[1]), (lab_px, ride_px)
+    tab.page.set_viewport_size({"width": 1920, "height": 1080})
+    wait_until(lambda: (lay := tab.session.painter.layout) is not None and lay.height > 900, timeout=60)
+    tab.canvas_after(np.zeros_like(tab.canvas()))  # at its new size (rods_drawn waits for the rods)
+    lab, riding = rods_drawn(tab)
+    tab.page.screenshot(path=str(shots / "riding_back_end_1920x1080.png"))
+    big_lab, big_ride = lab[0][1] - lab[0][0], riding[0][1] - riding[0][0]
+    assert big_ride > ride_px[1] and big_lab / big_ride == pytest.approx(0.8, abs=3 * PIXEL_TOLERANCE / big_ride)
     assert tab.errors == []
 
 
