@@ -63,7 +63,7 @@ def command(draw: st.DrawFn) -> list[str]:
     return [*args, f"--frame={frame}", *(["--json"] if draw(st.booleans()) else [])]
 
 
-@settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(args=command())
 def test_every_accepted_extreme_prints_and_every_refused_one_is_one_line(
     args: list[str], capsys: pytest.CaptureFixture[str]

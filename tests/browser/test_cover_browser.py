@@ -226,21 +226,23 @@ def ground_share(png: Path, ground: str) -> float:
 def test_the_cover_is_axe_clean_and_in_the_theme_at_both_screen_sizes(browser: Any, shots: Path, shade: Shade) -> None:
     with cover_alone(shade) as server:
         url = f"http://127.0.0.1:{server.get_port()}"
-        for width, height in ((1280, 720), (1920, 1080)):
-            page = browser.new_page(viewport={"width": width, "height": height})
-            try:
-                page.goto(url, wait_until="commit")
-                page.wait_for_function(
-                    "() => window.rigidrelCover && document.getElementById('rigidrel-cover-text')"
-                    ".textContent === 'Loading the scene…'"
-                )
+        page = browser.new_page(viewport={"width": 1280, "height": 720})
+        try:
+            page.goto(url, wait_until="commit")
+            page.wait_for_function(
+                "() => window.rigidrelCover && document.getElementById('rigidrel-cover-text')"
+                ".textContent === 'Loading the scene…'"
+            )
+            for width, height in ((1280, 720), (1920, 1080)):  # one page, at each screen size
+                page.set_viewport_size({"width": width, "height": height})
+                page.wait_for_function(f"() => window.innerWidth === {width} && window.innerHeight === {height}")
                 assert page.evaluate(COVER_UP)
                 assert serious_violations(page) == []
                 png = shots / f"cover-{shade}-{width}x{height}.png"
                 page.screenshot(path=str(png))
                 assert ground_share(png, GROUND[shade]) > 0.95  # a calm page in the theme's ground
-            finally:
-                page.close()
+        finally:
+            page.close()
         server.stop()  # now the cover says that the server cannot be reached
         page = browser.new_page(viewport=VIEWPORT)
         try:
