@@ -36,7 +36,7 @@ from ..view.describe import describe
 from ..view.layout import CAPTION_SHARE, NORMAL, caption_reserve
 from ..view.scene_view import CLOCK_RULE
 from ..view.state import settings_for
-from ..view.vocabulary import Shade
+from ..view.vocabulary import Shade, names_html
 from .diagram_html import diagram_html
 from .recording import record_canvas_html
 
@@ -173,11 +173,13 @@ def _page(
 
 def _in_words(step: Step) -> str:
     """The step's picture in words (what the live app's screen reader hears, key D), at the time it
-    opens on (its start, else the origin event's t = 0 when its window holds it)."""
+    opens on (its start, else the origin event's t = 0 when its window holds it); its event names
+    written as the canvas and the caption write them (T<sub>1</sub>, T′<sub>1</sub>)."""
     window = step.window or step.resolved.scene.time_window(frame=step.resolved.frame)
     start = step.start if step.start is not None else min(max(0.0, window[0]), window[1])
     lines = "".join(
-        f"<p>{html.escape(line)}</p>" for line in describe(step.resolved, start, one_lane=False).full.splitlines()
+        f"<p>{names_html(html.escape(line, quote=False))}</p>"
+        for line in describe(step.resolved, start, one_lane=False).full.splitlines()
     )
     return f"<details class='words'><summary>The picture in words</summary>{lines}</details>"
 
