@@ -162,7 +162,7 @@ def _page(
     title: str, body: str, next_href: str | None, prev_href: str | None, shade: Shade = "light", script: str = ""
 ) -> str:
     script = f"var NEXT = {json.dumps(next_href)}, PREV = {json.dumps(prev_href)};\n{_KEYS}{script}"
-    style = _STYLE + _STEP_STYLE if shade == "light" else _STYLE + _STEP_STYLE + _DARK_STYLE
+    style = _STYLE + _STEP_STYLE + (_DARK_STYLE if shade == "dark" else "")
     return (
         "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>"
         "<meta name='viewport' content='width=device-width, initial-scale=1'>"

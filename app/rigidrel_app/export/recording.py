@@ -28,6 +28,7 @@ import rigidrel_core as rr
 
 from ..backends._viser import panel_a11y_js
 from ..backends.viser import DARK_CANVAS_CSS, LaneRenderer, PageRenderer
+from ..view.camera import page_clip
 from ..view.layout import NORMAL
 from ..view.page import frame_pictures, lay_out, room
 from ..view.scene_view import LANE_Z, PLOT_HZ, Drawn, camera_pose, lane_states
@@ -77,8 +78,7 @@ def record_canvas_html(
         renderer.update(*pictures[0])
         pose = renderer.pose(page.layout)
         camera = server.initial_camera
-        distance = abs(pose.position[1])
-        camera.near, camera.far = 0.1 * distance, 3.0 * distance  # as the live app's (the page's layers)
+        camera.near, camera.far = page_clip(pose)
         camera.position, camera.look_at, camera.up, camera.fov = pose.position, pose.look_at, pose.up, pose.fov
         serializer = server.get_scene_serializer()
         for lanes, moving in pictures:

@@ -128,12 +128,11 @@ class Painter:
         pose = self.renderer.pose(self.layout)
         if not force and self._camera_at(pose):
             return
-        distance = abs(pose.position[1])
-        camera.near, camera.far = 0.1 * distance, 3.0 * distance  # depth resolution for the page's layers
+        camera.near, camera.far = cam.page_clip(pose)
         camera.up_direction, camera.fov = pose.up, pose.fov
         # viser skips an assignment equal to the camera state it last heard of, and that lags the
         # browser while the user orbits: step aside first, so the exact pose is always sent
-        aside = np.array([0.0, 1e-3 * distance, 0.0])
+        aside = np.array([0.0, 1e-3 * abs(pose.position[1]), 0.0])
         camera.position, camera.look_at = np.asarray(pose.position) + aside, np.asarray(pose.look_at) + aside
         camera.position, camera.look_at = pose.position, pose.look_at
 

@@ -20,17 +20,16 @@ from __future__ import annotations
 import hashlib
 import threading
 from collections import OrderedDict
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 import numpy.typing as npt
 
 from ..backends._viser import RecordingScene, SceneFold
 from ..backends.viser import SHARED_ROOT, PageRenderer, shared_root
-from ..view.canvas import ChartFrame, PagePicture
-from ..view.layout import LEGEND_ROWS, CanvasLayout, Theme
-from ..view.page import frame_pictures, lay_out, room
-from ..view.scene_view import Drawn
+from ..view.canvas import PagePicture
+from ..view.layout import LEGEND_ROWS, Theme
+from ..view.page import Page, frame_pictures, lay_out, room
 from ..view.state import Resolved, Settings
 from .timeline import Mirror, as_u8, encode_payload
 
@@ -53,20 +52,12 @@ class PaintingKey:
 
 
 @dataclass(frozen=True)
-class Painting:
-    """A state laid out and drawn for one canvas (module docstring). ``legend_rows`` and
-    ``title_lines`` are what the layout settled on (the next painting's first guess; the lines
-    as :func:`~rigidrel_app.view.layout.canvas_layout` takes them: 1 if the titles may go on one
-    line)."""
+class Painting(Page):
+    """A state laid out and drawn for one canvas (a :class:`~rigidrel_app.view.page.Page`, module
+    docstring), with what it was made for and the runtime payloads made of it."""
 
     key: PaintingKey
     resolved: Resolved
-    drawn: Drawn
-    layout: CanvasLayout
-    legend_rows: int
-    title_lines: int
-    chart_frames: tuple[ChartFrame | None, ...]
-    still: PagePicture
     _shared: _Shared = field(default_factory=lambda: _Shared(), repr=False, compare=False)
 
     @property
@@ -142,9 +133,7 @@ def paint(resolved: Resolved, key: PaintingKey, guess: tuple[int, int] = (LEGEND
     ``guess``: the legend rows and title lines to try first (a tab's last painting's: a slider's
     answer then draws once); the result does not depend on it."""
     page = lay_out(resolved, key.settings, key.width, key.height, key.theme, key.zoomed, guess)
-    return Painting(
-        key, resolved, page.drawn, page.layout, page.legend_rows, page.title_lines, page.chart_frames, page.still
-    )
+    return Painting(**{f.name: getattr(page, f.name) for f in fields(Page)}, key=key, resolved=resolved)
 
 
 class PaintingCache:

@@ -58,6 +58,13 @@ def project(points: FloatArray, pose: CameraPose, width: int, height: int) -> Fl
     return np.stack([(ndc_x + 1.0) * 0.5 * width, (1.0 - ndc_y) * 0.5 * height], axis=-1)
 
 
+def page_clip(pose: CameraPose) -> tuple[float, float]:
+    """The near and far planes for a camera on the page (:func:`fit_page`): a tenth and three
+    times its distance from the page, which keeps depth resolution for the page's layers."""
+    distance = abs(pose.position[1])
+    return 0.1 * distance, 3.0 * distance
+
+
 def fit_page(width: float, height: float, fov: float = FOV) -> CameraPose:
     """A camera on -y looking at the middle of a ``width`` x ``height`` page (page px, z up, the
     page in the plane y = 0), as far as makes one page px one canvas CSS px."""

@@ -699,15 +699,14 @@ def spread_dials(x: FloatArray, row: FloatArray, radius: float) -> FloatArray:
         return np.asarray(float(np.mean(out[members])) + offsets, dtype=np.float64)
 
     for z in np.unique(row):
+        idx = np.flatnonzero(row == z)
         groups: list[list[int]] = []
-        for i in np.flatnonzero(row == z)[np.argsort(out[row == z], kind="stable")]:
-            groups.append([int(i)])
+        for i in idx[np.argsort(out[idx], kind="stable")].tolist():
+            groups.append([i])
             while len(groups) > 1 and laid(groups[-1])[0] - laid(groups[-2])[-1] < gap - 1e-9:
-                last = groups.pop()
-                groups[-1].extend(last)
-        new = {i: float(p) for g in groups for i, p in zip(g, laid(g), strict=True)}
-        for i, p in new.items():
-            out[i] = p
+                groups[-2].extend(groups.pop())
+        for g in groups:  # each group's places from its own members only: any order
+            out[g] = laid(g)
     return out
 
 
@@ -753,14 +752,13 @@ def edge_marks(
         text = f"← {obj.name} {digits}" if side < 0 else f"{obj.name} {digits} →"
         x = track.x0 if side < 0 else track.x1
         out.append(EdgeMark(obj.name, side, distance, x, place.rod_z, style.color, text, place.dial_z[0], x))
-    placed: list[EdgeMark] = []
+    text_x: dict[str, float] = {}
     for side in (-1, 1):
         at = track.x0 if side < 0 else track.x1
         for mark in sorted((m for m in out if m.side == side), key=lambda m: abs(m.distance)):
-            placed.append(replace(mark, text_x=at))
+            text_x[mark.name] = at
             at -= side * (text_width(mark.text, place.text_px) + EDGE_TEXT_GAP_EM * place.text_px)
-    order = [m.name for m in out]
-    return tuple(sorted(placed, key=lambda m: order.index(m.name)))  # the scene's order, as made
+    return tuple(replace(m, text_x=text_x[m.name]) for m in out)
 
 
 def edge_arrow(mark: EdgeMark, place: LaneLayout) -> Segments:

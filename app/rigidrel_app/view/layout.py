@@ -445,6 +445,7 @@ def _canvas_layout(
     width: float, height: float, theme: Theme, legend_rows: int, title_lines: int, panels: Panels
 ) -> CanvasLayout:
     w, h = max(width, 320.0), max(height, 240.0)
+    portrait = is_portrait(w, h)
     lane_h = lane_height(theme, title_lines)
     lanes: list[LaneLayout] = []
     top = h - MARGIN
@@ -473,11 +474,10 @@ def _canvas_layout(
                 tick_px=0.4 * theme.text_px,
                 title_lines=title_lines,
                 text_px=theme.text_px,
-                clocks_titled=not is_portrait(w, h),
+                clocks_titled=not portrait,
             )
         )
         top = band.z0 - 4.0
-    portrait = is_portrait(w, h)
     foot = MARGIN + (PHONE_BAR_PX if portrait else 0.0)
     legend_h = legend_rows * LEGEND_ROW_EM * theme.text_px
     legend = Rect(MARGIN, foot, w - MARGIN, foot + legend_h)
