@@ -31,6 +31,7 @@ import numpy as np
 
 import rigidrel_core as rr
 from benchmarks import load
+from rigidrel_app.live.painting import PaintingCache
 from rigidrel_app.live.server import ANIMATION_HZ, App
 from rigidrel_app.view.state import CUSTOM_FRAME, Settings, resolve
 from tests.viser_client import LightClient, RuntimeClient, light_tab, wait_until
@@ -80,10 +81,14 @@ def bench_rebuild() -> dict[str, float]:
 #: The steps of a slider's redraw timed by :func:`bench_phases`: (label, module, attribute). Each is
 #: a function the session calls (by its own module's name for it, or as a method).
 PHASES = (
-    ("drawing", "rigidrel_app.live.painting", "build_drawing"),
-    ("  its label placement", "rigidrel_app.view.diagrams", "place_labels"),
-    ("still picture", "rigidrel_app.live.painting", "still_picture"),
+    ("page laid out", "rigidrel_app.live.painting", "lay_out"),
+    ("  its drawing", "rigidrel_app.view.page", "build_drawing"),
+    ("    its label placement", "rigidrel_app.view.diagrams", "place_labels"),
+    ("  its still picture", "rigidrel_app.view.page", "still_picture"),
+    ("    its label placement ", "rigidrel_app.view.canvas", "place_labels"),
+    ("lanes drawn (page and instant)", "rigidrel_app.view.scene_view", "Drawn.lane_pictures"),
     ("static layer sent", "rigidrel_app.backends.viser", "PageRenderer.set_static"),
+    ("labels sent (static and moving)", "rigidrel_app.backends.viser", "_Texts.show"),
     ("instant drawn", "rigidrel_app.live.session", "Session.draw_now"),
     ("  its lanes and moving parts sent", "rigidrel_app.backends.viser", "PageRenderer.update"),
     ("  its frame to the runtime", "rigidrel_app.live.timeline", "Mirror.frame"),
@@ -128,6 +133,7 @@ def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
                 for new in sweep:
                     session.asks.change(new)
                 session.asks.change(Settings(kind))
+                session.painter.paintings = PaintingCache()  # every value drawn again, as a new one is
                 spent.clear()
                 times = []
                 for new in sweep:
@@ -168,7 +174,7 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15, runtime: bool = False)
     """A slider moved by a client of a paused tab: message in -> last frame of the answer out, on the
     server's socket. Flushed (what the session does) and not flushed (viser's send window) alternate,
     value by value, over ``per_scene`` values of each linear slider of every scene. Also split: the
-    callback's redraw (``Session.change``), and from its end to the last frame out. ``runtime``: the
+    callback's redraw (``Session.ask``), and from its end to the last frame out. ``runtime``: the
     tab has the playback runtime (as a browser's has: the moving parts go to it as one still frame),
     else the server draws them into the tab's scene."""
     times: dict[str, list[float]] = {"flushed": [], "window": []}
@@ -185,12 +191,12 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15, runtime: bool = False)
             client.send_raw({"type": "GuiUpdateMessage", "uuid": client.gui_uuid["Speed"], "updates": {"value": 1.5}})
         )
         wait_until(lambda: session.messages_handled > handled)
-        flush, change = session.client.flush, session.asks.change
+        flush, ask = session.client.flush, session.ask
         changed: list[tuple[float, float]] = []
 
-        def timed_change(*args: Any, **kwargs: Any) -> None:
+        def timed_ask(*args: Any, **kwargs: Any) -> None:
             t0 = time.perf_counter()
-            change(*args, **kwargs)
+            ask(*args, **kwargs)
             changed.append((t0, time.perf_counter()))
 
         previous = ""
@@ -204,10 +210,10 @@ def bench_answer(per_scene: int = 6, quiet: float = 0.15, runtime: bool = False)
             time.sleep(quiet)
             n_in, handled = len(clock.received), session.messages_handled
             message = {"type": "GuiUpdateMessage", "uuid": control._impl.uuid, "updates": {"value": v.value}}
-            session.change = timed_change  # type: ignore[method-assign]
+            session.ask = timed_ask  # type: ignore[method-assign]
             loop.run(client.send_raw(message))
             wait_until(lambda h=handled: session.messages_handled > h, interval=0.005)
-            session.change = change  # type: ignore[method-assign]
+            session.ask = ask  # type: ignore[method-assign]
             assert session.state.settings == v.settings, (session.state.settings, v.settings)
             t_in = clock.received[n_in]
 

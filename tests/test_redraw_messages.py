@@ -13,6 +13,7 @@ import pytest
 from rigidrel_app.backends.viser import _Texts  # pyright: ignore[reportPrivateUsage]
 from rigidrel_app.live.keys import Action
 from rigidrel_app.live.session import Session
+from rigidrel_app.view.canvas import PageText
 from tests.viser_client import Recorder, recorded_tab, wait_until
 
 
@@ -38,6 +39,8 @@ def labels_as_sent(messages: list[dict[str, Any]], prefix: str) -> dict[str, dic
             nodes[name]["position"] = tuple(m["position"])
         elif kind == "SetSceneNodeVisibilityMessage":
             nodes[name]["visible"] = m["visible"]
+        elif kind == "RemoveSceneNodeMessage":
+            del nodes[name]
     return nodes
 
 
@@ -84,6 +87,50 @@ def test_a_label_changes_in_one_message_and_the_browser_and_handle_agree(tab: tu
     session.client.flush()
     wait_until(lambda: labels_as_sent(client.messages, "/test/text/")["/test/text/0"]["text"] == "T_B")
     assert [m["updates"] for m in client.messages[n:] if m.get("name") == "/test/text/0"] == [{"text": "T_B"}]
+
+
+def page_texts(*labels: tuple[str, float]) -> list[PageText]:
+    return [PageText(x, 0.0, text, 15.0, "center-left") for text, x in labels]
+
+
+@pytest.mark.slow  # a served tab
+def test_a_new_still_picture_moves_its_words_or_makes_them_anew_never_both_changed_in_place(
+    tab: tuple[Session, Recorder],
+) -> None:
+    """A still picture's labels: a word that stays moves to its new place (one position message), a
+    place that stays takes its new word, and only a new word at a new place is a new node (viser's
+    client moves a label at once and changes its words later: never the old words at a new place)."""
+    session, client = tab
+    texts = _Texts(session.client.scene, "/test/still", renew=True)
+
+    def shown(*labels: tuple[str, float]) -> tuple[list[str], list[str]]:
+        """Show ``labels`` (text, x); the texts of the label nodes made, and the other messages' kinds."""
+        n = len(client.messages)
+        with session.client.atomic():
+            texts.show(page_texts(*labels))
+        session.client.flush()
+        wanted = sorted((text, x) for text, x in labels)
+
+        def arrived() -> bool:
+            nodes = labels_as_sent(client.messages, "/test/still/").values()
+            return sorted((v["text"], v["position"][0]) for v in nodes if v["visible"]) == wanted
+
+        wait_until(arrived)
+        new = [m for m in client.messages[n:] if str(m.get("name", "")).startswith("/test/still/")]
+        made = {m["name"]: m["props"]["text"] for m in new if m["type"] == "LabelMessage"}
+        return sorted(made.values()), sorted(m["type"] for m in new if m["name"] not in made)
+
+    shown(("γ = 1.25", 10.0), ("T₁", 20.0), ("x′", 30.0), ("0.5", 40.0))
+    # T₁ and 0.5 move, γ's value changes in place, E is a new node; nothing removed
+    made, changed = shown(("T₁", 25.0), ("γ = 1.67", 10.0), ("x′", 30.0), ("E", 50.0), ("0.5", 45.0))
+    assert made == ["E"] and changed == ["SceneNodeUpdateMessage", "SetPositionMessage", "SetPositionMessage"]
+    # a new word at a new place, in the only label left: made anew (the old one removed), not moved
+    made, changed = shown(("T₁", 25.0), ("γ = 1.67", 10.0), ("x′", 30.0), ("E", 50.0), ("c", 60.0))
+    assert made == ["c"] and changed == ["RemoveSceneNodeMessage"]
+    # a label hidden, then shown again with other words elsewhere: a new node too
+    assert shown(("T₁", 25.0), ("γ = 1.67", 10.0), ("x′", 30.0), ("E", 50.0)) == ([], ["SetSceneNodeVisibilityMessage"])
+    made, changed = shown(("T₁", 25.0), ("γ = 1.67", 10.0), ("x′", 30.0), ("E", 50.0), ("d", 70.0))
+    assert made == ["d"] and changed == ["RemoveSceneNodeMessage"]
 
 
 CAMERA = {

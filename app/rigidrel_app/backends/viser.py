@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import functools
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Literal
 
@@ -131,7 +131,7 @@ class _LabelPool:
         self._scene = scene
         self._prefix = prefix
         self._handles: list[viser.LabelHandle] = []
-        self._shown: list[tuple[str, tuple[float, float, float], float, str] | None] = []
+        self._shown: list[_TextState | None] = []
 
     def show(self, placed: Sequence[tuple[Label, float]]) -> None:
         """Show ``(label, lane z)`` pairs; assign only what changed (each assignment is a message)."""
@@ -314,6 +314,13 @@ def label_scale(px: float) -> float:
     return px / LABEL_EM_PX
 
 
+#: A label as :class:`_Texts` shows it: (text, position, font_screen_scale, anchor).
+_TextState = tuple[str, tuple[float, float, float], float, str]
+#: What a new label is matched on with one shown (:meth:`_Texts._slots_for`), in turn: all of it,
+#: its text, its place.
+_TEXT_MATCHES: tuple[Callable[[_TextState], object], ...] = (lambda s: s, lambda s: s[0], lambda s: s[1])
+
+
 class _Texts:
     """Label nodes under one name prefix, grown when needed and never re-added (changing a label
     costs ~60 us, creating one ~500 us); only what changed is assigned; unused ones are hidden."""
@@ -331,20 +338,49 @@ class _Texts:
         self._renew = renew
         self._made = 0
         self._handles: list[viser.LabelHandle] = []
-        self._shown: list[tuple[str, tuple[float, float, float], float, str] | None] = []
+        self._shown: list[_TextState | None] = []
+        self._held: list[_TextState] = []
+        """What each label node holds, shown or hidden."""
+        self._order: list[int] = []
+        """The labels of the last :meth:`show`, in the order of its texts."""
 
     def show(self, texts: Sequence[PageText], y: float = _TEXT_Y) -> None:
-        texts = [t for t in texts if t.text.strip()]  # a blank label would stop viser drawing every label
-        for k, t in enumerate(texts):
+        states: list[_TextState] = []
+        for t in texts:
+            if not t.text.strip():  # a blank label would stop viser drawing every label
+                continue
             x = t.x
             if t.joined:  # a part of a label that touches the next: its ink at x, as in every backend
                 x += LABEL_HALF_PAD_EM * t.px * (1.0 if t.anchor.endswith("-right") else -1.0)
-            state = (t.text, (x, y, t.z), label_scale(t.px), t.anchor)
+            states.append((t.text, (x, y, t.z), label_scale(t.px), t.anchor))
+        slots = self._slots_for(states) if self._renew else list(range(len(states)))
+        for k, state in zip(slots, states):
             self.set(k, state)
-        for k in range(len(texts), len(self._handles)):
+        self._order = slots
+        for k in sorted(set(range(len(self._handles))) - set(slots)):
             self.hide(k)
 
-    def set(self, k: int, state: tuple[str, tuple[float, float, float], float, str]) -> None:
+    def _slots_for(self, states: Sequence[_TextState]) -> list[int]:
+        """The label each of ``states`` goes to, so that as few as possible are made anew: one that
+        shows it already, else one showing its text (it only moves), else one at its place (only its
+        text changes), else one hidden or left over (made anew), else a new one."""
+        free = dict(enumerate(self._shown))
+        slots: list[int | None] = [None] * len(states)
+        for key in _TEXT_MATCHES:
+            by_key: dict[object, list[int]] = {}
+            for k, shown in free.items():
+                if shown is not None:
+                    by_key.setdefault(key(shown), []).append(k)
+            for i, state in enumerate(states):
+                found = by_key.get(key(state)) if slots[i] is None else None
+                if found:
+                    slots[i] = k = found.pop(0)
+                    del free[k]
+        rest = sorted(free, key=lambda k: free[k] is not None)  # hidden ones first
+        n = len(self._handles)
+        return [k if k is not None else (rest.pop(0) if rest else (n := n + 1) - 1) for k in slots]
+
+    def set(self, k: int, state: _TextState) -> None:
         text, position, scale, anchor = state
         while k > len(self._handles):  # a ruler's slots fill out of order: the ones before wait hidden
             # (a label of only blank text stops viser 1.1.1 drawing every label: never send one)
@@ -361,11 +397,15 @@ class _Texts:
             )
             self._handles.append(h)
             self._shown.append(state)
+            self._held.append(state)
             return
         if state == self._shown[k]:
             return
-        h, old = self._handles[k], self._shown[k]
-        if self._renew and old is not None and old[0] != text and old[1] != position:
+        h, old, held = self._handles[k], self._shown[k], self._held[k]
+        self._held[k] = state
+        # a hidden label shown again with other words is a new one too: it appears where it is set
+        # at once, its words following
+        if self._renew and held[0] != text and (old is None or old[1] != position):
             h.remove()
             self._made += 1
             self._handles[k] = self._scene.add_label(
@@ -399,9 +439,12 @@ class _Texts:
             self._shown[k] = None
 
     @property
-    def shown(self) -> list[tuple[str, tuple[float, float, float], float, str]]:
-        """What each visible label shows: (text, position, font_screen_scale, anchor)."""
-        return [s for s in self._shown if s is not None]
+    def shown(self) -> list[_TextState]:
+        """What each visible label shows: (text, position, font_screen_scale, anchor); those of the
+        last :meth:`show` in the order of its texts, then any other in the order of the nodes."""
+        given = set(self._order)
+        order = [*self._order, *(k for k in range(len(self._shown)) if k not in given)]
+        return [s for k in order if (s := self._shown[k]) is not None]
 
 
 # three.js' ACES filmic tone mapping (react-three-fiber's default), which viser's lines go through
