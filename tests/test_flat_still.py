@@ -168,10 +168,10 @@ def test_the_same_canvas_at_a_lower_resolution_marks_it_slow(tab: tuple[Session,
     session, _ = tab
     with session.lock:
         w, h = session.painter.canvas_size.width, session.painter.canvas_size.height
-        session._resize(CanvasSize.measured_by_page(w + 10, h, 1.0))  # pyright: ignore[reportPrivateUsage]
-        session._resize(CanvasSize.measured_by_page(w, h, 2.0))  # pyright: ignore[reportPrivateUsage]
+        session.resize(CanvasSize.measured_by_page(w + 10, h, 1.0))
+        session.resize(CanvasSize.measured_by_page(w, h, 2.0))
         assert not session.painter.still_image.slow_canvas
-        session._resize(CanvasSize.measured_by_page(w, h, 1.5))  # pyright: ignore[reportPrivateUsage]
+        session.resize(CanvasSize.measured_by_page(w, h, 1.5))
         assert session.painter.still_image.slow_canvas
 
 

@@ -200,7 +200,7 @@ def test_a_slider_redraw_draws_and_places_once(monkeypatch: pytest.MonkeyPatch) 
         session = tab.session
         session.asks.set_presenter(True)
         with session.lock:
-            session._resize(CanvasSize.measured_by_page(1240, 560, 1.0))  # pyright: ignore[reportPrivateUsage]
+            session.resize(CanvasSize.measured_by_page(1240, 560, 1.0))
         session.asks.change(Settings("pole-barn"))
         layout = session.painter.layout
         assert layout is not None and layout.lanes[0].title_lines >= 2 and session.painter.legend_rows != LEGEND_ROWS

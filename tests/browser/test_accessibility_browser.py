@@ -224,7 +224,7 @@ def test_a_whole_lecture_with_the_keyboard_alone(browser: Any) -> None:
             was = session.state.playback.playing
             page.keyboard.press("Enter")
             wait_until(
-                lambda was=was: session.state.playback.playing != was and session.playback_settled is was, timeout=30
+                lambda was=was: session.state.playback.playing != was and session.playing.settled is was, timeout=30
             )
         # no trap: Tab goes on and comes round again to the step list
         seen = {_tab_to(page, lambda f: True)["name"] for _ in range(3)}

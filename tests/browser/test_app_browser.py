@@ -160,7 +160,7 @@ class AppPage:
         if s.state.playback.playing:  # paused first: the browser's frame where it stops sets the clock
             s.perform(Action.TOGGLE_PLAY)
             s.client.flush()
-        wait_until(lambda: s.playback_settled, timeout=30)
+        wait_until(lambda: s.playing.settled, timeout=30)
         with s.lock, s.client.atomic():
             if s.state.presenter:
                 s.asks.set_presenter(False)
@@ -590,7 +590,7 @@ def test_playback_keeps_lanes_and_diagrams_at_one_instant(tab: AppPage, shots: P
         time.sleep(0.05)
     assert len(seen) > 5  # it played
     tab.page.click("button:has-text('Pause')")
-    wait_until(lambda: tab.session.playback_settled)
+    wait_until(lambda: tab.session.playing.settled)
     now = tab.session.state.playback.now
     img = tab.canvas_after(np.zeros_like(tab.canvas()))
     tab.page.screenshot(path=str(shots / "paused.png"))
@@ -622,7 +622,7 @@ def test_a_play_without_loop_stops_exactly_at_the_end(tab: AppPage) -> None:
     # the last 5 % at 4x can play through between two polls: wait for playing, or for the end
     wait_until(lambda: s.player.playing or s.state.playback.now == end)
     wait_until(lambda: not s.state.playback.playing, timeout=30)
-    wait_until(lambda: s.playback_settled)
+    wait_until(lambda: s.playing.settled)
     with s.lock:  # the browser's last frame, the window's end, is where the clock stopped
         assert s.state.playback.now == end
     # the page shows it once viser has drawn the runtime's last frame

@@ -82,7 +82,7 @@ def test_space_plays_and_pauses_and_the_clock_readout_follows(tab: AppPage, shot
     wait_until(lambda: tab.session.state.playback.playing)
     wait_until(lambda: clock.input_value() != start)  # the time readout runs
     press(tab, " ")
-    wait_until(lambda: tab.session.playback_settled)  # paused where the browser's frame was
+    wait_until(lambda: tab.session.playing.settled)  # paused where the browser's frame was
     stopped = tab.session.state.playback.now
     # paused: the readout shows the clock the rods stopped at, and stays there
     wait_until(lambda: float(clock.input_value()) == pytest.approx(stopped, abs=1e-6))
@@ -256,7 +256,7 @@ def test_the_canvas_is_described_in_a_polite_live_region(collision: AppPage) -> 
     wait_until(lambda: tab.session.state.playback.now > clock + 0.2)
     assert region.text_content() == said
     press(tab, " ")
-    wait_until(lambda: tab.session.playback_settled)
+    wait_until(lambda: tab.session.playing.settled)
     press(tab, "d")
     wait_until(lambda: "The lab lane at t = " in region.text_content() and "Causality:" in region.text_content())
 

@@ -39,7 +39,7 @@ def test_the_browser_plays_and_the_server_sends_nothing_per_frame(tab: AppPage, 
     # ... and the server sends none of them: a few frames of its own at most (the panel's clock is the runtime's)
     assert count1 - count0 <= 2 * span, tab.received[count0:count1]
     tab.page.click("button:has-text('Pause')")
-    wait_until(lambda: s.playback_settled)
+    wait_until(lambda: s.playing.settled)
     timeline = s.player.timeline
     assert timeline is not None
     frame = timeline.frame_of(s.state.playback.now)

@@ -17,12 +17,15 @@ infers the size from the camera's pixels (:meth:`~rigidrel_app.view.layout.Canva
 from __future__ import annotations
 
 import html
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import viser
 
 from ..backends._viser import handle_uuid
+from ..view.layout import CanvasSize
 from .runtime import page_asset
+from .tab import Tab
 
 #: ``(width * SIZE_BASE + height) * RATIO_BASE + ratio``: one number carries the two sides (each
 #: below ``SIZE_BASE`` px) and the pixel ratio in thousandths (below ``RATIO_BASE``), under 2**53.
@@ -84,3 +87,35 @@ def add_canvas_report(gui: viser.GuiApi) -> viser.GuiNumberHandle[float]:
         gui.add_html(script(handle_uuid(box)))
     panel.float(x=-1, y=-1, width=1, height=1)
     return box
+
+
+def follow_canvas_size(tab: Tab, report: viser.GuiNumberHandle[float]) -> Callable[[CanvasSize], None]:
+    """Lay ``tab``'s page out again whenever its canvas changes size (the docked panel, presenter
+    mode, the window): as the page measures it in ``report`` (:func:`add_canvas_report`), or as
+    the camera reports it until the page has spoken. The same size at another resolution (a step
+    of the client's adaptive resolution) is not a new page. Returns what a new size does."""
+    client = tab.client
+
+    def resized(size: CanvasSize) -> None:
+        drawn = tab.painter.drawn
+        if tab.painter.resized(size) and drawn is not None:
+            with client.atomic():
+                tab.apply(drawn.resolved, refit=True)
+
+    @client.camera.on_update
+    def _(camera: viser.CameraHandle) -> None:
+        with tab.lock:
+            if not tab.closed and tab.painter.drawn is not None:
+                resized(tab.painter.canvas_size.reported(camera.image_width, camera.image_height))
+
+    @report.on_update
+    def _(event: viser.GuiEvent) -> None:
+        size = decode(report.value)
+        if event.client is None or size is None:  # not a size any page of ours sends: ignored
+            return
+        with tab.lock:
+            if not tab.closed:
+                resized(CanvasSize.measured_by_page(size.width, size.height, size.resolution))
+        client.flush()
+
+    return resized

@@ -1,5 +1,5 @@
-"""A tab's clock while its browser plays: the runtime's reports, the timeline it asks for, the
-animation loop's tick and the still picture of a slow canvas.
+"""A tab's clock while its browser plays: the runtime started on the page, its reports, the
+timeline it asks for, the animation loop's tick and the still picture of a slow canvas.
 
 The runtime (:mod:`.runtime`) plays a state's timeline in the browser and reports back (ready,
 paused, stopped at the end); the server's clock follows it and draws nothing. A tab whose runtime
@@ -11,8 +11,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
+from ..backends._viser import handle_uuid, run_javascript, scene_owner
 from .cover import say_page_drawn
-from .runtime import Report
+from .gestures import Gestures
+from .runtime import Report, RuntimeConfig, add_playback_report, clock_controls, parse_report, runtime_script
 from .tab import Tab
 from .timeline import Timeline, TimelineKey
 
@@ -27,6 +29,31 @@ class Playing:
     def settled(self) -> bool:
         """Paused with the picture and the clock agreeing (no pause on its way back from the browser)."""
         return not self.tab.state.playback.playing and not self.tab.player.pausing
+
+    def connect(self, gestures: Gestures) -> None:
+        """Start the browser's runtime on the tab's page, with the hidden control it reports
+        through: on its clock (here) and on the pointer over the canvas (``gestures``)."""
+        tab = self.tab
+        report = add_playback_report(tab.client.gui)
+        report.on_update(lambda _: self._heard(report.value, gestures))
+        clock = clock_controls(tab.controls.time.handles)
+        config = RuntimeConfig(scene_owner(tab.client), handle_uuid(report), clock)
+        run_javascript(tab.client, runtime_script(config))
+
+    def _heard(self, text: str, gestures: Gestures) -> None:
+        """A report of the runtime; anything else a client sends there is ignored."""
+        report = parse_report(text)
+        if report is None:
+            return
+        if report.event != "pointer":
+            self.reported(report)
+            return
+        tab = self.tab
+        with tab.lock:
+            if not tab.closed:
+                with tab.client.atomic():
+                    gestures.reported(report)
+        tab.client.flush()
 
     def reported(self, report: Report) -> None:
         """A report of the tab's runtime on its clock (ready, paused, ended), answered at once."""

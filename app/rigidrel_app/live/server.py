@@ -33,6 +33,7 @@ from ..view.vocabulary import Shade
 from .controls import configure_panel
 from .cover import cover_page
 from .greeting import greet
+from .opening import Opening
 from .painting import PaintingCache
 from .playback import FRAME_RATE
 from .session import Session
@@ -278,8 +279,7 @@ class App:
             with self._lock:
                 first = self.leader_step if self.follow else 0
             start = self.start or Scenario(Settings())
-            session = Session(
-                client,
+            opening = Opening(
                 start.settings,
                 self.lesson,
                 self.follow,
@@ -291,6 +291,7 @@ class App:
                 self.paintings,
                 self.still_image,
             )
+            session = Session(client, opening)
         finally:
             with self._lock:
                 gone = client.client_id in self._departed
@@ -372,11 +373,11 @@ class App:
             sessions = list(self.sessions.items())
         moving = [s for client_id, s in sessions if leader is not None and client_id != leader and s.state.step != step]
         for s in moving:  # the new step's picture first, to every tab (made once per canvas size) ...
-            s.preview_step(step)
+            s.steps.preview(step)
         for client_id, s in sessions:  # ... then its controls, locks and playback
             if s in moving:
                 s.go_to_step(step, report=False)
-            s.show_leader(None if leader is None else client_id == leader)
+            s.steps.show_leader(None if leader is None else client_id == leader)
             s.client.flush()
 
     def _animate(self) -> None:
@@ -396,7 +397,7 @@ class App:
                 sessions = list(self.sessions.values())
             for s in sessions:
                 try:
-                    s.tick(dt)
+                    s.playing.tick(dt)
                 except Exception as exc:  # a broken tab must not stop the others
                     self.errors += 1
                     print(f"rigidrel: session {s.client.client_id}: {exc!r}", file=sys.stderr)

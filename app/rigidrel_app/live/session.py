@@ -17,67 +17,44 @@ from collections.abc import Callable
 
 import viser
 
-from ..backends._viser import handle_uuid, run_javascript, scene_owner
-from ..lessons import Lesson
-from ..view.layout import CanvasSize
 from ..view.scene_view import PLOT_HZ, Drawn
 from ..view.state import Resolved, Settings
 from ..view.state import frame_choice as frame_choice_of
 from ..view.state import resolve as resolve_settings
-from ..view.vocabulary import Shade
 from .browser_player import BrowserPlayer
-from .canvas_report import add_canvas_report, decode
+from .canvas_report import add_canvas_report, follow_canvas_size
 from .controls import build_controls, notice_place
 from .cover import say_page_drawn
 from .gestures import Gestures
 from .key_actions import key_actions
 from .keys import Action
 from .lesson_part import GivenLesson, LessonPart, NoLesson
-from .lesson_steps import LessonHooks, LessonSteps
+from .lesson_steps import LessonSteps
+from .opening import Opening
 from .page_words import PageWords
 from .painter import Painter
 from .painting import PaintingCache
 from .playback import Playback
 from .playing import Playing
 from .requests import Requests
-from .runtime import RuntimeConfig, add_playback_report, clock_controls, parse_report, runtime_script
 from .tab_state import TabState
-from .timeline import TimelineCache
 
 
 class Session:
-    """One client's tab; :meth:`tick` is called by the server's animation loop.
+    """One client's tab, opened as ``opening`` says (:class:`~.opening.Opening`)."""
 
-    ``lesson``: the tab gives it, opening on ``first_step`` (from 0); ``follow``: ``--follow``
-    (the Lesson folder says who leads); ``hooks``: where step changes and key L go; ``shade``: the
-    theme the tab opens in; ``start_time``: the time it opens at (a scenario line's ``--t``; not
-    with a lesson); ``timelines``: where the browser's playback comes from (None: the server draws
-    every frame); ``paintings``: the server's, shared by its tabs (None: the tab's own);
-    ``still_image``: the still picture as one image while a slow canvas plays."""
-
-    def __init__(
-        self,
-        client: viser.ClientHandle,
-        settings: Settings | None = None,
-        lesson: Lesson | None = None,
-        follow: bool = False,
-        hooks: LessonHooks | None = None,
-        first_step: int = 0,
-        shade: Shade = "light",
-        start_time: float | None = None,
-        timelines: TimelineCache | None = None,
-        paintings: PaintingCache | None = None,
-        still_image: bool = True,
-    ) -> None:
+    def __init__(self, client: viser.ClientHandle, opening: Opening | None = None) -> None:
+        opening = opening or Opening()
         self.client = client
         self.lock = threading.RLock()
         self.closed = False
         self.messages_handled = 0
         """Values a client sent that the session checked and acted on or refused (in any order)."""
         self.lesson: LessonPart = NoLesson()
-        if lesson is not None:
+        if opening.lesson is not None:
+            hooks = opening.hooks
             self.lesson = GivenLesson(
-                lesson,
+                opening.lesson,
                 lambda index: None if hooks is None else hooks.step_changed(self, index),
                 lambda: None if hooks is None else hooks.lead(self),
                 lambda token: hooks is not None and hooks.lecturer(self, token),
@@ -90,80 +67,33 @@ class Session:
         self._keys = key_actions(self, self.asks, self.steps)
         self.gestures = Gestures(self, self.asks)
         self._last_clock = 0.0
-        asked, notice = settings or Settings(), ""
-        resolved = resolve_settings(asked)
-        if isinstance(resolved, str):  # a start state given from outside that makes no scene
-            notice, asked = resolved, Settings()
-            resolved = resolve_settings(asked)
-            assert isinstance(resolved, Resolved)
-        self.state = TabState.opening(asked, shade)
+        self.state, resolved, notice = opening.state()
         with client.atomic():
-            # the panel's look for ``shade`` came with the server's own (the app's theme for new tabs)
-            self.controls = build_controls(client.gui, self.state.settings, lesson, follow, self.words.key, shade)
+            # the panel's look for the shade came with the server's own (the app's theme for new tabs)
+            self.controls = build_controls(
+                client.gui, self.state.settings, opening.lesson, opening.follow, self.words.key, opening.shade
+            )
             self.canvas_report = add_canvas_report(client.gui)
-            self.player = BrowserPlayer(client, timelines)
-            self.painter = Painter(client, paintings or PaintingCache(capacity=2), self.player, still_image)
-            self._wire(timelines is not None)
-            index = self.lesson.step(first_step)
+            self.player = BrowserPlayer(client, opening.timelines)
+            self.painter = Painter(
+                client, opening.paintings or PaintingCache(capacity=2), self.player, opening.still_image
+            )
+            self.controls.wire(self.asks)
+            self.resize = follow_canvas_size(self, self.canvas_report)
+            """Lay the page out for the canvas at a new size (CSS px)."""
+            if opening.timelines is not None:  # the browser plays: its runtime, reporting to these
+                self.playing.connect(self.gestures)
+            index = self.lesson.step(opening.first_step)
             if index is not None:
                 self.steps.arrive(index)
             else:
                 self.apply(resolved, refit=True)
                 self.show(self.state.refused(notice))
-                if start_time is not None and not notice:
-                    self.set_playback(self.state.playback.seek(start_time))
+                if opening.start_time is not None and not notice:
+                    self.set_playback(self.state.playback.seek(opening.start_time))
                     self.draw_now(force_plots=True)
-            if timelines is None:  # the page is whole (else once its runtime draws, :class:`Playing`)
+            if opening.timelines is None:  # the page is whole (else once its runtime draws, :class:`Playing`)
                 say_page_drawn(client)
-
-    def _wire(self, runtime: bool) -> None:
-        self.controls.wire(self.asks)
-        client = self.client
-
-        @client.camera.on_update
-        def _(camera: viser.CameraHandle) -> None:
-            # the docked panel, presenter mode or the window change the canvas' size: lay it out again
-            with self.lock:
-                if not self.closed and self.painter.drawn is not None:
-                    # a step of the client's adaptive resolution is not a new page
-                    self._resize(self.painter.canvas_size.reported(camera.image_width, camera.image_height))
-
-        @self.canvas_report.on_update
-        def _(event: viser.GuiEvent) -> None:
-            size = decode(self.canvas_report.value)
-            if event.client is None or size is None:  # not a size any page of ours sends: ignored
-                return
-            with self.lock:
-                if not self.closed:
-                    self._resize(CanvasSize.measured_by_page(size.width, size.height, size.resolution))
-            client.flush()
-
-        if runtime:  # the browser plays: its runtime, and the hidden control it reports through
-            report = add_playback_report(client.gui)
-            report.on_update(lambda _: self._runtime_said(report.value))
-            clock = clock_controls(self.controls.time.handles)
-            run_javascript(client, runtime_script(RuntimeConfig(scene_owner(client), handle_uuid(report), clock)))
-
-    def _runtime_said(self, text: str) -> None:
-        """A report of the tab's runtime: on its clock (:class:`Playing`) or the pointer on the
-        canvas (:class:`Gestures`); anything else a client sends there is ignored."""
-        report = parse_report(text)
-        if report is None:
-            return
-        if report.event != "pointer":
-            self.playing.reported(report)
-            return
-        with self.lock:
-            if not self.closed:
-                with self.client.atomic():
-                    self.gestures.reported(report)
-        self.client.flush()
-
-    def _resize(self, size: CanvasSize) -> None:
-        drawn = self.painter.drawn
-        if self.painter.resized(size) and drawn is not None:
-            with self.client.atomic():
-                self.apply(drawn.resolved, refit=True)
 
     # ------------------------------------------------------------------ showing a state
     def show(self, state: TabState, drawn: Drawn | None = None, put_back: bool = False) -> None:
@@ -255,19 +185,5 @@ class Session:
                 self.messages_handled += 1
         self.client.flush()
 
-    # ------------------------------------------------------------------ its parts, for the server
     def go_to_step(self, index: int, report: bool = True) -> None:
         self.steps.go_to(index, report)
-
-    def preview_step(self, index: int) -> None:
-        self.steps.preview(index)
-
-    def show_leader(self, leads: bool | None) -> None:
-        self.steps.show_leader(leads)
-
-    def tick(self, dt: float) -> None:
-        self.playing.tick(dt)
-
-    @property
-    def playback_settled(self) -> bool:
-        return self.playing.settled
