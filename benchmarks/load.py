@@ -3,6 +3,7 @@
     python -m benchmarks.load --clients 30 --seconds 60             # 30 tabs, each playing its own scene
     python -m benchmarks.load --follow --clients 200 --seconds 20   # a hall following a lesson's leader
     python -m benchmarks.load --find-max --seconds 20 --fps 30      # the most clients held at 25 fps
+    python -m benchmarks.load --find-max --up-to 110 --seconds 10   # ... stopping once 110 are held
     python -m benchmarks.load --clients 30 --server-drawn           # tabs without a runtime (the server draws)
     python -m benchmarks.load --churn 10 --clients 30               # 10 rounds of 30 joining and leaving
     python -m benchmarks.load --flood --clients 20 --seconds 5      # one more sends 10,000 values a second
@@ -334,6 +335,9 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=60.0)
     parser.add_argument("--fps", type=float, default=30.0, help="the server's animation rate")
     parser.add_argument("--find-max", action="store_true", help="raise the clients until one gets < 25 fps")
+    parser.add_argument(
+        "--up-to", type=int, default=None, metavar="N", help="find-max: stop once N clients held (a lower bound)"
+    )
     parser.add_argument("--churn", type=int, metavar="ROUNDS", help="rounds of --clients that join, play and leave")
     parser.add_argument("--stay", type=int, default=5, help="churn: clients playing throughout")
     parser.add_argument("--round-seconds", type=float, default=5.0, help="churn: how long each round's clients play")
@@ -386,8 +390,13 @@ def main() -> None:
         if r["min_fps"] < TARGET_FPS or r["errors"] > 0:
             break
         best = n
+        if args.up_to is not None and n >= args.up_to:
+            break
         n += 5 if args.server_drawn else 25
-    print(f"max_clients_at_{TARGET_FPS:.0f}_fps={best} (fps={args.fps:g}, seconds={args.seconds:g})", flush=True)
+    stopped = f", stopped at --up-to {args.up_to}" if args.up_to is not None and best >= args.up_to else ""
+    print(
+        f"max_clients_at_{TARGET_FPS:.0f}_fps={best} (fps={args.fps:g}, seconds={args.seconds:g}{stopped})", flush=True
+    )
 
 
 if __name__ == "__main__":
