@@ -100,8 +100,8 @@ def measure(
                 wait_until(lambda: not session.state.presenter and _width(session) < 0.9 * width, timeout=60)
             time.sleep(1.0)
             redraws = []
-            uid = page.locator('label:text-is("V1")').get_attribute("for")
-            box = page.locator(f"[id='{uid}']")  # the control's own text box
+            # the control's own text box (viser's text box label names no id: the input after it)
+            box = page.locator('label:text-is("V1")').first.locator("xpath=following::input[1]")
             for k in range(5):
                 box.fill(f"{0.8 + 0.01 * k:.2f}")
                 page.evaluate("() => { window.__times = []; }")
