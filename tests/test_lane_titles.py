@@ -53,10 +53,27 @@ def test_every_title_fits_its_lane_at_every_instant(kind: str, canvas: str) -> N
     layout, drawn = painting.layout, painting.drawn
     t0, t1 = drawn.window
     for now in (t0 + k * (t1 - t0) / 8 for k in range(9)):
-        for picture, lane in zip(drawn.lane_pictures(now, layout), layout.lanes, strict=True):
+        pictures = drawn.lane_pictures(now, layout)
+        # the layout's titles, found without drawing the lanes, are the drawn lanes' own
+        assert drawn.lane_titles_at(now, layout) == [p.title for p in pictures]
+        for picture, lane in zip(pictures, layout.lanes, strict=True):
             text, px = lane_title_text(picture.title, lane, layout.theme.title_px)
             lines = text.split("\n")
             assert len(lines) <= max(lane.title_lines, 1), (now, text)
             assert all(text_width(line, px) <= lane.band.width for line in lines), (now, text)
             assert words(text) == words(title_shown(picture.title, lane))  # broken, not cut
             assert ("clocks τ" in picture.title) and ("clocks τ" in text) == (canvas != "phone"), text
+
+
+@pytest.mark.parametrize("kind", ["velocity-change", "rod-collision", "bell-spaceships", "pole-barn"])
+def test_a_riding_lane_s_title_found_without_drawing_it_is_the_drawn_one(kind: str) -> None:
+    settings = Settings(kind).riding(fraction=0.25)
+    resolved = resolve(settings)
+    assert isinstance(resolved, Resolved) and resolved.ride is not None
+    painting = paint(resolved, PaintingKey(settings, *CANVASES["720p"][:2], NORMAL))
+    drawn, layout = painting.drawn, painting.layout
+    t0, t1 = drawn.window
+    for now in (t0 + k * (t1 - t0) / 6 for k in range(7)):
+        titles = drawn.lane_titles_at(now, layout)
+        assert titles == [p.title for p in drawn.lane_pictures(now, layout)]
+        assert titles[1].startswith("riding: ")

@@ -153,23 +153,20 @@ def lane_state(
     dials = np.stack([cx, cz], axis=-1)
     texts: tuple[Label, ...] = ()
     if labels:  # one two-line label per lane: each label update is a message
-        readings = "    ".join(
-            f"{rod.name}: {signed(tau[i, 0])} | {signed(tau[i, 1])}" for i, rod in enumerate(scene.rods)
-        )
-        key = "   ".join(k for k in (*(p.text for p in objects), rows_key(scene)) if k)
-        head = f"{title}   {key}" if key else title
-        texts = (
-            Label(
-                title_x,
-                geo.title_z - 0.05,
-                f"{head}\nclocks τ (left | right end)   {readings}",
-                Style(INK),
-                anchor="left",
-                size=12,
-            ),
-        )
+        text = title_text(scene, title, [p.text for p in objects], tau)
+        texts = (Label(title_x, geo.title_z - 0.05, text, Style(INK), anchor="left", size=12),)
     ends = x_phys[:, [0, -1]]
     return LaneState(tuple(boxes), Segments(x0, z0, x1, z1, Style(INK, 1.5)), dials, texts, ends)
+
+
+def title_text(scene: rr.Scene, title: str, object_texts: Sequence[str], tau: FloatArray) -> str:
+    """A lane's two-line title: ``title`` (the frame and its clock), the objects' words
+    (``object_texts``, :func:`.objects.object_words`) and the rows' key; under it the readings of
+    the clocks on the rods' ends, ``tau`` (``(rods, 2)``: left and right end)."""
+    readings = "    ".join(f"{rod.name}: {signed(tau[i, 0])} | {signed(tau[i, 1])}" for i, rod in enumerate(scene.rods))
+    key = "   ".join(k for k in (*object_texts, rows_key(scene)) if k)
+    head = f"{title}   {key}" if key else title
+    return f"{head}\nclocks τ (left | right end)   {readings}"
 
 
 #: Rows of the rod band when a scene's rods form several groups (:attr:`rigidrel_core.Scene.rod_groups`):

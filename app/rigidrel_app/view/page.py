@@ -78,7 +78,7 @@ def lay_out(
     tried = layout_of(rows, 1)
     # at both ends of playback: an object's words change at its event (a door open, then closed
     # with what it did to the poles), and the lines must hold the longer
-    ends = [[p.title for p in drawn.lane_pictures(now, tried)] for now in drawn.window]
+    ends = [drawn.lane_titles_at(now, tried) for now in drawn.window]
     needed = max(title_lines_needed(titles, tried) for titles in ends)
     if not tried.lanes:  # one diagram zoomed to the whole canvas: no titles
         title_lines = 1

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
+from typing import NamedTuple
 
 import numpy as np
 
@@ -32,9 +33,11 @@ from .diagrams import (
 from .lanes import (
     FIT_SHARE,
     TICK_FRACTIONS,
+    LaneFit,
     LaneGeometry,
     LanePicture,
     LaneScale,
+    LaneScales,
     LaneState,
     lane_fit,
     lane_geometry,
@@ -44,9 +47,12 @@ from .lanes import (
     lane_static,
     pulse_segments,
     steady_width,
+    title_text,
+    zoom_words,
 )
 from .layers import Layer
 from .layout import CanvasLayout, Panels
+from .objects import object_words_at
 from .sampling import ADAPTIVE, Sampler
 from .signals import Signals, event_cone_items, key_definition, signals_in, signals_window_end, verdict_lines
 from .state import Resolved, format_value
@@ -225,6 +231,41 @@ class Drawn:
         lanes = [(_LAB, now), (r.frame, now) if instant is None else (instant.frame, instant.event[0])]
         return [r.scene.snapshot(t, frame=f, fractions=TICK_FRACTIONS)[0][:, [0, -1]] for f, t in lanes[first:]]
 
+    def lane_titles_at(self, now: float, layout: CanvasLayout) -> list[str]:
+        """The lanes' titles at ``now`` as :meth:`lane_pictures` writes them (their frame and clock,
+        zoom, objects' words and end clocks), without drawing the lanes."""
+        r = self.resolved
+        instant = self.ride_instant(now) if r.ride is not None else None
+        if not layout.lanes:
+            return []
+        shown, snaps, _, scales = self._lanes_at(now, layout, instant)
+        out: list[str] = []
+        titles = lane_titles(r, now, instant)[: len(shown)]
+        for (frame, t, _), title, (_, tau), zoom in zip(shown, titles, snaps, scales.zooms, strict=True):
+            words = zoom_words(zoom)
+            head = f"{title}   {words}" if words else title
+            out.append(title_text(r.scene, head, [object_words_at(obj, frame, t) for obj in r.scene.objects], tau))
+        return out
+
+    def _lanes_at(self, now: float, layout: CanvasLayout, instant: ComovingInstant | None) -> _LanesAt:
+        """What the lanes of ``layout`` show at ``now`` (``instant``: the ride's, riding): each lane's
+        frame, time and the point it keeps still (a riding lane: the ridden point), the rods'
+        snapshot in it, its fit and the lanes' scales."""
+        r = self.resolved
+        n = len(layout.lanes)
+        shown: list[tuple[rr.Frame, float, float | None]] = [(_LAB, now, None)]
+        if instant is None:
+            shown.append((r.frame, now, None))
+        else:
+            t_ride, x_point = instant.event
+            shown.append((instant.frame, t_ride, x_point))
+        shown = shown[:n]
+        rest = np.array([rod.motion.length for rod in r.scene.rods])
+        snaps = [r.scene.snapshot(t, frame=f, fractions=TICK_FRACTIONS) for f, t, _ in shown]
+        fits = [lane_fit(x[:, [0, -1]], rest, c) for (x, _), (_, _, c) in zip(snaps, shown, strict=True)]
+        tracks = [place.track.width for place in layout.lanes]
+        return _LanesAt(shown, snaps, fits, lane_scales(fits, tracks, self.steady_widths[:n], self.lane_scale))
+
     def legend(self, shown: tuple[bool, bool, bool] | None = None) -> list[LegendEntry]:
         """Every named item of the charts ``shown`` (default: as :func:`panels` has them, unzoomed),
         static or moving, each name once."""
@@ -247,20 +288,8 @@ class Drawn:
         n = len(layout.lanes)
         if n == 0:  # one diagram zoomed to the whole canvas
             return []
-        titles = lane_titles(r, now, instant)[:n]
-        # each lane: its frame, its time and the point it keeps still (a riding lane: the ridden point)
-        shown: list[tuple[rr.Frame, float, float | None]] = [(_LAB, now, None)]
-        if instant is None:
-            shown.append((r.frame, now, None))
-        else:
-            t_ride, x_point = instant.event
-            shown.append((instant.frame, t_ride, x_point))
-        shown = shown[:n]
-        rest = np.array([rod.motion.length for rod in r.scene.rods])
-        snaps = [r.scene.snapshot(t, frame=f, fractions=TICK_FRACTIONS) for f, t, _ in shown]
-        fits = [lane_fit(x[:, [0, -1]], rest, c) for (x, _), (_, _, c) in zip(snaps, shown, strict=True)]
-        tracks = [place.track.width for place in layout.lanes]
-        scales = lane_scales(fits, tracks, self.steady_widths[:n], self.lane_scale)
+        shown, snaps, fits, scales = self._lanes_at(now, layout, instant)
+        titles = lane_titles(r, now, instant)[: len(shown)]
         lanes = [
             lane_picture(r.scene, f, t, scale, place, title, fit, snap, zoom)
             for (f, t, _), scale, place, title, fit, snap, zoom in zip(
@@ -278,6 +307,17 @@ class Drawn:
             light = pulse_segments(sig.pulses_at(t), sig.far_arrivals, lane, place)
             out.append(replace(lane, segments=(*lane.segments, light)))
         return out
+
+
+class _LanesAt(NamedTuple):
+    """What the lanes show at one instant (:meth:`Drawn._lanes_at`)."""
+
+    shown: list[tuple[rr.Frame, float, float | None]]
+    """Each lane's frame, its time and the point it keeps still (a riding lane: the ridden point)."""
+    snaps: list[tuple[FloatArray, FloatArray]]
+    """The rods in each lane's frame at its time (:meth:`rigidrel_core.Scene.snapshot`)."""
+    fits: list[LaneFit]
+    scales: LaneScales
 
 
 def _at(now: float, values: FloatArray) -> tuple[FloatArray, FloatArray]:
