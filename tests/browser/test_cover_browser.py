@@ -293,6 +293,34 @@ def test_a_drawn_page_said_before_the_connection_is_kept_until_it_is_up(browser:
                 later.stop()
 
 
+def test_the_cover_stays_while_viser_s_own_note_is_on_the_page(browser: Any) -> None:
+    """viser's note "Software WebGL rendering detected" comes as the page connects, and the panel's
+    script closes it a frame or more later; still on the page when the page is drawn, it would show
+    through the cover as it fades out. The cover leaves once it has gone. (Here the note is a stand-in
+    of the same markup, on a page with no panel to close it.)"""
+    with cover_alone() as server:
+        page = browser.new_page(viewport=VIEWPORT)
+        try:
+            page.goto(f"http://127.0.0.1:{server.get_port()}", wait_until="commit")
+            page.wait_for_function("() => document.getElementById('rigidrel-cover').dataset.viewer === 'found'")
+            page.evaluate(
+                """() => {
+                  const note = document.createElement('div');
+                  note.className = 'mantine-Notification-root';
+                  note.id = 'stand-in';
+                  note.innerHTML = '<div class="mantine-Notification-title">Software WebGL rendering detected</div>';
+                  document.body.appendChild(note);
+                  window.rigidrelCover.ready();
+                }"""
+            )
+            page.wait_for_function("() => document.getElementById('rigidrel-cover').dataset.waits === 'note'")
+            assert page.evaluate(COVER_UP)
+            page.evaluate("() => document.getElementById('stand-in').remove()")
+            page.wait_for_function(COVER_GONE, timeout=30_000)
+        finally:
+            page.close()
+
+
 def test_reduced_motion_keeps_the_cover_still(browser: Any) -> None:
     with cover_alone() as server:
         page = browser.new_page(viewport=VIEWPORT, reduced_motion="reduce")

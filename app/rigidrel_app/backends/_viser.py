@@ -69,7 +69,8 @@ The browser, private to viser's client (inventory; the scripts in ``live/assets/
   buttons' ``--button-color`` and the theme's ``--mantine-color-gray-filled`` variables under
   ``html[data-mantine-color-scheme]``; and viser's notification "Software WebGL rendering
   detected" (``BrowserWarning.tsx``: a ``.mantine-Notification-root`` with that
-  ``.mantine-Notification-title``), closed by its close button.
+  ``.mantine-Notification-title``), closed by its close button; the live page's cover leaves only
+  once that title has gone from the page (``live/assets/cover.js``).
 - on a narrow screen, the panel as a bottom sheet (``ControlPanel/BottomPanel.tsx``): a Mantine
   ``Paper`` fixed at the bottom right, open at first, and in it the handle (a box with
   ``cursor: pointer``) whose click folds it to its bar, 3.5 em high (``live/assets/phone.js``).
