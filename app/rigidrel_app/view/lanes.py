@@ -461,6 +461,12 @@ def lane_scales(
     return LaneScales((scale,) * len(fits), (scale / steady,) * len(fits))
 
 
+def zoomed_title(title: str, zoom: float) -> str:
+    """A lane's first line with what it says of the lanes' ``zoom`` (:func:`zoom_words`), if anything."""
+    words = zoom_words(zoom)
+    return f"{title}   {words}" if words else title
+
+
 def zoom_words(zoom: float) -> str:
     """What a lane's title says of its zoom: ``"zoom ×2.4"`` while a contracted rod has the lanes zoomed
     in, or nothing at the playback's steady scale (within :data:`ZOOM_TOLERANCE`) or below it (a lane
@@ -617,8 +623,7 @@ def lane_picture(
     geo = LaneGeometry(
         unit, rod_height=place.rod_px / k, clock_radius=place.clock_px / k, wall_height=place.wall_px / k
     )
-    words = zoom_words(zoom)
-    st = lane_state(scene, frame, now, geo, f"{title}   {words}" if words else title, 0.0, True, snap)
+    st = lane_state(scene, frame, now, geo, zoomed_title(title, zoom), 0.0, True, snap)
 
     def px(x: FloatArray | float) -> FloatArray:
         return origin + k * np.asarray(x, dtype=float)

@@ -48,7 +48,7 @@ from .lanes import (
     pulse_segments,
     steady_width,
     title_text,
-    zoom_words,
+    zoomed_title,
 )
 from .layers import Layer
 from .layout import CanvasLayout, Panels
@@ -242,9 +242,8 @@ class Drawn:
         out: list[str] = []
         titles = lane_titles(r, now, instant)[: len(shown)]
         for (frame, t, _), title, (_, tau), zoom in zip(shown, titles, snaps, scales.zooms, strict=True):
-            words = zoom_words(zoom)
-            head = f"{title}   {words}" if words else title
-            out.append(title_text(r.scene, head, [object_words_at(obj, frame, t) for obj in r.scene.objects], tau))
+            words = [object_words_at(obj, frame, t) for obj in r.scene.objects]
+            out.append(title_text(r.scene, zoomed_title(title, zoom), words, tau))
         return out
 
     def _lanes_at(self, now: float, layout: CanvasLayout, instant: ComovingInstant | None) -> _LanesAt:
