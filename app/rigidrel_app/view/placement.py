@@ -378,11 +378,13 @@ def _table(anchors: list[_Anchor], area: tuple[float, float], field: _Field, fix
         # the text would seem to name another point (spots touching it only): a marker near enough
         # to matter (meeting the label's reach, as the full search takes them), not the label's own
         # (its centre more than 1 px away, taxicab), nearer the box than the label's point
-        bare = ~anchors[0].spots.needs_leader
-        if bare.any():
+        # (tested only where the spot touches its point and passed the tests above)
+        bare = np.flatnonzero(np.tile(~anchors[0].spots.needs_leader, len(anchors)) & ok)
+        if bare.size:
             reach = np.array([a.spots.reach + a.w + a.h for a in anchors])[:, None]
-            px, py = np.broadcast_to(ax, dx.shape).reshape(-1), np.broadcast_to(ay, dx.shape).reshape(-1)
-            r = np.broadcast_to(reach, dx.shape).reshape(-1)
+            px, py = np.broadcast_to(ax, dx.shape).reshape(-1)[bare], np.broadcast_to(ay, dx.shape).reshape(-1)[bare]
+            r = np.broadcast_to(reach, dx.shape).reshape(-1)[bare]
+            bb = b[bare]
             mx, my = 0.5 * (m.left + m.right), 0.5 * (m.top + m.bottom)
             other = (
                 (m.left < (px + r)[:, None])
@@ -392,14 +394,14 @@ def _table(anchors: list[_Anchor], area: tuple[float, float], field: _Field, fix
                 & (np.abs(mx - px[:, None]) + np.abs(my - py[:, None]) > 1.0)
             )
             own = np.hypot(
-                np.maximum(np.maximum(b[:, 0] - px, 0.0), px - b[:, 2]),
-                np.maximum(np.maximum(b[:, 1] - py, 0.0), py - b[:, 3]),
+                np.maximum(np.maximum(bb[:, 0] - px, 0.0), px - bb[:, 2]),
+                np.maximum(np.maximum(bb[:, 1] - py, 0.0), py - bb[:, 3]),
             )
             dist = np.hypot(
-                np.maximum(np.maximum(b[:, 0, None] - mx, 0.0), mx - b[:, 2, None]),
-                np.maximum(np.maximum(b[:, 1, None] - my, 0.0), my - b[:, 3, None]),
+                np.maximum(np.maximum(bb[:, 0, None] - mx, 0.0), mx - bb[:, 2, None]),
+                np.maximum(np.maximum(bb[:, 1, None] - my, 0.0), my - bb[:, 3, None]),
             )
-            ok &= ~(np.tile(bare, len(anchors)) & np.any(other & (dist < own[:, None]), axis=1))
+            ok[bare[np.any(other & (dist < own[:, None]), axis=1)]] = False
     counts = np.full(ok.shape, -1, np.int64)
     clear = np.flatnonzero(ok)
     counts[clear] = field.curves.crossings(_Boxes(g[clear, 0], g[clear, 1], g[clear, 2], g[clear, 3]))
