@@ -17,9 +17,12 @@ import pytest
 
 from rigidrel_app.backends._viser import RecordingScene, SceneFold
 from rigidrel_app.backends.viser import PageRenderer
+from rigidrel_app.live.browser_player import BrowserPlayer
 from rigidrel_app.live.runtime import PointerEvent, Report, RuntimeConfig, parse_report, runtime_script
 from rigidrel_app.live.timeline import (
+    OWN_FRAME_LEVEL,
     QUANTUM,
+    SHARED_LEVEL,
     Mirror,
     Timeline,
     TimelineCache,
@@ -205,6 +208,42 @@ def test_the_mirror_sends_its_nodes_once_and_every_frame_whole(fig3: tuple[Timel
     assert first["nodeset"] == second["nodeset"] == third["nodeset"]
     assert s1.keys() == s0.keys() == s2.keys()  # whole: every piece, whatever changed
     assert all(same(s1[k], s2[k]) for k in s1)
+
+
+def test_a_tab_s_own_frame_is_gzipped_fastest_and_reads_as_a_shared_one(fig3: tuple[TimelineKey, Resolved]) -> None:
+    """A slider's answer waits for its tab's own still frame (sent to that tab alone): the fastest
+    gzip, read back as the same frame; what many tabs are sent keeps the smaller one."""
+    key, r = fig3
+    layout = key.layout
+    d = build_drawing(r, areas=layout.chart_areas, label_px=layout.theme.text_px)
+    frames, picture = still_picture(d.charts, layout.charts, d.legend(), layout.legend, layout.theme)
+
+    class Player(BrowserPlayer):
+        def __init__(self) -> None:
+            super().__init__(None, None)  # type: ignore[arg-type]  # sends nothing: kept here
+            self.sent: list[np.ndarray] = []
+
+        def send(self, action: str, timeline: str = "", value: float = 0.0, payload: np.ndarray | None = None) -> None:
+            assert action == "frame" and payload is not None
+            self.sent.append(payload)
+
+    player, shared = Player(), Mirror("shared")
+    player.mirror = Mirror("tab")
+    for mirror in (player.mirror, shared):
+        renderer = PageRenderer(RecordingScene().scene, mirror.scene)
+        renderer.set_static(layout, picture, RULER_NAMES)
+        lanes = d.lane_pictures(0.1, layout, None)
+        moving = moving_picture(frames, d.moving_items(0.1, [ln.ends for ln in lanes], None), layout.theme)
+        renderer.update(lanes, moving)
+    player.own_frame(0.1)
+    (own,) = player.sent
+    blobs = [own, shared.frame(0.1, prologue=True)]
+    # gzip's header byte 8 (XFL): 4 for the fastest level, 0 for the levels between
+    assert [int(b[8]) for b in blobs] == [4, 0] and (OWN_FRAME_LEVEL, SHARED_LEVEL) == (1, 6)
+    (own_head, (own_state,)), (shared_head, (shared_state,)) = (read_payload(b) for b in blobs)
+    assert own_state.keys() == shared_state.keys() and all(same(own_state[k], shared_state[k]) for k in own_state)
+    assert own_head["times"] == shared_head["times"] == [0.1]
+    assert len(own_head["prologue"]) == len(shared_head["prologue"]) > 0
 
 
 @pytest.mark.parametrize(

@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
+from typing import Any
 
+import numpy as np
 import pytest
 
 from rigidrel_app.backends import _viser
@@ -44,3 +46,22 @@ def test_the_pinned_viser_is_taken(version: str) -> None:
 def test_another_viser_is_refused_naming_the_pin(version: str) -> None:
     with pytest.raises(RuntimeError, match=rf"viser 1\.1\.x .* viser {re.escape(version)} is installed"):
         _viser.check_version(version)
+
+
+@pytest.mark.parametrize(
+    "value",
+    ["T₁", "", True, False, 0, -3, 2.5, float("-0.0"), None, np.float32(0.25), np.int64(7), np.bool_(True), (1.0, 2)],
+)
+def test_a_piece_of_node_state_is_written_as_viser_writes_it(value: object) -> None:
+    """The playback payloads write plain values without viser's serializer: the same wire value,
+    of the same type (numpy scalars and tuples still go through it)."""
+    ours, theirs = _viser.wire_value(value, []), _viser.infra._messages._prepare_for_serialization(value, Any, [])  # pyright: ignore[reportPrivateUsage]
+    assert ours == theirs and type(ours) is type(theirs)
+
+
+def test_an_array_in_node_state_goes_to_the_buffers_as_viser_puts_it() -> None:
+    ours: list[memoryview] = []
+    theirs: list[memoryview] = []
+    a = np.arange(6, dtype=np.float32).reshape(2, 3)
+    assert _viser.wire_value(a, ours) == _viser.infra._messages._prepare_for_serialization(a, Any, theirs)  # pyright: ignore[reportPrivateUsage]
+    assert [bytes(b) for b in ours] == [bytes(b) for b in theirs] == [a.tobytes()]

@@ -357,8 +357,16 @@ def wire_dict(message: Message, buffers: list[memoryview]) -> dict[str, Any]:
     return message.as_serializable_dict(binary_buffers=buffers)
 
 
+#: Types viser's serializer passes through as they are (a plain ``str``, ``bool``, ``int``,
+#: ``float`` or ``None``: its casts give each back unchanged), so :func:`wire_value` does too.
+_PLAIN_TYPES = frozenset({str, bool, int, float, type(None)})
+
+
 def wire_value(value: object, buffers: list[memoryview]) -> object:
-    """One piece of a node's state as :func:`wire_dict` writes it (arrays into ``buffers``)."""
+    """One piece of a node's state as :func:`wire_dict` writes it (arrays into ``buffers``); a plain
+    value (:data:`_PLAIN_TYPES`) as it is, without the serializer's walk over types."""
+    if type(value) in _PLAIN_TYPES:
+        return value
     return infra._messages._prepare_for_serialization(value, Any, buffers)  # pyright: ignore[reportPrivateUsage]
 
 

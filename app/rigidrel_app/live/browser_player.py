@@ -19,7 +19,7 @@ from ..view.state import Resolved
 from .painting import Painting
 from .playback import Playback
 from .runtime import Report
-from .timeline import FRAMES_PER_BLOCK, Mirror, Timeline, TimelineCache, TimelineKey, timeline_id
+from .timeline import FRAMES_PER_BLOCK, OWN_FRAME_LEVEL, Mirror, Timeline, TimelineCache, TimelineKey, timeline_id
 
 #: Timelines a tab's runtime keeps (the oldest is forgotten past these).
 RUNTIME_TIMELINES = 4
@@ -97,7 +97,7 @@ class BrowserPlayer:
             return
         self.frame = None
         prologue = self.nodeset != self.mirror.nodeset
-        self.send("frame", payload=self.mirror.frame(now, prologue))
+        self.send("frame", payload=self.mirror.frame(now, prologue, OWN_FRAME_LEVEL))
         self.nodeset = self.mirror.nodeset
 
     def seek(self, now: float) -> bool:
