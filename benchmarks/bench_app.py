@@ -1,6 +1,7 @@
 """Speed of the app, server side and in the browser (a script that prints figures, not a test).
 
-    python -m benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--phases] [--drawing] [--answer]
+    python -m benchmarks.bench_app [--seconds 10] [--clients 1 10] [--no-browser] [--drawing] [--answer]
+    python -m benchmarks.bench_app --phases [--runtime]
 
 * rebuild: a slider change to every drawing rebuilt (scene, diagrams, lanes), median
   per scene, timed in the server process (target <= 16 ms); ``--phases`` prints only where
@@ -98,10 +99,11 @@ PHASES = (
 )
 
 
-def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
+def bench_phases(kinds: tuple[str, ...] | None = None, runtime: bool = False) -> dict[str, float]:
     """Where a slider's redraw goes: the sweep of :func:`bench_rebuild` for each scene, made twice
     (the second timed, back to back), each of :data:`PHASES` timed by wrapping the function the
-    session calls; the total's median and each phase's mean, per scene, in ms."""
+    session calls; the total's median and each phase's mean, per scene, in ms. ``runtime``: the
+    tab has the playback runtime (as a browser's has), as in :func:`bench_answer`."""
     import importlib
 
     spent: dict[str, float] = {}
@@ -126,8 +128,9 @@ def bench_phases(kinds: tuple[str, ...] | None = None) -> dict[str, float]:
         setattr(owner, name, timed(label, getattr(owner, name)))
     out: dict[str, float] = {}
     try:
-        with App(port=0) as app, light_tab(app) as tab:
+        with App(port=0) as app, light_tab(app, RuntimeClient if runtime else LightClient) as tab:
             session = tab.session
+            wait_until(lambda: session.player.ready == runtime, timeout=60)
             for kind in kinds or tuple(rr.scene_descriptions()):
                 session.asks.change(Settings(kind))
                 sweep = sweep_settings(session.state.settings)
@@ -365,12 +368,13 @@ def main() -> None:
     parser.add_argument("--no-browser", action="store_true")
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--phases", action="store_true", help="only where a slider's redraw goes, per scene")
+    parser.add_argument("--runtime", action="store_true", help="with --phases: the tab has the playback runtime")
     parser.add_argument("--drawing", action="store_true", help="only the answer's drawing, without viser")
     parser.add_argument("--answer", action="store_true", help="only a slider's answer, without and with the runtime")
     args = parser.parse_args()
     figures: dict[str, float] = {}
     if args.phases:
-        figures.update(bench_phases())
+        figures.update(bench_phases(runtime=args.runtime))
         for k, v in figures.items():
             print(f"{k:70s} {v:8.2f}")
         return
