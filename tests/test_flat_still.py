@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import io
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import replace
 from typing import Any
 
@@ -107,6 +107,36 @@ def _visibility(messages: list[dict[str, Any]], name: str) -> list[bool]:
     return [m["visible"] for m in messages if m["type"] == "SetSceneNodeVisibilityMessage" and m["name"] == name]
 
 
+def _wait_saying(session: Session, client: Recorder, done: Callable[[], bool], timeout: float = 30.0) -> None:
+    """:func:`wait_until` ``done``; on a timeout, the failure says where the still image stood."""
+    try:
+        wait_until(done, timeout=timeout)
+    except AssertionError as timed_out:
+        with session.lock:
+            r, still, playback = session.painter.renderer, session.painter.still_image, session.state.playback
+            state = {
+                "playing": playback.playing,
+                "now": playback.now,
+                "canvas": session.painter.canvas_size,
+                "slow_canvas": still.slow_canvas,
+                "asked (version, scale)": still._asked,  # pyright: ignore[reportPrivateUsage]
+                "version": r.version,
+                "flat (version, scale)": (r.flat_version, r.flat_scale),
+                "vectors_shown": r.vectors_shown,
+                "still_lent": r.still_lent,
+                "still stood (s)": time.monotonic() - r.still_at,
+            }
+        sent = {
+            "images": sum(m["type"] == "ImageMessage" for m in client.messages),
+            "visibility": {root: _visibility(client.messages, root)[-3:] for root in (*ROOTS, "/page/flat")},
+        }
+        raise AssertionError(f"{timed_out}; still image {state}; the client got {sent}") from None
+
+
+#: The still picture's nodes that its image replaces.
+ROOTS = ("/page/static", "/page/static_dots", "/page/text")
+
+
 @pytest.mark.slow  # a served tab
 def test_a_canvas_that_keeps_up_never_gets_the_image(tab: tuple[Session, Recorder]) -> None:
     session, client = tab
@@ -132,8 +162,8 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
         session.painter.canvas_size = replace(session.painter.canvas_size, resolution=0.75)
         session.painter.still_image.slow_canvas = True
         session.asks.toggle_play()
-    roots = ("/page/static", "/page/static_dots", "/page/text")
-    wait_until(lambda: all(_visibility(client.messages, root)[-1:] == [False] for root in roots), timeout=30)
+    roots = ROOTS
+    _wait_saying(session, client, lambda: all(_visibility(client.messages, root)[-1:] == [False] for root in roots))
     assert not r.vectors_shown
     version = r.version
     images = [m for m in client.messages if m["type"] == "ImageMessage" and m["name"] == "/page/flat"]
@@ -149,14 +179,14 @@ def test_a_slow_canvas_plays_the_image_and_a_control_brings_the_lines_back(tab: 
     before = len(client.messages)
     other = presets()["Fig. 3: collision, M2 = 2 M1"]
     session.checked(lambda: session.asks.change(other))
-    wait_until(lambda: any(m.get("name") == "/page/flat" for m in client.messages[before:]), timeout=30)
+    _wait_saying(session, client, lambda: any(m.get("name") == "/page/flat" for m in client.messages[before:]))
     after = client.messages[before:]
     for root in roots:
         assert _visibility(after, root)[:1] == [True]
     assert _visibility(after, "/page/flat")[:1] == [False]
     assert r.version == version + 1
     # once the new picture stands, its own image follows, and the nodes go again
-    wait_until(lambda: not r.vectors_shown and r.flat_version == r.version, timeout=30)
+    _wait_saying(session, client, lambda: not r.vectors_shown and r.flat_version == r.version)
     with session.lock:
         session.asks.toggle_play()
 
