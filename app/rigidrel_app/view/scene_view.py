@@ -234,10 +234,10 @@ class Drawn:
     def lane_titles_at(self, now: float, layout: CanvasLayout) -> list[str]:
         """The lanes' titles at ``now`` as :meth:`lane_pictures` writes them (their frame and clock,
         zoom, objects' words and end clocks), without drawing the lanes."""
-        r = self.resolved
-        instant = self.ride_instant(now) if r.ride is not None else None
         if not layout.lanes:
             return []
+        r = self.resolved
+        instant = self.ride_instant(now) if r.ride is not None else None
         shown, snaps, _, scales = self._lanes_at(now, layout, instant)
         out: list[str] = []
         titles = lane_titles(r, now, instant)[: len(shown)]
