@@ -200,6 +200,8 @@ def test_a_whole_lecture_with_the_keyboard_alone(browser: Any) -> None:
         for k in range(len(lesson.steps) - 2, -1, -1):
             page.keyboard.press("PageUp")
             wait_until(lambda k=k: session.state.step == k, timeout=30)
+            # the page has the step (its panel and its words) before a key goes to its controls
+            wait_until(lambda k=k: f"Step {k + 1} of {n}: {lesson.steps[k].title}." in said(), timeout=30)
         # a slider: Tab to V's, then the arrows move it
         before = session.state.settings.value("v")
         _tab_to(page, lambda f: f["role"] == "slider" and f["name"].startswith("V"))
